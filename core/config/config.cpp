@@ -1,0 +1,177 @@
+#include "core/config/config.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "core/error.hpp"
+
+namespace fs = std::filesystem;
+
+namespace ppsynth {
+
+namespace {
+
+json read_json_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw file_error(path, 0, "cannot open config");
+  try {
+    return json::parse(in, nullptr, true, /*ignore_comments=*/true);
+  } catch (const json::parse_error& e) {
+    throw file_error(path, 0, std::string("invalid JSON: ") + e.what());
+  }
+}
+
+json load_chain(const std::string& path, std::set<std::string>& seen) {
+  std::string canon = fs::weakly_canonical(path).string();
+  if (!seen.insert(canon).second) throw file_error(path, 0, "config parent cycle");
+  json j = read_json_file(path);
+  if (!j.is_object()) throw file_error(path, 0, "a config must be a JSON object");
+  if (j.contains("parent")) {
+    if (!j["parent"].is_string()) throw config_error("parent", "expected a path string");
+    fs::path parent = fs::path(path).parent_path() / j["parent"].get<std::string>();
+    json base = load_chain(parent.string(), seen);
+    j.erase("parent");
+    return merge(base, j);
+  }
+  return j;
+}
+
+const char* type_name(const json& j) {
+  switch (j.type()) {
+    case json::value_t::object: return "an object";
+    case json::value_t::array: return "an array";
+    case json::value_t::string: return "a string";
+    case json::value_t::boolean: return "a boolean";
+    case json::value_t::number_integer:
+    case json::value_t::number_unsigned:
+    case json::value_t::number_float: return "a number";
+    case json::value_t::null: return "null";
+    default: return "a value";
+  }
+}
+
+bool same_kind(const json& a, const json& b) {
+  if (a.is_number() && b.is_number()) return true;
+  return std::string(type_name(a)) == type_name(b);
+}
+
+std::string join(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
+
+}  // namespace
+
+json load_config(const std::string& path) {
+  std::set<std::string> seen;
+  return load_chain(path, seen);
+}
+
+json merge(const json& base, const json& over) {
+  if (!base.is_object() || !over.is_object()) return over;
+  json out = base;
+  for (auto it = over.begin(); it != over.end(); ++it) {
+    if (out.contains(it.key()) && out[it.key()].is_object() && it.value().is_object())
+      out[it.key()] = merge(out[it.key()], it.value());
+    else
+      out[it.key()] = it.value();
+  }
+  return out;
+}
+
+json apply_defaults(const json& defaults, const json& user, const std::string& key_path) {
+  if (user.is_null()) return defaults;
+  if (!user.is_object()) throw config_error(key_path, std::string("expected an object, got ") + type_name(user));
+  json out = defaults;
+  const bool open = defaults.contains("*");
+  if (open) out.erase("*");
+  for (auto it = user.begin(); it != user.end(); ++it) {
+    const std::string kp = join(key_path, it.key());
+    if (!defaults.contains(it.key())) {
+      if (open) {
+        out[it.key()] = it.value();
+        continue;
+      }
+      std::string known;
+      for (auto d = defaults.begin(); d != defaults.end(); ++d) known += (known.empty() ? "" : ", ") + d.key();
+      throw config_error(kp, "unknown key (known here: " + known + ")");
+    }
+    const json& d = defaults[it.key()];
+    const json& v = it.value();
+    if (d.is_null()) {
+      out[it.key()] = v;
+    } else if (!same_kind(d, v)) {
+      throw config_error(kp, std::string("expected ") + type_name(d) + ", got " + type_name(v));
+    } else if (d.is_object() && !d.empty()) {
+      out[it.key()] = apply_defaults(d, v, kp);
+    } else {
+      if (v.is_number_float() && !std::isfinite(v.get<double>())) throw config_error(kp, "not a finite number");
+      out[it.key()] = v;
+    }
+  }
+  return out;
+}
+
+void set_override(json& config, const std::string& assignment) {
+  auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("--set '" + assignment + "': expected key.path=value");
+  std::string key = assignment.substr(0, eq), text = assignment.substr(eq + 1);
+  json value;
+  try {
+    value = json::parse(text);
+  } catch (...) {
+    value = text;
+  }
+  json* node = &config;
+  size_t start = 0;
+  while (true) {
+    size_t dot = key.find('.', start);
+    std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    if (part.empty()) throw InputError("--set '" + assignment + "': empty key component");
+    const bool last = dot == std::string::npos;
+    if (node->is_array()) {
+      size_t idx = 0;
+      try {
+        idx = std::stoul(part);
+      } catch (...) {
+        throw config_error(key, "'" + part + "' is not an array index");
+      }
+      if (idx >= node->size()) throw config_error(key, "array index " + part + " out of range");
+      node = &(*node)[idx];
+    } else {
+      if (node->is_null()) *node = json::object();
+      if (!node->is_object()) throw config_error(key, "'" + part + "' is below a value that is not an object");
+      node = &(*node)[part];
+    }
+    if (last) {
+      *node = value;
+      return;
+    }
+    start = dot + 1;
+  }
+}
+
+double get_number(const json& j, const std::string& key, const std::string& key_path) {
+  if (!j.contains(key) || !j[key].is_number()) throw config_error(join(key_path, key), "expected a number");
+  return j[key].get<double>();
+}
+
+int get_int(const json& j, const std::string& key, const std::string& key_path) {
+  double v = get_number(j, key, key_path);
+  if (v != std::floor(v)) throw config_error(join(key_path, key), "expected an integer");
+  return static_cast<int>(v);
+}
+
+std::string get_string(const json& j, const std::string& key, const std::string& key_path) {
+  if (!j.contains(key) || !j[key].is_string()) throw config_error(join(key_path, key), "expected a string");
+  return j[key].get<std::string>();
+}
+
+bool get_bool(const json& j, const std::string& key, const std::string& key_path) {
+  if (!j.contains(key) || !j[key].is_boolean()) throw config_error(join(key_path, key), "expected a boolean");
+  return j[key].get<bool>();
+}
+
+}  // namespace ppsynth

@@ -1,0 +1,38 @@
+#pragma once
+// The one config loader of the project. Configs are JSON objects; a config may name a
+// "parent" config (path relative to itself) whose keys it overrides (deep merge: objects
+// merge, everything else replaces). Defaults are declared once, by the part that uses them
+// (see core/registry.hpp); apply_defaults() merges user keys over them and refuses what it
+// does not know, naming the key path, e.g. "config key 'losses[1].weight': expected a number".
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace ppsynth {
+
+using json = nlohmann::json;
+
+// Reads a JSON config file and resolves its "parent" chain (cycles are errors).
+json load_config(const std::string& path);
+
+// Deep merge: `over` wins; objects merge recursively; arrays and scalars replace.
+json merge(const json& base, const json& over);
+
+// Returns defaults overridden by `user`. Unknown keys, and values whose JSON type differs
+// from the default's (integers and floats are both numbers; a null default accepts
+// anything; an object default with the key "*" accepts any key) are errors naming
+// `key_path` + the key.
+json apply_defaults(const json& defaults, const json& user, const std::string& key_path);
+
+// Applies one "--set a.b.c=value" override. The value is parsed as JSON when it parses
+// ("3", "true", "[0,1]"), else taken as a string. Array elements: "losses.1.weight=2".
+void set_override(json& config, const std::string& assignment);
+
+// Typed getters that name the key on error.
+double get_number(const json& j, const std::string& key, const std::string& key_path);
+int get_int(const json& j, const std::string& key, const std::string& key_path);
+std::string get_string(const json& j, const std::string& key, const std::string& key_path);
+bool get_bool(const json& j, const std::string& key, const std::string& key_path);
+
+}  // namespace ppsynth

@@ -1,0 +1,96 @@
+#pragma once
+// Registry<Base, Args...>: name -> factory, one per kind of pluggable part (rasterizers,
+// feature nets, losses, optimisers, initialisers, synthesis methods, generators, commands).
+//
+// A part registers itself at the end of its own .cpp with PPSYNTH_REGISTER, giving its
+// config name, its default parameters (JSON; the only place those defaults live) and a
+// one-line description. Creating it from config merges the user's parameters over the
+// defaults and refuses unknown keys and wrong types, naming the key path.
+#include <functional>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/config/config.hpp"
+#include "core/error.hpp"
+
+namespace ppsynth {
+
+template <class Base, class... Args>
+class Registry {
+ public:
+  using Factory = std::function<std::unique_ptr<Base>(const nlohmann::json& params, Args...)>;
+  struct Entry {
+    Factory make;
+    nlohmann::json defaults;  // every parameter with its default value
+    std::string description;
+  };
+
+  static Registry& instance() {
+    static Registry r;
+    return r;
+  }
+
+  // Duplicate names are refused: two parts must never silently shadow each other.
+  bool add(const std::string& name, Entry e) {
+    if (!entries_.emplace(name, std::move(e)).second)
+      throw std::logic_error("duplicate registration of '" + name + "'");
+    return true;
+  }
+  bool contains(const std::string& name) const { return entries_.count(name) > 0; }
+  const Entry& entry(const std::string& name, const std::string& key_path = "type") const {
+    auto it = entries_.find(name);
+    if (it == entries_.end()) {
+      std::string known;
+      for (auto& [n, _] : entries_) known += (known.empty() ? "" : ", ") + n;
+      throw config_error(key_path, "unknown type '" + name + "' (known: " + known + ")");
+    }
+    return it->second;
+  }
+  std::vector<std::string> names() const {
+    std::vector<std::string> v;
+    for (auto& [n, _] : entries_) v.push_back(n);
+    return v;
+  }
+  // `spec` is {"type": name, ...params}; `key_path` names spec in the config for errors.
+  // Returns the part and fills `resolved` (if given) with the defaults-merged spec.
+  std::unique_ptr<Base> create(const nlohmann::json& spec, const std::string& key_path,
+                               Args... args, nlohmann::json* resolved = nullptr) const {
+    if (!spec.is_object() || !spec.contains("type") || !spec["type"].is_string())
+      throw config_error(key_path, "expected an object with a string \"type\"");
+    const std::string type = spec["type"];
+    const Entry& e = entry(type, key_path + ".type");
+    nlohmann::json params = spec;
+    params.erase("type");
+    nlohmann::json merged = apply_defaults(e.defaults, params, key_path);
+    if (resolved) {
+      *resolved = merged;
+      (*resolved)["type"] = type;
+    }
+    return e.make(merged, args...);
+  }
+  // Every registered part with its defaults (for `ppsynth config --defaults`).
+  nlohmann::json describe() const {
+    nlohmann::json j = nlohmann::json::object();
+    for (auto& [n, e] : entries_) j[n] = {{"description", e.description}, {"defaults", e.defaults}};
+    return j;
+  }
+
+ private:
+  std::map<std::string, Entry> entries_;
+};
+
+}  // namespace ppsynth
+
+#define PPSYNTH_CONCAT_INNER(a, b) a##b
+#define PPSYNTH_CONCAT(a, b) PPSYNTH_CONCAT_INNER(a, b)
+// PPSYNTH_REGISTER(RegistryType, "name", defaults_json, "description", factory_lambda)
+#define PPSYNTH_REGISTER(REG, NAME, DEFAULTS, DESC, ...)                                 \
+  namespace {                                                                             \
+  [[maybe_unused]] const bool PPSYNTH_CONCAT(ppsynth_registered_, __LINE__) =             \
+      REG::instance().add(NAME, REG::Entry{__VA_ARGS__, DEFAULTS, DESC});                 \
+  }

@@ -1,0 +1,59 @@
+#include <catch2/catch.hpp>
+
+#include "core/config/config.hpp"
+#include "core/error.hpp"
+#include "core/registry.hpp"
+
+using namespace ppsynth;
+
+TEST_CASE("apply_defaults merges and names unknown keys", "[config]") {
+  json defaults = {{"a", 1}, {"b", {{"c", "x"}, {"d", true}}}};
+  json user = {{"b", {{"c", "y"}}}};
+  json out = apply_defaults(defaults, user, "");
+  CHECK(out["a"] == 1);
+  CHECK(out["b"]["c"] == "y");
+  CHECK(out["b"]["d"] == true);
+  try {
+    apply_defaults(defaults, json{{"b", {{"e", 1}}}}, "root");
+    FAIL("unknown key accepted");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()).find("root.b.e") != std::string::npos);
+  }
+  CHECK_THROWS_WITH(apply_defaults(defaults, json{{"a", "str"}}, ""), Catch::Contains("'a'") && Catch::Contains("number"));
+}
+
+TEST_CASE("set_override parses JSON values and paths", "[config]") {
+  json c = {{"losses", json::array({json{{"weight", 1.0}}})}, {"seed", 1}};
+  set_override(c, "seed=42");
+  set_override(c, "losses.0.weight=0.5");
+  set_override(c, "name=lines");
+  CHECK(c["seed"] == 42);
+  CHECK(c["losses"][0]["weight"] == 0.5);
+  CHECK(c["name"] == "lines");
+  CHECK_THROWS_AS(set_override(c, "losses.3.weight=1"), InputError);
+}
+
+namespace {
+struct Thing {
+  virtual ~Thing() = default;
+  virtual int value() const = 0;
+};
+struct Seven : Thing {
+  int v;
+  explicit Seven(int v) : v(v) {}
+  int value() const override { return v; }
+};
+using ThingRegistry = Registry<Thing>;
+}  // namespace
+
+PPSYNTH_REGISTER(ThingRegistry, "seven", (json{{"v", 7}}), "test part",
+                 [](const json& p) { return std::make_unique<Seven>(p["v"].get<int>()); })
+
+TEST_CASE("registry creates by name with defaults and refuses duplicates", "[config]") {
+  auto t = ThingRegistry::instance().create(json{{"type", "seven"}}, "thing");
+  CHECK(t->value() == 7);
+  CHECK(ThingRegistry::instance().create(json{{"type", "seven"}, {"v", 3}}, "thing")->value() == 3);
+  CHECK_THROWS_WITH(ThingRegistry::instance().create(json{{"type", "eight"}}, "thing"), Catch::Contains("thing.type"));
+  CHECK_THROWS_WITH(ThingRegistry::instance().create(json{{"type", "seven"}, {"w", 1}}, "thing"), Catch::Contains("thing.w"));
+  CHECK_THROWS_AS(ThingRegistry::instance().add("seven", ThingRegistry::Entry{}), std::logic_error);
+}
