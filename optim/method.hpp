@@ -33,6 +33,8 @@ struct ProgressEvent {
 class SynthesisObserver {
  public:
   virtual ~SynthesisObserver() = default;
+  // The output before optimisation (the initialisation), once.
+  virtual void on_start(const PointSet& initial) {}
   virtual void on_stage_begin(const ProgressEvent&) {}
   virtual void on_iteration(const ProgressEvent&) {}
   // `current` is the whole output so far (frozen and moving points, with classes/attrs).
@@ -47,7 +49,11 @@ struct SynthesisContext {
   // Optional explicit initialisation (else the method's own initialiser runs).
   const PointSet* initialization = nullptr;
   bool quick = false;  // tiny grids and few iterations (tests, --quick)
+  // Optional: the method records what it measured here (iterations and final loss per
+  // stage, wall time per phase, resolved settings such as the grid and sigmas).
+  nlohmann::json* stats = nullptr;
 
+  void start(const PointSet& p) const { for (auto* o : observers) o->on_start(p); }
   void stage_begin(const ProgressEvent& e) const { for (auto* o : observers) o->on_stage_begin(e); }
   void iteration(const ProgressEvent& e) const { for (auto* o : observers) o->on_iteration(e); }
   void stage_end(const ProgressEvent& e, const PointSet& p) const { for (auto* o : observers) o->on_stage_end(e, p); }

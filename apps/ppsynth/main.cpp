@@ -2,6 +2,11 @@
 // (apps/ppsynth/analysis/*.cpp, apps/ppsynth/synthesis/*.cpp); this file only parses the
 // global flags, dispatches, and turns errors into messages and exit codes.
 #include <iostream>
+#include <thread>
+
+#ifdef PPSYNTH_WITH_TORCH
+#include <torch/torch.h>
+#endif
 
 #include "apps/ppsynth/command.hpp"
 #include "core/error.hpp"
@@ -53,6 +58,12 @@ int main(int argc, char** argv) {
     return cli.exit(e);
   }
   configure_logging(verbose - quiet);
+#ifdef PPSYNTH_WITH_TORCH
+  // Debian's LibTorch starts with one intra-op thread: use every core (PPSYNTH_THREADS overrides).
+  const char* env_threads = std::getenv("PPSYNTH_THREADS");
+  const int threads = env_threads ? std::atoi(env_threads) : static_cast<int>(std::thread::hardware_concurrency());
+  if (threads > 0) torch::set_num_threads(threads);
+#endif
   for (auto& [name, sub] : subs) {
     if (!sub->parsed()) continue;
     try {

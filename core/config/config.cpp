@@ -99,7 +99,11 @@ json apply_defaults(const json& defaults, const json& user, const std::string& k
     }
     const json& d = defaults[it.key()];
     const json& v = it.value();
-    if (d.is_null()) {
+    if (d.is_object() && d.contains("type") && v.is_object()) {
+      // A component spec ({"type": ..., params}): its own registry validates the params
+      // when it is created. Same type: user params over the default's; else the user's spec.
+      out[it.key()] = (!v.contains("type") || v["type"] == d["type"]) ? merge(d, v) : v;
+    } else if (d.is_null()) {
       out[it.key()] = v;
     } else if (!same_kind(d, v)) {
       throw config_error(kp, std::string("expected ") + type_name(d) + ", got " + type_name(v));

@@ -21,7 +21,8 @@ json merge(const json& base, const json& over);
 
 // Returns defaults overridden by `user`. Unknown keys, and values whose JSON type differs
 // from the default's (integers and floats are both numbers; a null default accepts
-// anything; an object default with the key "*" accepts any key) are errors naming
+// anything; an object default with the key "*" accepts any key; an object default with a
+// "type" is a component spec, validated later by its registry) are errors naming
 // `key_path` + the key.
 json apply_defaults(const json& defaults, const json& user, const std::string& key_path);
 

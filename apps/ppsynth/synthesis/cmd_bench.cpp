@@ -1,0 +1,234 @@
+// `ppsynth bench [CONFIG] [--exemplar FILE] [--reps N] [--json FILE] [--set k=v ...]`
+// Times one synthesis iteration of the Gabor method split into phases (min and median over
+// repetitions), the set-up per sigma (exemplar maps, features, loss targets), the same
+// binary's own 120 -> 120 7x7 convolution throughput, the iteration's convolution floor
+// (network FLOPs / that throughput) and the ratio, and the peak resident memory.
+// A benchmark: it prints numbers; no test asserts on them.
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <iostream>
+
+#include "apps/ppsynth/command.hpp"
+#include "apps/ppsynth/synthesis/run_config.hpp"
+#include "core/atomic_file.hpp"
+#include "core/config/config.hpp"
+#include "models/gabor_feature_maps.hpp"
+#include "models/point_tensor.hpp"
+#include "optim/gabor_pipeline.hpp"
+#include "optim/initializer.hpp"
+
+namespace {
+
+using namespace ppsynth;
+using Clock = std::chrono::steady_clock;
+
+struct Timing {
+  std::vector<double> s;
+  double min() const { return *std::min_element(s.begin(), s.end()); }
+  double median() const {
+    auto v = s;
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+  }
+};
+
+template <class F>
+Timing time_it(int reps, F&& f) {
+  f();  // warm-up
+  Timing t;
+  for (int r = 0; r < reps; ++r) {
+    auto a = Clock::now();
+    f();
+    t.s.push_back(std::chrono::duration<double>(Clock::now() - a).count());
+  }
+  return t;
+}
+
+double peak_rss_mib() {
+  rusage ru{};
+  getrusage(RUSAGE_SELF, &ru);
+  return ru.ru_maxrss / 1024.0;
+}
+
+// FLOPs of forward + input gradient of every convolution the net runs on a 1 x C x R x R input.
+double net_flops(int in_channels, int channels, int ksize, int depth, int R) {
+  double f = 0;
+  auto conv = [&](int cin, int cout, int hout) { f += 2.0 * cin * cout * ksize * ksize * double(hout) * hout; };
+  conv(in_channels, channels, R);
+  conv(channels, channels, R);
+  int h = R;
+  for (int b = 1; b < depth; ++b) {
+    h = (h + 1) / 2;
+    conv(channels, channels, h);
+  }
+  return 2 * f;  // backward to the input costs as much as forward
+}
+
+struct Opts {
+  std::string config, exemplar, json_out;
+  std::vector<std::string> sets;
+  int reps = 5;
+  bool skip_setup = false;
+};
+
+app::RunFn setup(CLI::App& app) {
+  auto o = std::make_shared<Opts>();
+  app.add_option("config", o->config, "experiment config (JSON)");
+  app.add_option("--exemplar,-e", o->exemplar, "exemplar point file");
+  app.add_option("--set", o->sets, "override a config key: key.path=value");
+  app.add_option("--reps", o->reps, "repetitions per phase")->check(CLI::PositiveNumber);
+  app.add_option("--json", o->json_out, "also write the figures as JSON");
+  app.add_flag("--skip-setup", o->skip_setup, "do not time the set-up of every sigma");
+  return [o]() {
+    json c = o->config.empty() ? json::object() : load_config(o->config);
+    if (!o->exemplar.empty()) c["exemplar"] = o->exemplar;
+    auto r = app::resolve_run_config(c, o->sets);
+    if (r["method"]["type"] != "gabor") throw InputError("bench: only the gabor method is benchmarked");
+    const json& p = r["method"];
+    PointSet ex = app::load_exemplar(r);
+    const int u = r["upscale"];
+    const uint64_t seed = r["seed"];
+    const auto settings_t0 = Clock::now();
+    GaborSettings s = resolve_gabor_settings(p, ex, u, false);
+    GaborPipeline pipe(p, s, seed);
+    auto init = InitializerRegistry::instance().create(p["init"], "method.init");
+    PointSet start = init->initialize(ex.size() * u * u, 0, seed);
+    auto ex_pts = positions_tensor(ex);
+    auto moving = positions_tensor(start).set_requires_grad(true);
+    const double sigma = s.sigmas.front();
+    std::mt19937_64 rng(seed);
+    json out = {{"exemplar", r["exemplar"]}, {"points", ex.size()}, {"output_points", start.size()},
+                {"grid", s.res}, {"output_grid", u * s.res}, {"k", s.k}, {"threads", at::get_num_threads()}};
+
+    // --- set-up: exemplar maps -> features -> targets, per sigma ----------------------
+    double setup_first = 0;
+    std::vector<double> setup_each;
+    {
+      auto a = Clock::now();
+      pipe.set_targets(ex_pts, {}, sigma);
+      setup_first = std::chrono::duration<double>(Clock::now() - a).count() +
+                    std::chrono::duration<double>(a - settings_t0).count();
+      if (!o->skip_setup)
+        for (double sg : s.sigmas) {
+          auto b = Clock::now();
+          pipe.set_targets(ex_pts, {}, sg);
+          setup_each.push_back(std::chrono::duration<double>(Clock::now() - b).count());
+        }
+      pipe.set_targets(ex_pts, {}, sigma);
+    }
+
+    // --- phases of one iteration -----------------------------------------------------
+    GaborMapsOptions mo;
+    mo.res = u * s.res;
+    mo.upscale = u;
+    mo.k = s.k;
+    GaborFeatureMaps maps_mod(mo);
+    auto pts = wrap_unit(moving.detach());
+    auto jit = pipe.draw_jitter(rng);
+    auto grid = jit.defined() ? maps_mod->grid() + jit : maps_mod->grid();
+    std::vector<std::pair<std::string, Timing>> phases;
+    phases.push_back({"neighbour search (k-NN)", time_it(o->reps, [&] { grid_knn(pts, grid, s.k); })});
+    torch::Tensor maps;
+    phases.push_back({"Gabor maps forward", time_it(o->reps, [&] {
+                        torch::NoGradGuard ng;
+                        maps = pipe.output_maps(pts, {}, sigma, jit);
+                      })});
+    phases.push_back({"Gabor maps backward", time_it(o->reps, [&] {
+                        auto p2 = pts.clone().set_requires_grad(true);
+                        auto m = pipe.output_maps(p2, {}, sigma, jit);
+                        auto probe = torch::ones_like(m);
+                        // forward is inside: subtract it afterwards
+                        m.backward(probe);
+                      })});
+    phases.back().second.s = [&] {
+      auto v = phases.back().second.s;
+      const double fwd = phases[1].second.median();
+      for (auto& x : v) x = std::max(0.0, x - fwd);
+      return v;
+    }();
+    Features feats;
+    phases.push_back({"network forward", time_it(o->reps, [&] {
+                        torch::NoGradGuard ng;
+                        feats = pipe.features(maps);
+                      })});
+    phases.push_back({"network backward (input grad)", time_it(o->reps, [&] {
+                        auto m = maps.clone().set_requires_grad(true);
+                        auto f = pipe.features(m);
+                        torch::Tensor sum;
+                        for (auto& t : f) sum = sum.defined() ? sum + t.sum() : t.sum();
+                        sum.backward();
+                      })});
+    phases.back().second.s = [&] {
+      auto v = phases.back().second.s;
+      const double fwd = phases[3].second.median();
+      for (auto& x : v) x = std::max(0.0, x - fwd);
+      return v;
+    }();
+    for (auto& term : pipe.composite().terms()) {
+      phases.push_back({"loss " + term.type + " (forward + backward)", time_it(o->reps, [&] {
+                          Features f;
+                          for (auto& t : feats) f.push_back(t.detach().clone().set_requires_grad(true));
+                          term.loss->forward(f).backward();
+                        })});
+    }
+    auto optimizer_spec = p["optimizer"];
+    Timing full = time_it(o->reps, [&] {
+      if (moving.grad().defined()) moving.grad().zero_();
+      auto m = pipe.output_maps(wrap_unit(moving), {}, sigma, pipe.draw_jitter(rng));
+      pipe.loss(pipe.features(m)).backward();
+    });
+
+    // --- the convolution floor ---------------------------------------------------------
+    const int C = s.feature_net.value("channels", 120), ks = s.feature_net.value("kernel_size", 7),
+              depth = s.feature_net.value("depth", 3);
+    const int R = u * s.res;
+    auto conv_w = torch::randn({120, 120, 7, 7});
+    auto conv_x = torch::randn({1, 120, R, R});
+    Timing conv = time_it(o->reps, [&] {
+      torch::NoGradGuard ng;
+      torch::conv2d(conv_x, conv_w, {}, 1, 3);
+    });
+    const double conv_gflops = 2.0 * 120 * 120 * 49 * double(R) * R / conv.min() / 1e9;
+    const double flops = s.feature_net.value("type", "") == "random" ? net_flops(10, C, ks, depth, R) : 0;
+    const double floor_s = flops / (conv_gflops * 1e9);
+
+    // --- print ---------------------------------------------------------------------------
+    std::printf("ppsynth bench: %s  (%zu -> %zu points, grid %d -> %d, k %d, %d threads)\n",
+                r["exemplar"].get<std::string>().c_str(), ex.size(), start.size(), s.res, R, s.k, at::get_num_threads());
+    std::printf("%-42s %10s %10s\n", "phase", "min [s]", "median [s]");
+    json jp = json::array();
+    for (auto& [name, t] : phases) {
+      std::printf("%-42s %10.4f %10.4f\n", name.c_str(), t.min(), t.median());
+      jp.push_back({{"phase", name}, {"min_s", t.min()}, {"median_s", t.median()}});
+    }
+    std::printf("%-42s %10.4f %10.4f\n", "ONE FULL ITERATION (forward + backward)", full.min(), full.median());
+    std::printf("\nconvolution 120->120 7x7 at %dx%d: %.1f GFLOP/s (min %.4f s)\n", R, R, conv_gflops, conv.min());
+    if (flops > 0)
+      std::printf("network FLOPs per iteration (fwd + input grad): %.1f GFLOP -> floor %.3f s; iteration / floor = %.2f\n",
+                  flops / 1e9, floor_s, full.median() / floor_s);
+    std::printf("set-up before the first iteration: %.2f s; per sigma:", setup_first);
+    double setup_total = 0;
+    for (double x : setup_each) std::printf(" %.2f", x), setup_total += x;
+    std::printf(" s (all %zu sigmas %.2f s)\n", setup_each.size(), setup_total);
+    std::printf("peak resident memory: %.0f MiB\n", peak_rss_mib());
+    out["phases"] = jp;
+    out["iteration_min_s"] = full.min();
+    out["iteration_median_s"] = full.median();
+    out["conv_gflops"] = conv_gflops;
+    out["net_gflop_per_iteration"] = flops / 1e9;
+    out["floor_s"] = floor_s;
+    out["iteration_over_floor"] = floor_s > 0 ? full.median() / floor_s : 0;
+    out["setup_first_s"] = setup_first;
+    out["setup_per_sigma_s"] = setup_each;
+    out["peak_rss_mib"] = peak_rss_mib();
+    if (!o->json_out.empty()) write_text_atomic(o->json_out, out.dump(2) + "\n");
+    return 0;
+  };
+}
+
+}  // namespace
+
+PPSYNTH_COMMAND("bench", "time one synthesis iteration by phase against the convolution floor", setup)

@@ -1,0 +1,69 @@
+#include "apps/ppsynth/synthesis/run_config.hpp"
+
+#include "core/config/config.hpp"
+#include "core/error.hpp"
+#include "core/formats/point_io.hpp"
+#include "core/paths.hpp"
+#include "optim/method.hpp"
+
+namespace ppsynth::app {
+
+json run_defaults() {
+  return json{
+      {"name", ""},              // run name (default: the exemplar's file stem)
+      {"description", ""},
+      {"exemplar", ""},          // point file; "shared:data/..." is relative to ../shared
+      {"format", "auto"},        // auto | gabor | point-synthesis | plain | json
+      {"scaling", "per-axis"},   // Point-Synthesis files: per-axis (published) | uniform
+      {"merge_classes", false},  // treat every point as one class (positions-only synthesis)
+      {"init_file", nullptr},    // explicit initialisation: one file (with a class column) or a list, one file per class
+      {"seed", 95},
+      {"upscale", 2},            // u: S = u^2 times the exemplar's points
+      {"method", {{"type", "gabor"}}},
+      {"snapshots", true},       // plot the output after every stage (paper Fig. 4)
+      {"evaluate", true},        // run the metrics on the output
+  };
+}
+
+json resolve_run_config(json config, const std::vector<std::string>& overrides) {
+  for (auto& o : overrides) set_override(config, o);
+  json r = apply_defaults(run_defaults(), config, "");
+  if (!r["seed"].is_number_integer() || r["seed"].get<long long>() < 0) throw config_error("seed", "expected an integer >= 0");
+  if (get_int(r, "upscale", "") < 1) throw config_error("upscale", "must be an integer >= 1");
+  json resolved_method;
+  MethodRegistry::instance().create(r["method"], "method", &resolved_method);
+  r["method"] = resolved_method;
+  if (r["exemplar"].get<std::string>().empty()) throw config_error("exemplar", "no exemplar file given");
+  return r;
+}
+
+PointSet load_exemplar(const json& r) {
+  ReadOptions o;
+  o.format = parse_format(r["format"].get<std::string>());
+  const std::string sc = r["scaling"];
+  if (sc == "per-axis") o.scaling = AxisScaling::PerAxisMinMax;
+  else if (sc == "uniform") o.scaling = AxisScaling::Uniform;
+  else throw config_error("scaling", "expected \"per-axis\" or \"uniform\"");
+  PointSet ps = read_points(resolve_data_path(r["exemplar"]), o);
+  if (r["merge_classes"].get<bool>()) {
+    for (size_t i = 0; i < ps.size(); ++i) ps.set_cls(i, 0);
+    ps.set_class_labels({});
+  }
+  return ps;
+}
+
+std::optional<PointSet> load_initialization(const json& r) {
+  const json& f = r["init_file"];
+  if (f.is_null() || (f.is_string() && f.get<std::string>().empty())) return std::nullopt;
+  if (f.is_string()) return read_points(resolve_data_path(f.get<std::string>()));
+  if (!f.is_array()) throw config_error("init_file", "expected a file name or a list of file names (one per class)");
+  PointSet all;
+  for (size_t k = 0; k < f.size(); ++k) {
+    if (!f[k].is_string()) throw config_error("init_file[" + std::to_string(k) + "]", "expected a file name");
+    PointSet part = read_points(resolve_data_path(f[k].get<std::string>()));
+    for (size_t i = 0; i < part.size(); ++i) all.add(part[i], static_cast<int>(k));
+  }
+  return all;
+}
+
+}  // namespace ppsynth::app

@@ -1,0 +1,28 @@
+#pragma once
+// A synthesis run's config: which exemplar, which method (with its own parameters), seed,
+// upscaling, where to write. Top-level defaults live in run_config.cpp; method defaults live
+// with each method's registration. Used by `synthesize`, `reproduce` and `bench`.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/point_set.hpp"
+
+namespace ppsynth::app {
+
+using json = nlohmann::json;
+
+json run_defaults();
+
+// Resolves a config (file or built) + "--set" overrides: defaults merged, unknown keys refused,
+// the method's parameters merged with its registered defaults.
+json resolve_run_config(json config, const std::vector<std::string>& overrides);
+
+// Loads the exemplar a resolved config names ("shared:" paths allowed).
+PointSet load_exemplar(const json& resolved);
+// The explicit initialisation of "init_file", if any.
+std::optional<PointSet> load_initialization(const json& resolved);
+
+}  // namespace ppsynth::app

@@ -1,0 +1,84 @@
+#include "apps/ppsynth/synthesis/run_observers.hpp"
+
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+#include "core/atomic_file.hpp"
+#include "core/formats/point_io.hpp"
+#include "core/log.hpp"
+#include "core/render/plot_curves.hpp"
+#include "core/render/plot_points.hpp"
+
+namespace ppsynth::app {
+
+namespace {
+std::string fmt_duration(double s) {
+  char b[32];
+  if (s < 90) std::snprintf(b, sizeof b, "%.0fs", s);
+  else if (s < 5400) std::snprintf(b, sizeof b, "%.1fm", s / 60);
+  else std::snprintf(b, sizeof b, "%.1fh", s / 3600);
+  return b;
+}
+}  // namespace
+
+void ProgressLog::on_stage_begin(const ProgressEvent& e) {
+  spdlog::info("[{}] stage {}/{}: {}", name_, e.stage_index + 1, e.stage_count, e.stage);
+}
+
+void ProgressLog::on_iteration(const ProgressEvent& e) {
+  if (e.iteration % every_ != 0) return;
+  const double rate = e.seconds > 0 ? (e.iteration + 1) / e.seconds : 0;
+  // ETA of the stage at its iteration cap (the convergence rule usually stops earlier).
+  const double eta = rate > 0 ? (e.max_iterations - e.iteration - 1) / rate : 0;
+  spdlog::info("[{}] {} it {:>4}/{} loss {:.6e}  {:.2f} it/s  stage ETA <= {}", name_, e.stage, e.iteration,
+               e.max_iterations, e.loss, rate, fmt_duration(eta));
+}
+
+void ProgressLog::on_stage_end(const ProgressEvent& e, const PointSet&) {
+  spdlog::info("[{}] {} done: {} iterations in {}", name_, e.stage, e.iteration, fmt_duration(e.seconds));
+}
+
+void LossRecorder::on_iteration(const ProgressEvent& e) {
+  rows_.push_back({e.stage_index, e.stage, e.iteration, e.loss, e.seconds});
+}
+
+std::string LossRecorder::csv() const {
+  std::ostringstream s;
+  s << "stage_index,stage,iteration,loss,seconds\n";
+  s.precision(10);
+  for (auto& r : rows_) s << r.stage_index << ",\"" << r.stage << "\"," << r.iteration << "," << r.loss << "," << r.seconds << "\n";
+  return s.str();
+}
+
+void LossRecorder::plot(const std::string& png, const std::string& title) const {
+  CurvePlot cp;
+  cp.title = title;
+  cp.xlabel = "iteration (all stages)";
+  cp.ylabel = "loss";
+  cp.log_y = true;
+  std::map<int, Series> by_stage;
+  int x = 0;
+  for (auto& r : rows_) {
+    auto& s = by_stage[r.stage_index];
+    s.label = r.stage;
+    s.x.push_back(x++);
+    s.y.push_back(r.loss);
+  }
+  for (auto& [_, s] : by_stage) cp.series.push_back(s);
+  if (!cp.series.empty()) plot_curves(png, cp);
+}
+
+void SnapshotWriter::on_stage_end(const ProgressEvent& e, const PointSet& current) {
+  if (!enabled_) return;
+  char base[64];
+  std::snprintf(base, sizeof base, "/stage%02d", e.stage_index + 1);
+  write_points(dir_ + base + ".txt", current, Format::Plain);
+  PointStyle st;
+  st.title = e.stage;
+  plot_points(dir_ + base + ".png", current, st, 400);
+  pngs_.push_back(dir_ + base + ".png");
+  titles_.push_back(e.stage);
+}
+
+}  // namespace ppsynth::app

@@ -1,0 +1,119 @@
+#include "apps/ppsynth/synthesis/run_synthesis.hpp"
+
+#include <chrono>
+#include <filesystem>
+
+#include "apps/ppsynth/command.hpp"
+#include "apps/ppsynth/synthesis/run_config.hpp"
+#include "apps/ppsynth/synthesis/run_observers.hpp"
+#include "core/atomic_file.hpp"
+#include "core/formats/point_io.hpp"
+#include "core/log.hpp"
+#include "core/metrics/evaluation.hpp"
+#include "core/metrics/pcf.hpp"
+#include "core/paths.hpp"
+#include "core/render/plot_curves.hpp"
+#include "core/render/plot_points.hpp"
+#include "optim/method.hpp"
+
+namespace fs = std::filesystem;
+
+namespace ppsynth::app {
+
+namespace {
+
+// PCF of the exemplar vs the output (quadrant average): all classes, then each class.
+void plot_pcf(const std::string& path, const nlohmann::json& m) {
+  auto curve_plot = [](const std::string& title, const nlohmann::json& pcf) {
+    CurvePlot cp;
+    cp.title = title;
+    cp.xlabel = "r / r_max";
+    cp.ylabel = "g(r)";
+    const auto r = pcf["r"].get<std::vector<double>>();
+    cp.series.push_back(Series{"exemplar", r, pcf["exemplar"].get<std::vector<double>>(), true});
+    cp.series.push_back(Series{"output (4 quadrants)", r, pcf["output"].get<std::vector<double>>(), false});
+    return cp;
+  };
+  std::vector<CurvePlot> plots;
+  if (m.contains("all") && m["all"].contains("pcf")) plots.push_back(curve_plot("all classes", m["all"]["pcf"]));
+  if (m.contains("classes") && m["classes"].size() > 1)
+    for (auto& c : m["classes"])
+      if (c.contains("pcf")) plots.push_back(curve_plot("class " + c["class"].dump(), c["pcf"]));
+  if (plots.size() == 1) plot_curves(path, plots[0]);
+  else if (!plots.empty()) plot_curve_grid(path, plots, std::min<int>(3, static_cast<int>(plots.size())));
+}
+
+}  // namespace
+
+RunOutcome run_synthesis(const nlohmann::json& r, const std::string& dir_in, bool quick) {
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
+  RunOutcome o;
+  o.config = r;
+  o.exemplar = load_exemplar(r);
+  std::string name = r["name"];
+  if (name.empty()) name = fs::path(resolve_data_path(r["exemplar"])).stem().string();
+  o.dir = dir_in.empty() ? "runs/" + name : dir_in;
+  const std::string partial = o.dir + ".partial";
+  fs::remove_all(partial);
+  fs::create_directories(partial + "/snapshots");
+
+  SynthesisContext ctx;
+  ctx.seed = r["seed"].get<uint64_t>();
+  ctx.upscale = r["upscale"].get<int>();
+  ctx.quick = quick;
+  auto explicit_init = load_initialization(r);
+  PointSet init_ps = explicit_init ? *explicit_init : PointSet();
+  if (explicit_init) ctx.initialization = &init_ps;
+  ProgressLog progress(name, quick ? 1 : 10);
+  LossRecorder losses;
+  SnapshotWriter snaps(partial + "/snapshots");
+  ctx.observers = {&progress, &losses, &snaps};
+  snaps.set_enabled(r["snapshots"].get<bool>());
+  nlohmann::json stats;
+  ctx.stats = &stats;
+
+  auto method = MethodRegistry::instance().create(r["method"], "method");
+  spdlog::info("[{}] {} points, {} classes -> {} points ({}), seed {}", name, o.exemplar.size(), o.exemplar.num_classes(),
+               o.exemplar.size() * ctx.upscale * ctx.upscale, r["method"]["type"].get<std::string>(), ctx.seed);
+  const auto ts = Clock::now();
+  o.output = method->synthesize(o.exemplar, ctx);
+  const double synth_seconds = std::chrono::duration<double>(Clock::now() - ts).count();
+  o.stats = stats;
+
+  // --- outputs ------------------------------------------------------------------
+  write_points(partial + "/output.txt", o.output, Format::Plain);
+  Format ex_format = detect_format(resolve_data_path(r["exemplar"]));
+  if (ex_format == Format::GaborInt) write_points(partial + "/output.gabor.txt", o.output, Format::GaborInt);
+  std::vector<std::pair<std::string, PointSet>> panels = {{"exemplar (" + std::to_string(o.exemplar.size()) + ")", o.exemplar}};
+  o.initialization = snaps.initial();
+  if (!o.initialization.empty()) {
+    panels.push_back({"initialisation", o.initialization});
+    write_points(partial + "/init.txt", o.initialization, Format::Plain);
+  }
+  panels.push_back({"output (" + std::to_string(o.output.size()) + ")", o.output});
+  plot_panels(partial + "/exemplar_vs_output.png", panels, PointStyle{}, 420);
+  write_text_atomic(partial + "/loss.csv", losses.csv());
+  losses.plot(partial + "/loss.png", name + ": loss per iteration");
+  write_text_atomic(partial + "/config.json", r.dump(2) + "\n");
+  if (r["evaluate"].get<bool>()) {
+    o.metrics = evaluate(o.exemplar, o.output);
+    write_text_atomic(partial + "/metrics.json", o.metrics.dump(2) + "\n");
+    plot_pcf(partial + "/pcf.png", o.metrics);
+  }
+  o.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  nlohmann::json run = {{"name", name},
+                        {"seed", ctx.seed},
+                        {"revision", revision()},
+                        {"quick", quick},
+                        {"synthesis_seconds", synth_seconds},
+                        {"total_seconds", o.seconds},
+                        {"method_stats", stats}};
+  write_text_atomic(partial + "/run.json", run.dump(2) + "\n");
+  fs::remove_all(o.dir);
+  fs::rename(partial, o.dir);
+  spdlog::info("[{}] wrote {} ({:.1f} s)", name, o.dir, o.seconds);
+  return o;
+}
+
+}  // namespace ppsynth::app

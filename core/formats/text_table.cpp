@@ -1,0 +1,87 @@
+#include "core/formats/text_table.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace ppsynth {
+
+std::string read_file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw file_error(path, 0, "cannot open (missing or unreadable file)");
+  std::ostringstream s;
+  s << in.rdbuf();
+  if (in.bad()) throw file_error(path, 0, "read error");
+  return s.str();
+}
+
+std::vector<TextRow> split_rows(const std::string& text) {
+  std::vector<TextRow> rows;
+  std::istringstream in(text);
+  std::string raw;
+  long n = 0;
+  while (std::getline(in, raw)) {
+    ++n;
+    const auto b = raw.find_first_not_of(" \t\r\f\v");
+    if (b == std::string::npos) continue;
+    const auto e = raw.find_last_not_of(" \t\r\f\v");
+    TextRow r;
+    r.line = n;
+    r.text = raw.substr(b, e - b + 1);
+    std::istringstream f(r.text);
+    for (std::string tok; f >> tok;) r.fields.push_back(tok);
+    rows.push_back(std::move(r));
+  }
+  return rows;
+}
+
+double parse_real_field(const std::string& field, const std::string& source, long line) {
+  double v = 0;
+  const char* b = field.data();
+  const char* e = b + field.size();
+  if (b != e && *b == '+') ++b;  // from_chars rejects a leading '+'
+  auto [p, ec] = std::from_chars(b, e, v);
+  if (ec == std::errc::result_out_of_range)
+    throw file_error(source, line, "number '" + field + "' is out of range");
+  if (ec != std::errc() || p != e) throw file_error(source, line, "'" + field + "' is not a number");
+  if (!std::isfinite(v)) throw file_error(source, line, "'" + field + "' is not a finite number");
+  return v;
+}
+
+long long parse_integer_field(const std::string& field, const std::string& source, long line) {
+  long long v = 0;
+  const char* b = field.data();
+  const char* e = b + field.size();
+  if (b != e && *b == '+') ++b;
+  auto [p, ec] = std::from_chars(b, e, v);
+  if (ec == std::errc::result_out_of_range)
+    throw file_error(source, line, "integer '" + field + "' is out of range");
+  if (ec != std::errc() || p != e) {
+    // Say "not a finite number" for nan/inf so the message is the same in every format.
+    double d = 0;
+    auto [q, ec2] = std::from_chars(b, e, d);
+    if (ec2 == std::errc() && q == e && !std::isfinite(d))
+      throw file_error(source, line, "'" + field + "' is not a finite number");
+    throw file_error(source, line, "'" + field + "' is not an integer");
+  }
+  return v;
+}
+
+long long parse_integral_real_field(const std::string& field, const std::string& source, long line) {
+  const double v = parse_real_field(field, source, line);
+  if (v != std::floor(v) || std::abs(v) > 9.0e15)
+    throw file_error(source, line, "'" + field + "' is not an integer category id");
+  return static_cast<long long>(v);
+}
+
+std::string format_real(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+}  // namespace ppsynth

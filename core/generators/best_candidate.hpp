@@ -1,0 +1,23 @@
+#pragma once
+// Mitchell's best-candidate sampling: each new point is the best of m * (current count)
+// uniform candidates (at least 1), "best" = farthest from its nearest accepted point,
+// measured toroidally over the full domain so the pattern tiles. The candidates are drawn in
+// the sub-window shrunk by `margin` on every side (as a fraction of width/height); the
+// published code initialises with n points in [0.01, 0.99]^2, i.e. margin = 0.01 (the
+// default). margin = 0 gives the classic toroidal best-candidate pattern.
+// Registered as "best_candidate" {m, margin}.
+#include <cstdint>
+
+#include "core/point_set.hpp"
+
+namespace ppsynth {
+
+struct BestCandidateOptions {
+  double m = 10;        // candidates per accepted point
+  double margin = 0.01;  // candidates drawn in [x0+margin*W, x1-margin*W] x (same in y)
+};
+
+PointSet best_candidate_points(size_t n, uint64_t seed, Domain d = {},
+                               const BestCandidateOptions& opt = {});
+
+}  // namespace ppsynth

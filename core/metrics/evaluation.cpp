@@ -1,0 +1,149 @@
+#include "core/metrics/evaluation.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "core/metrics/nearest_neighbor.hpp"
+#include "core/metrics/overlap.hpp"
+#include "core/metrics/quadrant.hpp"
+#include "core/metrics/spectrum.hpp"
+
+namespace ppsynth {
+
+namespace {
+
+using nlohmann::json;
+
+json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+json set_summary(const PointSet& ps) {
+  json j;
+  j["count"] = ps.size();
+  j["class_counts"] = ps.class_counts();
+  if (ps.size() >= 2) {
+    j["d_min"] = min_nn_distance(ps, true);
+    j["mean_nn"] = mean_nn_distance(ps, true);
+    j["relative_radius"] = relative_radius(ps);
+  } else {
+    j["d_min"] = j["mean_nn"] = j["relative_radius"] = nullptr;
+  }
+  json per = json::array();
+  for (int k = 0; k < ps.num_classes(); ++k) {
+    PointSet c = ps.subset_class(k);
+    per.push_back(c.size() >= 2 ? json(relative_radius(c)) : json(nullptr));
+  }
+  j["relative_radius_per_class"] = per;
+  return j;
+}
+
+json curves_json(const Curve& ex, const Curve& out) {
+  return {{"r", ex.r}, {"exemplar", ex.g}, {"output", out.g}};
+}
+
+json patch_json(const PointSet& ex, const PointSet& out, const EvalOptions& opt) {
+  Curve ce, co;
+  PatchMetrics m = quadrant_metrics(ex, out, opt.pcf, &ce, &co);
+  json j = {{"pcf_mse", num(m.pcf_mse)}, {"wasserstein", num(m.wasserstein)}, {"chamfer", num(m.chamfer)}};
+  if (opt.include_curves) j["pcf"] = curves_json(ce, co);
+  return j;
+}
+
+json overlap_json(const PointSet& ps, bool periodic) {
+  json a = json::array();
+  for (const auto& o : disk_overlaps(ps, periodic))
+    a.push_back({{"ci", o.ci}, {"cj", o.cj}, {"pairs", o.pairs}, {"pair_fraction", o.pair_fraction},
+                 {"point_fraction", o.point_fraction}});
+  return a;
+}
+
+}  // namespace
+
+json evaluate(const PointSet& exemplar, const PointSet& output, const EvalOptions& opt) {
+  if (exemplar.empty()) throw InputError("evaluate: the exemplar is empty");
+  if (output.empty()) throw InputError("evaluate: the output is empty");
+  json r;
+  r["exemplar"] = set_summary(exemplar);
+  r["output"] = set_summary(output);
+  r["upscale"] = std::sqrt(static_cast<double>(output.size()) / exemplar.size());
+  r["all"] = patch_json(exemplar, output, opt);
+  const int K = exemplar.num_classes();
+  json classes = json::array();
+  if (K > 1) {
+    for (int k = 0; k < K; ++k) {
+      json c = patch_json(exemplar.subset_class(k), output.subset_class(k), opt);
+      c["class"] = k;
+      c["label"] = exemplar.class_label(k);
+      classes.push_back(c);
+    }
+  }
+  r["classes"] = classes;
+  json cross = json::array();
+  for (int a = 0; a < K; ++a)
+    for (int b = a + 1; b < K; ++b) {
+      Curve ce, co;
+      const double mse = quadrant_cross_pcf_mse(exemplar, output, a, b, opt.pcf, &ce, &co);
+      json c = {{"ci", a}, {"cj", b}, {"pcf_mse", num(mse)}};
+      if (opt.include_curves) c["pcf"] = curves_json(ce, co);
+      cross.push_back(c);
+    }
+  r["cross"] = cross;
+  if (exemplar.attribute_index("radius") && output.attribute_index("radius"))
+    r["overlap"] = {{"exemplar", overlap_json(exemplar, opt.periodic_overlap)},
+                    {"output", overlap_json(output, opt.periodic_overlap)}};
+  if (opt.spectrum) {
+    Spectrum se = power_spectrum(exemplar, opt.spectrum_frequency);
+    Spectrum so = power_spectrum(output, opt.spectrum_frequency);
+    r["spectrum"] = {{"frequency", se.frequency}, {"exemplar", se.radial_power}, {"output", so.radial_power}};
+  }
+  r["options"] = {{"bins", opt.pcf.bins},
+                  {"r_max_factor", opt.pcf.r_max_factor},
+                  {"sigma_factor", opt.pcf.sigma_factor},
+                  {"r_min_factor", opt.pcf.r_min_factor},
+                  {"periodic", opt.pcf.periodic},
+                  {"r_max", opt.pcf.r_max > 0 ? json(opt.pcf.r_max) : json("from exemplar count")}};
+  return r;
+}
+
+std::string format_evaluation(const json& r) {
+  std::ostringstream os;
+  auto f = [](const json& v, const char* fmt = "%.4f") {
+    if (!v.is_number()) return std::string("-");
+    char buf[64];
+    std::snprintf(buf, sizeof buf, fmt, v.get<double>());
+    return std::string(buf);
+  };
+  char line[256];
+  os << "                    exemplar      output\n";
+  std::snprintf(line, sizeof line, "points          %12zu %12zu\n", r["exemplar"]["count"].get<size_t>(),
+                r["output"]["count"].get<size_t>());
+  os << line;
+  for (const char* key : {"d_min", "mean_nn", "relative_radius"}) {
+    std::snprintf(line, sizeof line, "%-16s%12s %12s\n", key, f(r["exemplar"][key]).c_str(),
+                  f(r["output"][key]).c_str());
+    os << line;
+  }
+  os << "upscale (per axis) " << f(r["upscale"], "%.3f") << "\n\n";
+  os << "quadrant metrics   pcf_mse  wasserstein  chamfer\n";
+  auto row = [&](const std::string& name, const json& m) {
+    std::snprintf(line, sizeof line, "%-16s %9s %12s %8s\n", name.c_str(), f(m["pcf_mse"], "%.5f").c_str(),
+                  f(m["wasserstein"]).c_str(), f(m["chamfer"]).c_str());
+    os << line;
+  };
+  row("all classes", r["all"]);
+  for (const auto& c : r["classes"]) row("class " + std::to_string(c["label"].get<int>()), c);
+  for (const auto& c : r["cross"]) {
+    std::snprintf(line, sizeof line, "cross %d-%d        %9s\n", c["ci"].get<int>(), c["cj"].get<int>(),
+                  f(c["pcf_mse"], "%.5f").c_str());
+    os << line;
+  }
+  if (r.contains("overlap")) {
+    os << "\noverlapping disk pairs (all classes): exemplar "
+       << r["overlap"]["exemplar"][0]["pairs"].get<size_t>() << ", output "
+       << r["overlap"]["output"][0]["pairs"].get<size_t>() << "\n";
+  }
+  return os.str();
+}
+
+}  // namespace ppsynth

@@ -1,0 +1,41 @@
+#pragma once
+// The evaluation suite in one call: what `ppsynth eval` prints and reports consume.
+// evaluate(exemplar, output) returns JSON:
+//   "exemplar", "output": { "count", "class_counts", "d_min", "mean_nn", "relative_radius",
+//                           "relative_radius_per_class" }   (d_min/mean_nn toroidal, domain
+//                           units; relative radius per nearest_neighbor.hpp)
+//   "upscale": sqrt(output count / exemplar count) (the per-axis u of method.md; ~2)
+//   "all":     quadrant metrics of all classes together { "pcf_mse", "wasserstein",
+//              "chamfer", "pcf": { "r", "exemplar", "output" } }   (quadrant.hpp)
+//   "classes": [ { "class", "label", same metrics } ]  per class (present in the exemplar)
+//   "cross":   [ { "ci", "cj", "pcf_mse", "pcf": {...} } ] for every class pair ci < cj
+//   "overlap": [ { "ci", "cj", "pairs", "pair_fraction", "point_fraction" } ] (when both
+//              sets have a "radius" attribute; output and exemplar as "output"/"exemplar")
+//   "spectrum": { "frequency", "exemplar", "output" } radially averaged power (optional)
+//   "options": the PCF options used.
+// PCF curves are included unless options.include_curves is false ("r" in r_max units,
+// "output" = mean of the four quadrant patches' curves).
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/metrics/pcf.hpp"
+#include "core/point_set.hpp"
+
+namespace ppsynth {
+
+struct EvalOptions {
+  PcfOptions pcf;
+  bool include_curves = true;
+  bool spectrum = false;      // radially averaged spectra of both sets (O(N F^2))
+  int spectrum_frequency = 32;
+  bool periodic_overlap = false;
+};
+
+nlohmann::json evaluate(const PointSet& exemplar, const PointSet& output,
+                        const EvalOptions& opt = {});
+
+// Human-readable table of an evaluate() result.
+std::string format_evaluation(const nlohmann::json& result);
+
+}  // namespace ppsynth

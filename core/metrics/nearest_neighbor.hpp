@@ -1,0 +1,23 @@
+#pragma once
+// Nearest-neighbour statistics of a point set (all classes together; pass
+// ps.subset_class(k) for one class). Distances are in domain units; `periodic` measures them
+// on the torus formed by ps.domain() (minimum image), otherwise in the plane.
+//
+// relative_radius (Lagae & Dutre 2008): rho = (d_min / 2) / r_max, where d_min is the
+// smallest toroidal distance between two points and r_max = sqrt(A / (2 sqrt(3) N)) is the
+// largest disk radius N equal non-overlapping disks can have on the torus of area A
+// (hexagonal packing; on the unit torus r_max = sqrt(1 / (2 sqrt(3) N))). Dimensionless:
+// 1 for a perfect hexagonal lattice, ~0.75 for good blue noise, ~0 for white noise.
+// Fewer than 2 points throw InputError.
+#include "core/point_set.hpp"
+
+namespace ppsynth {
+
+double mean_nn_distance(const PointSet& ps, bool periodic = false);
+double min_nn_distance(const PointSet& ps, bool periodic = false);
+double relative_radius(const PointSet& ps);
+
+// r_max = sqrt(area / (2 sqrt(3) n)): hexagonal-packing disk radius of n points (domain units).
+double packing_radius(size_t n, double area = 1.0);
+
+}  // namespace ppsynth

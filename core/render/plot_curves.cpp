@@ -1,0 +1,195 @@
+#include "core/render/plot_curves.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/error.hpp"
+#include "core/render/canvas.hpp"
+#include "core/render/palette.hpp"
+#include "core/render/plot_frame.hpp"
+
+namespace ppsynth {
+namespace {
+
+using namespace render;
+
+constexpr double kPad = 12;
+constexpr double kTitleFont = 14.5;
+constexpr double kLabelFont = 12.5;
+constexpr double kTickFont = 11;
+constexpr double kLegendFont = 12;
+
+void check_series(const CurvePlot& plot, const std::string& path) {
+  for (const auto& s : plot.series)
+    if (s.x.size() != s.y.size())
+      throw InputError("plot " + path + ": series '" + s.label + "' has " + std::to_string(s.x.size()) +
+                       " x values but " + std::to_string(s.y.size()) + " y values");
+}
+
+bool usable(double x, double y, bool log_y) { return std::isfinite(x) && std::isfinite(y) && (!log_y || y > 0); }
+
+// Draws one plot inside the box (bx, by, bw, bh).
+void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double bw, double bh) {
+  // --- data ranges ---
+  double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
+  for (const auto& s : plot.series)
+    for (size_t i = 0; i < s.x.size(); ++i)
+      if (usable(s.x[i], s.y[i], plot.log_y)) {
+        xlo = std::min(xlo, s.x[i]), xhi = std::max(xhi, s.x[i]);
+        ylo = std::min(ylo, s.y[i]), yhi = std::max(yhi, s.y[i]);
+      }
+  const bool has_data = xlo <= xhi;
+  if (!has_data) xlo = 0, xhi = 1, ylo = plot.log_y ? 0.1 : 0, yhi = 1;
+  if (xhi == xlo) xlo -= 0.5, xhi += 0.5;
+  // Curves that start just above 0 (PCF radii from 0.01 r_max) get an axis from 0.
+  if (has_data && xlo > 0 && xlo < 0.05 * (xhi - xlo)) xlo = 0;
+  std::vector<double> yt;
+  if (plot.log_y) {
+    if (yhi == ylo) ylo /= 2, yhi *= 2;
+    // 4% headroom in log space; widen to one decade so at least one tick shows.
+    double l0 = std::log10(ylo), l1 = std::log10(yhi);
+    const double pad = 0.04 * (l1 - l0);
+    l0 -= pad, l1 += pad;
+    if (l1 - l0 < 1) {
+      const double mid = (l0 + l1) / 2;
+      l0 = mid - 0.5, l1 = mid + 0.5;
+    }
+    ylo = std::pow(10.0, l0), yhi = std::pow(10.0, l1);
+    yt = log_ticks(ylo, yhi);
+  } else {
+    if (yhi == ylo) ylo -= 0.5, yhi += 0.5;
+    // Expand to the enclosing tick steps so the curve never touches the frame.
+    yt = nice_ticks(ylo, yhi, 5);
+    const double step = yt.size() >= 2 ? yt[1] - yt[0] : (yhi - ylo);
+    ylo = std::floor(ylo / step + 1e-9) * step;
+    yhi = std::ceil(yhi / step - 1e-9) * step;
+    if (yhi - ylo < 1e-12) yhi = ylo + step;
+    yt = nice_ticks(ylo, yhi, 5);
+  }
+  const std::vector<double> xt = nice_ticks(xlo, xhi, 6);
+
+  // --- layout ---
+  double ytw = 0;
+  for (double t : yt) ytw = std::max(ytw, measure_text(tick_label(t), kTickFont));
+  std::vector<LegendItem> legend;
+  for (size_t k = 0; k < plot.series.size(); ++k)
+    if (!plot.series[k].label.empty())
+      legend.push_back({plot.series[k].label, class_color(static_cast<int>(k)),
+                        plot.series[k].dashed ? Marker::DashedLine : Marker::Line});
+  const double left = bx + kPad + (plot.ylabel.empty() ? 0 : kLabelFont * 1.5) + ytw + 8;
+  const double right = bx + bw - kPad;
+  const double top = by + (plot.title.empty() ? kPad : kTitleFont * 2.2);
+  const double leg_h = legend_height(legend, right - left, kLegendFont);
+  const double bottom = by + bh - kPad - leg_h - (plot.xlabel.empty() ? 0 : kLabelFont * 1.6) - kTickFont * 1.6;
+  const double pw = right - left, ph = bottom - top;
+  if (pw < 10 || ph < 10) return;  // too small to draw anything meaningful
+
+  auto X = [&](double x) { return left + (x - xlo) / (xhi - xlo) * pw; };
+  auto Y = [&](double y) {
+    const double t = plot.log_y ? (std::log10(y) - std::log10(ylo)) / (std::log10(yhi) - std::log10(ylo))
+                                : (y - ylo) / (yhi - ylo);
+    return bottom - t * ph;
+  };
+
+  // --- title and axis labels ---
+  set_color(cr, kText);
+  if (!plot.title.empty()) draw_text(cr, plot.title, left, by + kTitleFont * 1.5, kTitleFont, HAlign::Left, VAlign::Baseline, true);
+  if (!plot.xlabel.empty())
+    draw_text(cr, plot.xlabel, left + pw / 2, bottom + kTickFont * 1.6 + 4, kLabelFont, HAlign::Center, VAlign::Top);
+  if (!plot.ylabel.empty())
+    draw_text(cr, plot.ylabel, bx + kPad, top + ph / 2, kLabelFont, HAlign::Center, VAlign::Top, false, -M_PI / 2);
+
+  // --- grid, ticks ---
+  cairo_save(cr);
+  cairo_set_line_width(cr, 1);
+  for (double t : xt) {
+    set_color(cr, kGrid);
+    cairo_move_to(cr, std::round(X(t)) + 0.5, top);
+    cairo_line_to(cr, std::round(X(t)) + 0.5, bottom);
+    cairo_stroke(cr);
+    set_color(cr, kText);
+    draw_text(cr, tick_label(t), X(t), bottom + 5, kTickFont, HAlign::Center, VAlign::Top);
+  }
+  for (double t : yt) {
+    set_color(cr, kGrid);
+    cairo_move_to(cr, left, std::round(Y(t)) + 0.5);
+    cairo_line_to(cr, right, std::round(Y(t)) + 0.5);
+    cairo_stroke(cr);
+    set_color(cr, kText);
+    draw_text(cr, tick_label(t), left - 6, Y(t), kTickFont, HAlign::Right, VAlign::Middle);
+  }
+  set_color(cr, kAxis);
+  cairo_rectangle(cr, std::round(left) + 0.5, std::round(top) + 0.5, std::round(pw), std::round(ph));
+  cairo_stroke(cr);
+  cairo_restore(cr);
+
+  // --- curves ---
+  cairo_save(cr);
+  cairo_rectangle(cr, left, top, pw, ph);
+  cairo_clip(cr);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  for (size_t k = 0; k < plot.series.size(); ++k) {
+    const Series& s = plot.series[k];
+    set_color(cr, class_color(static_cast<int>(k)));
+    cairo_set_line_width(cr, 1.8);
+    if (s.dashed) {
+      const double d[] = {6, 4};
+      cairo_set_dash(cr, d, 2, 0);
+    } else {
+      cairo_set_dash(cr, nullptr, 0, 0);
+    }
+    bool pen = false;
+    size_t drawn = 0;
+    for (size_t i = 0; i < s.x.size(); ++i) {
+      if (!usable(s.x[i], s.y[i], plot.log_y)) {
+        pen = false;  // gap
+        continue;
+      }
+      if (pen)
+        cairo_line_to(cr, X(s.x[i]), Y(s.y[i]));
+      else
+        cairo_move_to(cr, X(s.x[i]), Y(s.y[i]));
+      pen = true;
+      ++drawn;
+    }
+    cairo_stroke(cr);
+    if (drawn == 1) {  // a single point would be invisible as a line
+      for (size_t i = 0; i < s.x.size(); ++i)
+        if (usable(s.x[i], s.y[i], plot.log_y)) cairo_arc(cr, X(s.x[i]), Y(s.y[i]), 2.5, 0, 2 * M_PI);
+      cairo_fill(cr);
+    }
+  }
+  cairo_restore(cr);
+  if (!has_data) {
+    set_color(cr, kAxis);
+    draw_text(cr, "(no data)", left + pw / 2, top + ph / 2, kLabelFont, HAlign::Center, VAlign::Middle);
+  }
+
+  draw_legend(cr, legend, left, by + bh - kPad - leg_h, right - left, kLegendFont);
+}
+
+}  // namespace
+
+void plot_curves(const std::string& path, const CurvePlot& plot, int width_px, int height_px) {
+  render::image_kind_for(path);
+  check_series(plot, path);
+  render::render_to_file(path, width_px, height_px,
+                         [&](cairo_t* cr) { draw_plot(cr, plot, 0, 0, width_px, height_px); });
+}
+
+void plot_curve_grid(const std::string& path, const std::vector<CurvePlot>& plots, int columns, int cell_w,
+                     int cell_h) {
+  render::image_kind_for(path);
+  if (plots.empty()) throw InputError("plot " + path + ": no plots in the grid");
+  for (const auto& p : plots) check_series(p, path);
+  const int n = static_cast<int>(plots.size());
+  const int cols = columns <= 0 ? n : std::min(columns, n);
+  const int rows = (n + cols - 1) / cols;
+  render::render_to_file(path, cols * cell_w, rows * cell_h, [&](cairo_t* cr) {
+    for (int i = 0; i < n; ++i) draw_plot(cr, plots[i], (i % cols) * cell_w, (i / cols) * cell_h, cell_w, cell_h);
+  });
+}
+
+}  // namespace ppsynth

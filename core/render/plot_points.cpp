@@ -1,0 +1,251 @@
+#include "core/render/plot_points.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "core/error.hpp"
+#include "core/render/canvas.hpp"
+#include "core/render/palette.hpp"
+#include "core/render/plot_frame.hpp"
+
+namespace ppsynth {
+namespace {
+
+using namespace render;
+
+constexpr double kMargin = 14;      // outer margin (px)
+constexpr double kLeftAxis = 30;    // room for y tick labels
+constexpr double kBottomAxis = 20;  // room for x tick labels
+constexpr double kTitleH = 28;
+constexpr double kTickFont = 10.5;
+constexpr double kColorbarH = 34;
+
+struct Range {
+  double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
+  void add(double v) {
+    if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+  }
+  bool valid() const { return lo <= hi; }
+  double norm(double v) const { return hi > lo ? (v - lo) / (hi - lo) : 0.5; }
+};
+
+int require_attribute(const PointSet& ps, const std::string& name, const char* what) {
+  if (auto a = ps.attribute_index(name)) return *a;
+  std::string known;
+  for (const auto& n : ps.attribute_names()) known += (known.empty() ? "" : ", ") + n;
+  throw InputError(std::string(what) + " attribute '" + name + "' not found (attributes: " +
+                   (known.empty() ? "none" : known) + ")");
+}
+
+bool uses_disks(const PointSet& ps, const PointStyle& st) {
+  return st.draw_disks && ps.attribute_index("radius").has_value();
+}
+
+// Side lengths in px of the frame for a domain fitted in a square of side `side`.
+void frame_size(const Domain& d, double side, double& w, double& h) {
+  const double aspect = d.width() > 0 && d.height() > 0 ? d.height() / d.width() : 1.0;
+  if (aspect <= 1) {
+    w = side;
+    h = side * aspect;
+  } else {
+    h = side;
+    w = side / aspect;
+  }
+}
+
+double auto_radius(size_t n, double w_px, double h_px) {
+  if (n == 0) return 3;
+  // Mean spacing on screen: sqrt(area / N); a fifth of it keeps dense patterns readable and
+  // gives the same look to an exemplar and a u^2-times larger output drawn at the same size.
+  const double spacing = std::sqrt(w_px * h_px / static_cast<double>(n));
+  return std::clamp(0.2 * spacing, 0.6, 8.0);
+}
+
+// Draws the frame, the ticks and the points of `ps` with the frame's top-left at (fx, fy).
+void draw_points_in_frame(cairo_t* cr, const PointSet& ps, const PointStyle& st, double fx, double fy,
+                          double fw, double fh, const Range& color_range) {
+  const Domain& d = ps.domain();
+  const double sx = fw / (d.width() > 0 ? d.width() : 1), sy = fh / (d.height() > 0 ? d.height() : 1);
+  auto X = [&](double x) { return fx + (x - d.x0) * sx; };
+  auto Y = [&](double y) { return fy + fh - (y - d.y0) * sy; };  // y up
+
+  // Ticks and labels (outside the frame).
+  cairo_save(cr);
+  set_color(cr, kAxis);
+  cairo_set_line_width(cr, 0.8);
+  for (double t : nice_ticks(d.x0, d.x1, 2)) {
+    cairo_move_to(cr, X(t), fy + fh);
+    cairo_line_to(cr, X(t), fy + fh + 4);
+    cairo_stroke(cr);
+    set_color(cr, kText);
+    draw_text(cr, tick_label(t), X(t), fy + fh + 5, kTickFont, HAlign::Center, VAlign::Top);
+    set_color(cr, kAxis);
+  }
+  for (double t : nice_ticks(d.y0, d.y1, 2)) {
+    cairo_move_to(cr, fx, Y(t));
+    cairo_line_to(cr, fx - 4, Y(t));
+    cairo_stroke(cr);
+    set_color(cr, kText);
+    draw_text(cr, tick_label(t), fx - 6, Y(t), kTickFont, HAlign::Right, VAlign::Middle);
+    set_color(cr, kAxis);
+  }
+  cairo_restore(cr);
+
+  // Points, clipped to the domain.
+  cairo_save(cr);
+  cairo_rectangle(cr, fx, fy, fw, fh);
+  cairo_clip(cr);
+  const double base = st.point_radius_px > 0 ? st.point_radius_px : auto_radius(ps.size(), fw, fh);
+  int size_a = -1, color_a = -1, radius_a = -1;
+  Range size_range;
+  if (!st.size_attribute.empty()) {
+    size_a = require_attribute(ps, st.size_attribute, "size");
+    for (double v : ps.attribute_column(size_a)) size_range.add(v);
+  }
+  if (!st.color_attribute.empty()) color_a = require_attribute(ps, st.color_attribute, "colour");
+  if (uses_disks(ps, st)) radius_a = *ps.attribute_index("radius");
+
+  // Draw class by class (class 0 first) so colours layer predictably.
+  std::vector<size_t> order(ps.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return ps.cls(a) < ps.cls(b); });
+  for (size_t i : order) {
+    const Vec2& p = ps[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+    const Rgb c = color_a >= 0 ? viridis(color_range.norm(ps.attr(i, color_a))) : class_color(ps.cls(i));
+    if (radius_a >= 0) {
+      const double r = std::max(0.0, ps.attr(i, radius_a)) * std::sqrt(sx * sy);
+      cairo_new_path(cr);
+      cairo_arc(cr, X(p.x), Y(p.y), std::max(r, 0.5), 0, 2 * M_PI);
+      set_color(cr, c, 0.35);
+      cairo_fill_preserve(cr);
+      set_color(cr, c, 0.95);
+      cairo_set_line_width(cr, std::clamp(r * 0.08, 0.5, 1.2));
+      cairo_stroke(cr);
+      continue;
+    }
+    double r = base;
+    if (size_a >= 0) r = base * (0.5 + 1.5 * size_range.norm(ps.attr(i, size_a)));
+    cairo_new_path(cr);
+    cairo_arc(cr, X(p.x), Y(p.y), r, 0, 2 * M_PI);
+    set_color(cr, c);
+    cairo_fill(cr);
+  }
+  cairo_restore(cr);
+
+  if (st.show_frame) {
+    cairo_save(cr);
+    set_color(cr, kAxis);
+    cairo_set_line_width(cr, 1.0);
+    cairo_rectangle(cr, fx, fy, fw, fh);
+    cairo_stroke(cr);
+    cairo_restore(cr);
+  }
+}
+
+// Legend entries for the classes present in any of the point sets (labels from the files).
+std::vector<LegendItem> class_legend(const std::vector<const PointSet*>& sets, const PointStyle& st,
+                                     bool with_counts) {
+  std::map<int, int> label_of;  // class id -> file label
+  std::map<int, size_t> count;
+  bool disks = false;
+  for (const PointSet* ps : sets) {
+    disks = disks || uses_disks(*ps, st);
+    for (size_t i = 0; i < ps->size(); ++i) {
+      label_of.emplace(ps->cls(i), ps->class_label(ps->cls(i)));
+      ++count[ps->cls(i)];
+    }
+  }
+  std::vector<LegendItem> items;
+  if (label_of.size() <= 1) return items;
+  for (auto [k, label] : label_of) {
+    std::string text = "class " + std::to_string(label);
+    if (with_counts) text += " (n=" + std::to_string(count[k]) + ")";
+    items.push_back({text, class_color(k), disks ? Marker::Disk : Marker::Dot});
+  }
+  return items;
+}
+
+Range color_range_of(const std::vector<const PointSet*>& sets, const PointStyle& st) {
+  Range r;
+  if (st.color_attribute.empty()) return r;
+  for (const PointSet* ps : sets) {
+    const int a = require_attribute(*ps, st.color_attribute, "colour");
+    for (double v : ps->attribute_column(a)) r.add(v);
+  }
+  return r;
+}
+
+void draw_colorbar(cairo_t* cr, const std::string& name, const Range& r, double x, double y) {
+  set_color(cr, kText);
+  draw_text(cr, name, x, y + 12, 12, HAlign::Left, VAlign::Middle);
+  const double bx = x + measure_text(name, 12) + 10, bw = 160, bh = 10;
+  cairo_pattern_t* g = cairo_pattern_create_linear(bx, 0, bx + bw, 0);
+  for (int i = 0; i <= 8; ++i) {
+    const Rgb c = viridis(i / 8.0);
+    cairo_pattern_add_color_stop_rgb(g, i / 8.0, c.r, c.g, c.b);
+  }
+  cairo_rectangle(cr, bx, y + 7, bw, bh);
+  cairo_set_source(cr, g);
+  cairo_fill(cr);
+  cairo_pattern_destroy(g);
+  set_color(cr, kText);
+  draw_text(cr, tick_label(r.valid() ? r.lo : 0), bx, y + 19, 10, HAlign::Left, VAlign::Top);
+  draw_text(cr, tick_label(r.valid() ? r.hi : 0), bx + bw, y + 19, 10, HAlign::Right, VAlign::Top);
+}
+
+}  // namespace
+
+void plot_points(const std::string& path, const PointSet& ps, const PointStyle& style, int size_px) {
+  plot_panels(path, {{style.title, ps}}, style, size_px, 1);
+}
+
+void plot_panels(const std::string& path, const std::vector<std::pair<std::string, PointSet>>& panels,
+                 const PointStyle& style, int panel_px, int columns) {
+  render::image_kind_for(path);  // fail on a bad extension before any work
+  if (panels.empty()) throw InputError("plot_panels: no point sets to plot for " + path);
+  if (panel_px < 80) throw InputError("plot: panel size must be at least 80 px (got " + std::to_string(panel_px) + ")");
+  const int n = static_cast<int>(panels.size());
+  const int cols = columns <= 0 ? n : std::min(columns, n);
+  const int rows = (n + cols - 1) / cols;
+
+  std::vector<const PointSet*> sets;
+  for (const auto& p : panels) sets.push_back(&p.second);
+  const bool single = n == 1;
+  const auto legend = class_legend(sets, style, single);
+  const Range crange = color_range_of(sets, style);
+
+  const double side = panel_px - kLeftAxis - kMargin;  // frame fits in side x side
+  const double cell_w = panel_px, cell_h = kTitleH + side + kBottomAxis;
+  const double width = cols * cell_w + kMargin;
+  const double legend_w = width - 2 * kMargin - kLeftAxis;
+  const double leg_h = legend_height(legend, legend_w);
+  const double cbar_h = style.color_attribute.empty() ? 0 : kColorbarH;
+  const double height = rows * cell_h + leg_h + cbar_h + kMargin;
+
+  render::render_to_file(path, static_cast<int>(std::ceil(width)), static_cast<int>(std::ceil(height)), [&](cairo_t* cr) {
+    for (int i = 0; i < n; ++i) {
+      const auto& [title, ps] = panels[i];
+      const double cx = (i % cols) * cell_w + kMargin, cy = (i / cols) * cell_h;
+      double fw, fh;
+      frame_size(ps.domain(), side, fw, fh);
+      const double fx = cx + kLeftAxis + (side - fw) / 2;
+      const double fy = cy + kTitleH + (side - fh);
+      if (!title.empty()) {
+        set_color(cr, kText);
+        draw_text(cr, title, fx, cy + kTitleH - 8, 15, HAlign::Left, VAlign::Baseline, true);
+      }
+      set_color(cr, kAxis);
+      draw_text(cr, "N = " + std::to_string(ps.size()), fx + fw, cy + kTitleH - 8, 11,
+                HAlign::Right, VAlign::Baseline);
+      draw_points_in_frame(cr, ps, style, fx, fy, fw, fh, crange);
+    }
+    const double ly = rows * cell_h + 4;
+    draw_legend(cr, legend, kMargin + kLeftAxis, ly, legend_w);
+    if (cbar_h > 0) draw_colorbar(cr, style.color_attribute, crange, kMargin + kLeftAxis, ly + leg_h);
+  });
+}
+
+}  // namespace ppsynth

@@ -1,0 +1,41 @@
+#pragma once
+// Scatter plots of point sets: the figure researchers look at first (exemplar | output).
+// The domain is drawn as a square/rectangle with a thin frame (aspect kept); classes get
+// the Tableau-10 palette (render/palette.hpp) with a legend when K > 1.
+//
+// Marker size: auto radius ~ 0.28 * (domain-side / sqrt(N)) on screen, clamped to
+// [0.6, 6] px, so an exemplar with N points in the unit square and an output with u^2*N
+// points look alike (same visual density) when drawn at the same size.
+// Points with a "radius" attribute (disk patterns) are drawn as disks of their true radius
+// in domain units when `draw_disks` is set (outline + light fill).
+// Output format by extension: .png, .svg, .pdf (render/canvas.hpp); atomic writes.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/point_set.hpp"
+
+namespace ppsynth {
+
+struct PointStyle {
+  double point_radius_px = 0;   // 0 = auto from N (see above)
+  std::string size_attribute;   // map this attribute to marker size (min..max -> 0.5..2x)
+  std::string color_attribute;  // colour by this attribute (viridis ramp) instead of class
+  bool draw_disks = true;       // draw points that have a "radius" attribute as true disks
+  bool show_frame = true;       // thin frame around the domain
+  std::string title;            // drawn above the plot (plot_points only)
+};
+
+// One point set in a size_px x size_px image (plus a legend strip when K > 1).
+// Unknown size/color attribute => InputError naming the attribute and the known ones.
+void plot_points(const std::string& path, const PointSet& ps, const PointStyle& style = {},
+                 int size_px = 600);
+
+// Several point sets side by side, each with its title (e.g. exemplar | init | output),
+// wrapping after `columns` panels (0 = all in one row). Auto marker size is computed per
+// panel from its own N. One shared class legend below.
+void plot_panels(const std::string& path,
+                 const std::vector<std::pair<std::string, PointSet>>& panels,
+                 const PointStyle& style = {}, int panel_px = 400, int columns = 0);
+
+}  // namespace ppsynth

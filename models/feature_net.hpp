@@ -1,0 +1,28 @@
+#pragma once
+// FeatureNet: 1 x C x H x W maps -> the features of every block [F1, F2, F3] (paper §4.1).
+// Implementations: "random" (the paper's random-filter network), "fixed_bank" (Gaussian,
+// Sobel and derivative banks of the Fig. 10 ablation), "identity" (Gabor maps only, Fig. 12b).
+// All are frozen: their parameters never require gradients, so backward computes only the
+// input gradient (the published code also computes weight gradients and throws them away).
+#include <torch/torch.h>
+
+#include <vector>
+
+#include "core/registry.hpp"
+
+namespace ppsynth {
+
+using Features = std::vector<torch::Tensor>;  // one 1 x C_l x H_l x W_l tensor per block
+
+class FeatureNet : public torch::nn::Module {
+ public:
+  virtual Features forward(const torch::Tensor& maps) = 0;
+};
+
+// Created with the number of input channels and the run's seed (for random weights).
+using FeatureNetRegistry = Registry<FeatureNet, int /*in_channels*/, uint64_t /*seed*/>;
+
+// Freezes every parameter of `m` (requires_grad = false).
+void freeze(torch::nn::Module& m);
+
+}  // namespace ppsynth

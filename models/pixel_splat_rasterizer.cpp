@@ -1,0 +1,55 @@
+// "pixel_splat": points splatted into a res x res image with bilinear weights, so the image
+// is differentiable in the positions (Fig. 12c: random filters on pixelised points, no
+// Gabor maps). One channel per weight column (1 without attributes); the pixel value is
+// the summed weight, i.e. a point density.
+#include "core/config/defaults_catalog.hpp"
+#include "models/rasterizer.hpp"
+
+namespace ppsynth {
+namespace {
+
+class PixelSplatRasterizer : public Rasterizer {
+ public:
+  explicit PixelSplatRasterizer(int res) : res_(res) {}
+
+  torch::Tensor forward(const torch::Tensor& points, const torch::Tensor& weights, double,
+                        const torch::Tensor&) override {
+    const int64_t R = res_;
+    // Pixel centres at the Gabor grid positions: u = (x - b) / (1 - 2b) * (R - 1).
+    const double b = 1.0 / (R + 1);
+    auto uv = (points - b) / (1.0 - 2.0 * b) * static_cast<double>(R - 1);
+    auto uv0 = torch::floor(uv.detach());
+    auto frac = uv - uv0;  // carries the gradient
+    auto i0 = uv0.to(torch::kLong);
+    const int C = weights.defined() ? static_cast<int>(weights.size(1)) : 1;
+    std::vector<torch::Tensor> img(C, torch::zeros({R * R}, points.options()));
+    for (int dy = 0; dy <= 1; ++dy)
+      for (int dx = 0; dx <= 1; ++dx) {
+        auto wx = dx ? frac.select(1, 0) : 1 - frac.select(1, 0);
+        auto wy = dy ? frac.select(1, 1) : 1 - frac.select(1, 1);
+        auto col = i0.select(1, 0) + dx, row = i0.select(1, 1) + dy;
+        auto inside = (col >= 0) & (col < R) & (row >= 0) & (row < R);
+        auto flat = (row.clamp(0, R - 1) * R + col.clamp(0, R - 1));
+        auto w = wx * wy * inside.to(points.scalar_type());
+        for (int c = 0; c < C; ++c) {
+          auto wc = weights.defined() ? w * weights.select(1, c) : w;
+          img[c] = img[c].index_add(0, flat, wc);  // out-of-place: autograd-friendly
+        }
+      }
+    return torch::stack(img).view({1, C, R, R});
+  }
+  int channels(int A) const override { return A == 0 ? 1 : A; }
+  bool uses_jitter() const override { return false; }
+
+ private:
+  int res_;
+};
+
+}  // namespace
+}  // namespace ppsynth
+
+PPSYNTH_REGISTER(ppsynth::RasterizerRegistry, "pixel_splat", (ppsynth::json::object()),
+                 "bilinear splat of points into pixels (Fig. 12c: random filters only)",
+                 [](const ppsynth::json&, ppsynth::RasterizerArgs a) -> std::unique_ptr<ppsynth::Rasterizer> {
+                   return std::make_unique<ppsynth::PixelSplatRasterizer>(a.res);
+                 })

@@ -1,0 +1,38 @@
+#pragma once
+// RandomFilterNet: the paper's network of random filters (§4.1, method.md §3), never trained.
+//
+//   block1: conv kxk C->ch, [IN], [ReLU], conv kxk ch->ch, [IN], [ReLU]   -> F1 (full res)
+//   block2: conv kxk ch->ch stride 2, [IN], [ReLU]                         -> F2 (1/2)
+//   block3: conv kxk ch->ch stride 2, [IN], [ReLU]                         -> F3 (1/4)
+//
+// Defaults: ch = 120, k = 7, instance norm (no affine, eps 1e-5) and ReLU on. Weights
+// Glorot-uniform, biases PyTorch's default conv init, all drawn from the seed. `depth`
+// adds/removes stride-2 blocks (depth 3 = the paper's 4 filtering layers).
+#include "models/feature_net.hpp"
+
+namespace ppsynth {
+
+struct RandomFilterNetOptions {
+  int in_channels = 10;
+  int channels = 120;
+  int kernel_size = 7;
+  int depth = 3;  // number of blocks (features returned)
+  bool instance_norm = true;
+  bool relu = true;
+  uint64_t seed = 95;
+};
+
+class RandomFilterNet : public FeatureNet {
+ public:
+  explicit RandomFilterNet(RandomFilterNetOptions options);
+  Features forward(const torch::Tensor& maps) override;
+  const RandomFilterNetOptions& options() const { return opt_; }
+
+ private:
+  torch::Tensor activate(const torch::Tensor& x) const;
+  RandomFilterNetOptions opt_;
+  std::vector<torch::nn::Conv2d> convs_;
+  std::vector<int> block_end_;  // index of the last conv of each block
+};
+
+}  // namespace ppsynth

@@ -1,0 +1,139 @@
+#include "optim/gabor_pipeline.hpp"
+
+#include <algorithm>
+
+#include "core/metrics/nearest_neighbor.hpp"
+#include "models/feature_grid.hpp"
+#include "optim/sigma_schedule.hpp"
+
+namespace ppsynth {
+
+json gabor_defaults() {
+  return json{
+      {"c1", 1.0},
+      {"c2", 2.6},
+      {"num_sigmas", 4},
+      {"grid", {{"res", 0}, {"min_res", 128}, {"max_res", 256}}},  // res 0 = clamp(round(9/d))
+      {"k", 30},                                                   // neighbours: min(M, k)
+      {"jitter", true},
+      {"rasterizer", {{"type", "gabor"}}},
+      {"feature_net", {{"type", "random"}}},
+      {"losses", json::array({json{{"type", "gram"}, {"layers", {0, 1, 2}}, {"weight", 0.08}},
+                              json{{"type", "correlation"}, {"layers", {2}}, {"weight", 1.0}}})},
+      {"optimizer", {{"type", "adam"}}},
+      {"max_iterations", 500},
+      {"convergence", {{"window", 100}, {"check_every", 10}, {"threshold", 0.01}}},
+      {"init", {{"type", "best_candidate"}}},
+      {"class_order", json::array()},  // empty = file order
+      {"map_attributes", "auto"},
+      {"fresh_net_per_class", false},
+      // --quick: every knob that sets the cost, shrunk (tests and smoke runs).
+      {"quick", {{"res", 24}, {"channels", 8}, {"max_iterations", 4}, {"num_sigmas", 2}}},
+  };
+}
+
+torch::Tensor wrap_unit(const torch::Tensor& x) {
+  auto y = torch::where(x > 1, x - torch::floor(x), x);
+  return torch::where(y < 0, y + torch::ceil(torch::abs(y)), y);
+}
+
+std::vector<int> map_attribute_columns(const PointSet& ex, const json& spec) {
+  std::vector<int> cols;
+  if (spec.is_string() && spec.get<std::string>() == "auto") {
+    for (size_t a = 0; a < ex.num_attributes(); ++a) {
+      const auto& c = ex.attribute_column(a);
+      if (!c.empty() && *std::max_element(c.begin(), c.end()) > *std::min_element(c.begin(), c.end()))
+        cols.push_back(static_cast<int>(a));
+    }
+    return cols;
+  }
+  if (!spec.is_array()) throw config_error("method.map_attributes", "expected \"auto\" or a list of attribute names");
+  for (auto& n : spec) {
+    if (!n.is_string()) throw config_error("method.map_attributes", "expected attribute names");
+    auto idx = ex.attribute_index(n.get<std::string>());
+    if (!idx) throw config_error("method.map_attributes", "the exemplar has no attribute '" + n.get<std::string>() + "'");
+    cols.push_back(*idx);
+  }
+  return cols;
+}
+
+GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, int upscale, bool quick) {
+  GaborSettings s;
+  if (upscale < 1) throw config_error("upscale", "must be >= 1");
+  s.upscale = upscale;
+  const int K = exemplar.num_classes();
+  s.mean_nn_distance = mean_nn_distance(exemplar);
+  s.res = get_int(p["grid"], "res", "method.grid");
+  if (s.res == 0)
+    s.res = grid_resolution_for(s.mean_nn_distance, get_int(p["grid"], "min_res", "method.grid"),
+                                get_int(p["grid"], "max_res", "method.grid"));
+  if (s.res < 8) throw config_error("method.grid.res", "must be >= 8 (or 0 for automatic)");
+  int num_sigmas = get_int(p, "num_sigmas", "method");
+  s.max_iterations = get_int(p, "max_iterations", "method");
+  s.feature_net = p["feature_net"];
+  if (quick) {
+    s.res = std::min(s.res, get_int(p["quick"], "res", "method.quick"));
+    s.max_iterations = std::min(s.max_iterations, get_int(p["quick"], "max_iterations", "method.quick"));
+    num_sigmas = std::min(num_sigmas, get_int(p["quick"], "num_sigmas", "method.quick"));
+    if (s.feature_net.value("type", "") == "random") s.feature_net["channels"] = get_int(p["quick"], "channels", "method.quick");
+  }
+  if (s.max_iterations < 1) throw config_error("method.max_iterations", "must be >= 1");
+  s.sigmas = sigma_schedule(s.mean_nn_distance, get_number(p, "c1", "method"), get_number(p, "c2", "method"), num_sigmas);
+  const int k = get_int(p, "k", "method");
+  if (k < 1) throw config_error("method.k", "must be >= 1");
+  s.k = static_cast<int>(std::min<size_t>(exemplar.size(), static_cast<size_t>(k)));
+  s.attr_cols = map_attribute_columns(exemplar, p["map_attributes"]);
+  s.jitter = p["jitter"].get<bool>();
+  s.rule = ConvergenceRule{get_int(p["convergence"], "window", "method.convergence"),
+                           get_int(p["convergence"], "check_every", "method.convergence"),
+                           get_number(p["convergence"], "threshold", "method.convergence")};
+  for (auto& c : p["class_order"]) {
+    if (!c.is_number_integer() || c.get<int>() < 0 || c.get<int>() >= K)
+      throw config_error("method.class_order", "class ids are 0.." + std::to_string(K - 1));
+    s.class_order.push_back(c.get<int>());
+  }
+  if (s.class_order.empty())
+    for (int c = 0; c < K; ++c) s.class_order.push_back(c);
+  auto sorted = s.class_order;
+  std::sort(sorted.begin(), sorted.end());
+  for (int c = 0; c < K; ++c)
+    if (static_cast<int>(sorted.size()) != K || sorted[c] != c)
+      throw config_error("method.class_order", "must list every class 0.." + std::to_string(K - 1) + " once");
+  return s;
+}
+
+GaborPipeline::GaborPipeline(const json& p, const GaborSettings& s, uint64_t seed)
+    : p_(p), s_(s), seed_(seed), loss_(p["losses"], "method.losses") {
+  RasterizerArgs ex_args{s.res, 1.0, s.k}, out_args{s.upscale * s.res, static_cast<double>(s.upscale), s.k};
+  ex_rast_ = RasterizerRegistry::instance().create(p["rasterizer"], "method.rasterizer", ex_args, &resolved_rast_);
+  out_rast_ = RasterizerRegistry::instance().create(p["rasterizer"], "method.rasterizer", out_args);
+  in_channels_ = ex_rast_->channels(static_cast<int>(s.attr_cols.size()));
+  redraw_network(seed);
+}
+
+void GaborPipeline::redraw_network(uint64_t seed) {
+  net_ = FeatureNetRegistry::instance().create(s_.feature_net, "method.feature_net", in_channels_, seed, &resolved_net_);
+}
+
+void GaborPipeline::set_targets(const torch::Tensor& ex_points, const torch::Tensor& ex_weights, double sigma) {
+  torch::NoGradGuard ng;
+  auto f = net_->forward(ex_rast_->forward(ex_points, ex_weights, sigma, {}));
+  loss_.set_target(f, LossContext{s_.upscale, seed_});
+}
+
+torch::Tensor GaborPipeline::draw_jitter(std::mt19937_64& rng) const {
+  if (!s_.jitter || !out_rast_->uses_jitter()) return {};
+  const int64_t R = static_cast<int64_t>(s_.upscale) * s_.res;
+  const float amp = 1.0f / static_cast<float>(R + 1);
+  std::uniform_real_distribution<float> unif(-1.0f, 1.0f);
+  auto j = torch::empty({R * R, 2});
+  float* ptr = j.data_ptr<float>();
+  for (int64_t i = 0; i < j.numel(); ++i) ptr[i] = unif(rng) * amp;
+  return j;
+}
+
+json GaborPipeline::resolved() const {
+  return {{"rasterizer", resolved_rast_}, {"feature_net", resolved_net_}, {"losses", loss_.resolved()}};
+}
+
+}  // namespace ppsynth

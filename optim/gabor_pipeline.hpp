@@ -1,0 +1,80 @@
+#pragma once
+// GaborPipeline: the parts of the Gabor method for one evaluation, shared by the
+// synthesiser (optim/gabor_synthesizer.hpp) and the benchmark (`ppsynth bench`):
+//
+//   points --Rasterizer(u)--> maps --FeatureNet--> [F1, F2, F3] --CompositeLoss--> loss
+//
+// GaborSettings are the resolved numbers of a run (grid, k, sigmas, attributes, ...).
+#include <torch/torch.h>
+
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "core/point_set.hpp"
+#include "losses/composite_loss.hpp"
+#include "models/feature_net.hpp"
+#include "models/rasterizer.hpp"
+#include "optim/convergence.hpp"
+
+namespace ppsynth {
+
+// The "gabor" method's defaults (the published code's settings, method.md §2-5).
+json gabor_defaults();
+
+struct GaborSettings {
+  double mean_nn_distance = 0;  // d of the exemplar (all classes)
+  int res = 128;                // exemplar grid; the output grid is u * res
+  int upscale = 2;
+  int k = 30;                   // neighbours per grid position: min(M, k)
+  std::vector<double> sigmas;   // coarse -> fine
+  std::vector<int> attr_cols;   // attribute columns weighting the maps
+  std::vector<int> class_order;
+  int max_iterations = 500;
+  bool jitter = true;
+  ConvergenceRule rule;
+  json feature_net;             // the net spec after --quick shrinking
+};
+
+// Resolves settings from the method's (defaults-merged) params; errors name the key.
+GaborSettings resolve_gabor_settings(const json& params, const PointSet& exemplar, int upscale, bool quick);
+
+class GaborPipeline {
+ public:
+  GaborPipeline(const json& params, const GaborSettings& s, uint64_t seed);
+
+  // Exemplar features -> loss targets; once per sigma (and per class stage).
+  void set_targets(const torch::Tensor& ex_points, const torch::Tensor& ex_weights, double sigma);
+  // The three stages of one output evaluation.
+  torch::Tensor output_maps(const torch::Tensor& points, const torch::Tensor& weights, double sigma,
+                            const torch::Tensor& jitter) { return out_rast_->forward(points, weights, sigma, jitter); }
+  Features features(const torch::Tensor& maps) { return net_->forward(maps); }
+  torch::Tensor loss(const Features& f) { return loss_.forward(f); }
+  // Independent uniform offsets in [-1, 1] / (u res + 1) per grid position and axis, or an
+  // undefined tensor when jitter is off or meaningless for the rasterizer.
+  torch::Tensor draw_jitter(std::mt19937_64& rng) const;
+  // A new random network (the published code draws one per class for attribute scenes).
+  void redraw_network(uint64_t seed);
+
+  const CompositeLoss& composite() const { return loss_; }
+  json resolved() const;  // rasterizer, feature net and losses with every default filled in
+
+ private:
+  json p_;
+  GaborSettings s_;
+  uint64_t seed_;
+  std::unique_ptr<Rasterizer> ex_rast_, out_rast_;
+  std::unique_ptr<FeatureNet> net_;
+  CompositeLoss loss_;
+  json resolved_rast_, resolved_net_;
+  int in_channels_ = 10;
+};
+
+// Published toroidal wrap (x > 1 -> x - floor(x); x < 0 -> x + ceil(|x|)), identity gradient.
+torch::Tensor wrap_unit(const torch::Tensor& x);
+
+// The map weights of Eq. 5 for a config's "map_attributes": "auto" = every attribute column
+// that is not constant; or an explicit list of names. Returns column indices.
+std::vector<int> map_attribute_columns(const PointSet& exemplar, const json& spec);
+
+}  // namespace ppsynth

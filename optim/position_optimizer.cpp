@@ -1,0 +1,69 @@
+#include "optim/position_optimizer.hpp"
+
+#include "core/config/defaults_catalog.hpp"
+
+namespace ppsynth {
+
+double learning_rate_for(const json& p, int s, const std::string& kp) {
+  const json& lr = p["lr"];
+  double v = 0;
+  if (lr.is_number()) v = lr.get<double>();
+  else if (lr.is_array() && !lr.empty() && lr[0].is_number())
+    v = lr[std::min<size_t>(static_cast<size_t>(s), lr.size() - 1)].get<double>();
+  else throw config_error(kp + ".lr", "expected a number or a list of numbers");
+  if (!(v > 0)) throw config_error(kp + ".lr", "must be > 0");
+  return v;
+}
+
+namespace {
+
+class AdamPositions : public PositionOptimizer {
+ public:
+  AdamPositions(torch::Tensor p, double lr) : params_(p), adam_({p}, torch::optim::AdamOptions(lr)) {}
+  double step(const std::function<torch::Tensor()>& closure) override {
+    adam_.zero_grad();
+    auto loss = closure();
+    adam_.step();
+    return loss.item<double>();
+  }
+
+ private:
+  torch::Tensor params_;
+  torch::optim::Adam adam_;
+};
+
+class LbfgsPositions : public PositionOptimizer {
+ public:
+  LbfgsPositions(torch::Tensor p, double lr, int max_iter)
+      : lbfgs_({p}, torch::optim::LBFGSOptions(lr).max_iter(max_iter)) {}
+  double step(const std::function<torch::Tensor()>& closure) override {
+    double first = 0;
+    bool have = false;
+    lbfgs_.step([&] {
+      lbfgs_.zero_grad();
+      auto l = closure();
+      if (!have) first = l.item<double>(), have = true;
+      return l;
+    });
+    return first;
+  }
+
+ private:
+  torch::optim::LBFGS lbfgs_;
+};
+
+}  // namespace
+}  // namespace ppsynth
+
+PPSYNTH_REGISTER(ppsynth::OptimizerRegistry, "adam", (ppsynth::json{{"lr", {0.005, 0.002, 0.002, 0.002}}}),
+                 "Adam, fresh state per stage; lr per sigma (published: 0.005, 0.002, 0.002, 0.002)",
+                 [](const ppsynth::json& p, torch::Tensor params, int s) -> std::unique_ptr<ppsynth::PositionOptimizer> {
+                   return std::make_unique<ppsynth::AdamPositions>(params, ppsynth::learning_rate_for(p, s, "optimizer"));
+                 })
+PPSYNTH_REGISTER(ppsynth::OptimizerRegistry, "lbfgs", (ppsynth::json{{"lr", {0.5, 0.2, 0.2, 0.2}}, {"max_iter", 20}}),
+                 "L-BFGS (published: lr 100x Adam's); one step = up to max_iter evaluations",
+                 [](const ppsynth::json& p, torch::Tensor params, int s) -> std::unique_ptr<ppsynth::PositionOptimizer> {
+                   return std::make_unique<ppsynth::LbfgsPositions>(params, ppsynth::learning_rate_for(p, s, "optimizer"),
+                                                                   ppsynth::get_int(p, "max_iter", "optimizer"));
+                 })
+PPSYNTH_DEFAULTS_KIND("optimizer", ppsynth::OptimizerRegistry)

@@ -1,0 +1,69 @@
+#include <fstream>
+
+#include <catch2/catch.hpp>
+
+#include "core/formats/point_io.hpp"
+#include "core/paths.hpp"
+#include "core/generators/lattices.hpp"
+#include "core/generators/uniform.hpp"
+#include "core/metrics/evaluation.hpp"
+
+using namespace ppsynth;
+
+// The acceptance check: against a jittered-grid exemplar, a jittered-grid output
+// ranks above a uniform output on every quadrant metric.
+TEST_CASE("evaluate ranks a jittered grid above white noise", "[metrics]") {
+  for (uint64_t seed : {1, 2, 3, 4}) {
+    INFO("seed " << seed);
+    PointSet exemplar = jittered_grid_points(64, seed);
+    auto good = evaluate(exemplar, jittered_grid_points(256, seed + 100));
+    auto bad = evaluate(exemplar, uniform_points(256, seed + 100));
+    for (const char* metric : {"pcf_mse", "wasserstein", "chamfer"}) {
+      INFO(metric << ": jittered " << good["all"][metric] << " uniform " << bad["all"][metric]);
+      CHECK(good["all"][metric].get<double>() < bad["all"][metric].get<double>());
+    }
+  }
+}
+
+TEST_CASE("evaluate reports counts, classes, cross terms and curves", "[metrics]") {
+  PointSet ex = uniform_points(60, 1);
+  for (size_t i = 0; i < ex.size(); i += 2) ex.set_cls(i, 1);
+  PointSet out = uniform_points(240, 2);
+  for (size_t i = 0; i < out.size(); i += 3) out.set_cls(i, 1);
+  auto r = evaluate(ex, out);
+  CHECK(r["exemplar"]["count"] == 60);
+  CHECK(r["output"]["count"] == 240);
+  CHECK(r["upscale"].get<double>() == Approx(2.0));
+  REQUIRE(r["classes"].size() == 2);
+  REQUIRE(r["cross"].size() == 1);
+  CHECK(r["cross"][0]["pcf_mse"].get<double>() > 0);
+  CHECK(r["all"]["pcf"]["r"].size() == 100);
+  CHECK(r["all"]["pcf"]["output"].size() == 100);
+  CHECK(r["classes"][1]["pcf"]["exemplar"].size() == 100);
+  CHECK_FALSE(format_evaluation(r).empty());
+  EvalOptions o;
+  o.include_curves = false;
+  CHECK_FALSE(evaluate(ex, out, o)["all"].contains("pcf"));
+}
+
+// The reference numbers of shared/data/reference/README.md (an independent implementation
+// of the protocol on the published code's outputs). Skipped when the shared folder is absent.
+TEST_CASE("evaluate reproduces the reference quadrant numbers", "[metrics]") {
+  const std::string ex_path = resolve_data_path("shared:data/exemplars/gabor-paper/lines.txt");
+  const std::string out_path = resolve_data_path("shared:data/reference/lines/output.txt");
+  if (!std::ifstream(ex_path) || !std::ifstream(out_path)) {
+    WARN("shared data not found, skipped");
+    return;
+  }
+  EvalOptions o;
+  o.include_curves = false;
+  auto r = evaluate(read_points(ex_path), read_points(out_path), o);
+  CHECK(r["all"]["pcf_mse"].get<double>() == Approx(0.0156).epsilon(0.05));
+  CHECK(r["all"]["wasserstein"].get<double>() == Approx(0.112).epsilon(0.01));
+  CHECK(r["all"]["chamfer"].get<double>() == Approx(0.195).epsilon(0.01));
+  auto p = evaluate(read_points(resolve_data_path("shared:data/exemplars/gabor-paper/poisson_n64c2_point.txt")),
+                    read_points(resolve_data_path("shared:data/reference/poisson_n64c2_point/output.txt")), o);
+  REQUIRE(p["classes"].size() == 2);
+  CHECK(p["classes"][0]["pcf_mse"].get<double>() == Approx(0.0116).epsilon(0.05));
+  CHECK(p["classes"][1]["pcf_mse"].get<double>() == Approx(0.0095).epsilon(0.05));
+}

@@ -1,0 +1,246 @@
+// Rendering: format by extension, atomic writes, disk geometry read back from the PNG.
+#include <catch2/catch.hpp>
+
+#include <cairo.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/render/image_grid.hpp"
+#include "core/render/plot_curves.hpp"
+#include "core/render/plot_points.hpp"
+
+using namespace ppsynth;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch_dir(const std::string& name) {
+  fs::path d = fs::temp_directory_path() / ("ppsynth_test_render_" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+std::string head_bytes(const fs::path& p, size_t n) {
+  std::ifstream in(p, std::ios::binary);
+  std::string s(n, '\0');
+  in.read(&s[0], static_cast<std::streamsize>(n));
+  s.resize(static_cast<size_t>(in.gcount()));
+  return s;
+}
+
+PointSet random_two_class(size_t n, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  PointSet ps;
+  for (size_t i = 0; i < n; ++i) ps.add({u(rng), u(rng)}, static_cast<int>(i % 2));
+  return ps;
+}
+
+// RGB of pixel (x, y) of a PNG (ARGB32/RGB24 as cairo stores it: native-endian 0xAARRGGBB).
+std::array<int, 3> pixel(cairo_surface_t* s, int x, int y) {
+  const unsigned char* data = cairo_image_surface_get_data(s);
+  const int stride = cairo_image_surface_get_stride(s);
+  const uint32_t v = *reinterpret_cast<const uint32_t*>(data + y * stride + 4 * x);
+  return {static_cast<int>((v >> 16) & 255), static_cast<int>((v >> 8) & 255), static_cast<int>(v & 255)};
+}
+
+bool is_white(const std::array<int, 3>& c) { return c[0] > 250 && c[1] > 250 && c[2] > 250; }
+
+}  // namespace
+
+TEST_CASE("plots are written as PNG, SVG and PDF by extension", "[render]") {
+  const auto dir = scratch_dir("formats");
+  const PointSet ps = random_two_class(200, 7);
+  CurvePlot cp{"loss", "iteration", "loss", true, {{"total", {1, 2, 3, 4}, {10, 1, 0.1, 0.05}, false}}};
+  GrayImage im{4, 3, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}, "ramp"};
+  struct Magic {
+    const char* ext;
+    std::string magic;
+  };
+  for (const Magic& m : {Magic{".png", "\x89PNG"}, Magic{".svg", "<?xml"}, Magic{".pdf", "%PDF"}}) {
+    const fs::path pts = dir / (std::string("points") + m.ext);
+    const fs::path pan = dir / (std::string("panels") + m.ext);
+    const fs::path cur = dir / (std::string("curves") + m.ext);
+    const fs::path grid = dir / (std::string("grid") + m.ext);
+    plot_points(pts.string(), ps, PointStyle{});
+    plot_panels(pan.string(), {{"a", ps}, {"b", random_two_class(800, 8)}}, PointStyle{}, 200, 0);
+    plot_curves(cur.string(), cp);
+    plot_curve_grid(grid.string(), {cp, cp, cp}, 2);
+    for (const auto& p : {pts, pan, cur, grid}) {
+      INFO(p.string());
+      REQUIRE(fs::exists(p));
+      CHECK(fs::file_size(p) > 200);
+      CHECK(head_bytes(p, m.magic.size()) == m.magic);
+    }
+    const fs::path img = dir / (std::string("images") + m.ext);
+    plot_image_grid(img.string(), {im, im}, 2, 64, true, ColorMap::Diverging);
+    CHECK(head_bytes(img, m.magic.size()) == m.magic);
+  }
+  // Nothing but the outputs is left behind (no temp files).
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    ++files;
+    CHECK(e.path().string().find(".tmp-") == std::string::npos);
+  }
+  CHECK(files == 15);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("unknown extension throws naming the path and leaves no file", "[render]") {
+  const auto dir = scratch_dir("badext");
+  const std::string bad = (dir / "points.jpg").string();
+  CHECK_THROWS_AS(plot_points(bad, random_two_class(10, 1)), InputError);
+  CHECK_THROWS_WITH(plot_points(bad, random_two_class(10, 1)), Catch::Contains(bad));
+  CHECK_THROWS_AS(plot_curves((dir / "c").string(), CurvePlot{}), InputError);
+  CHECK_THROWS_AS(plot_image_grid((dir / "g.bmp").string(), {GrayImage{1, 1, {0}, ""}}, 1), InputError);
+  CHECK(fs::is_empty(dir));
+  // A folder that does not exist is an InputError too (cairo cannot write), with no debris.
+  CHECK_THROWS_AS(plot_points((dir / "missing" / "p.png").string(), random_two_class(10, 1)), InputError);
+  CHECK(fs::is_empty(dir));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("bad plot inputs are InputErrors", "[render]") {
+  const auto dir = scratch_dir("badinput");
+  PointStyle st;
+  st.color_attribute = "depth";
+  CHECK_THROWS_WITH(plot_points((dir / "p.png").string(), random_two_class(5, 2), st), Catch::Contains("depth"));
+  CurvePlot cp{"", "", "", false, {{"s", {1, 2}, {1}, false}}};
+  CHECK_THROWS_AS(plot_curves((dir / "c.png").string(), cp), InputError);
+  CHECK_THROWS_AS(plot_image_grid((dir / "g.png").string(), {GrayImage{2, 2, {0, 1, 2}, "short"}}, 1), InputError);
+  CHECK(fs::is_empty(dir));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a point with a radius attribute is drawn as a disk at its true radius", "[render]") {
+  const auto dir = scratch_dir("disk");
+  const fs::path png = dir / "disk.png";
+  PointSet ps;  // unit square, one disk of radius 0.25 at (0.5, 0.5)
+  ps.add_attribute("radius");
+  ps.add({0.5, 0.5}, 0, {0.25});
+  PointStyle st;
+  st.show_frame = false;
+  plot_points(png.string(), ps, st, 400);
+
+  cairo_surface_t* s = cairo_image_surface_create_from_png(png.string().c_str());
+  REQUIRE(cairo_surface_status(s) == CAIRO_STATUS_SUCCESS);
+  const int w = cairo_image_surface_get_width(s), h = cairo_image_surface_get_height(s);
+  cairo_surface_flush(s);
+  // Locate the disk from the image itself: bounding box of the non-white pixels of the
+  // coloured disk (tick labels are grey text outside; restrict to coloured pixels).
+  int x0 = w, x1 = -1, y0 = h, y1 = -1;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      auto c = pixel(s, x, y);
+      const bool coloured = std::abs(c[0] - c[2]) > 30;  // class 0 is blue; greys have r == b
+      if (coloured) x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+  REQUIRE(x1 > x0);
+  const double cx = (x0 + x1) / 2.0, cy = (y0 + y1) / 2.0, r_px = (x1 - x0 + 1) / 2.0;
+  // Expected: the frame side is the panel size minus the axis margins; the disk diameter is
+  // half of it. Measure it independently from a point plot with two corner markers instead
+  // of trusting the layout constants: draw points at (0,0) and (1,1) and find their centres.
+  PointSet corners;
+  corners.add({0.0, 0.0});
+  corners.add({1.0, 1.0});
+  PointStyle cs;
+  cs.show_frame = false;
+  cs.point_radius_px = 3;
+  const fs::path cpng = dir / "corners.png";
+  plot_points(cpng.string(), corners, cs, 400);
+  cairo_surface_t* c = cairo_image_surface_create_from_png(cpng.string().c_str());
+  REQUIRE(cairo_surface_status(c) == CAIRO_STATUS_SUCCESS);
+  int ax0 = w, ax1 = -1;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      auto p = pixel(c, x, y);
+      if (std::abs(p[0] - p[2]) > 30) ax0 = std::min(ax0, x), ax1 = std::max(ax1, x);
+    }
+  // Corner markers are clipped to the frame, so the coloured extent is the frame width.
+  const double frame_px = ax1 - ax0 + 1;
+  CHECK(r_px == Approx(0.25 * frame_px).margin(2.0));
+  CHECK(cx == Approx(ax0 + 0.5 * frame_px).margin(2.0));
+
+  // Pixels: centre and just inside the rim are covered; just outside is white.
+  CHECK_FALSE(is_white(pixel(s, static_cast<int>(cx), static_cast<int>(cy))));
+  CHECK_FALSE(is_white(pixel(s, static_cast<int>(cx + 0.9 * r_px), static_cast<int>(cy))));
+  CHECK(is_white(pixel(s, static_cast<int>(cx + r_px + 3), static_cast<int>(cy))));
+  CHECK(is_white(pixel(s, static_cast<int>(cx + 0.75 * r_px), static_cast<int>(cy + 0.75 * r_px))));  // outside: 1.06 r
+  CHECK_FALSE(is_white(pixel(s, static_cast<int>(cx + 0.65 * r_px), static_cast<int>(cy + 0.65 * r_px))));  // 0.92 r
+  cairo_surface_destroy(s);
+  cairo_surface_destroy(c);
+
+  // With --no-disks the same point is a small marker, not a big disk.
+  st.draw_disks = false;
+  plot_points(png.string(), ps, st, 400);
+  s = cairo_image_surface_create_from_png(png.string().c_str());
+  CHECK(is_white(pixel(s, static_cast<int>(cx + 0.9 * r_px), static_cast<int>(cy))));
+  CHECK_FALSE(is_white(pixel(s, static_cast<int>(cx), static_cast<int>(cy))));
+  cairo_surface_destroy(s);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("auto marker size follows the point count", "[render]") {
+  // An output with 4x the points at the same image size must have smaller markers: count
+  // the coloured pixels of a single point drawn alone vs. one point of a dense set.
+  const auto dir = scratch_dir("autosize");
+  auto ink = [&](const PointSet& ps) {
+    const fs::path p = dir / "p.png";
+    plot_points(p.string(), ps, PointStyle{}, 300);
+    cairo_surface_t* s = cairo_image_surface_create_from_png(p.string().c_str());
+    long n = 0;
+    for (int y = 0; y < cairo_image_surface_get_height(s); ++y)
+      for (int x = 0; x < cairo_image_surface_get_width(s); ++x) {
+        auto c = pixel(s, x, y);
+        if (std::abs(c[0] - c[2]) > 30) ++n;
+      }
+    cairo_surface_destroy(s);
+    return n;
+  };
+  PointSet sparse, dense;
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0.1, 0.9);
+  for (int i = 0; i < 100; ++i) sparse.add({u(rng), u(rng)});
+  for (int i = 0; i < 400; ++i) dense.add({u(rng), u(rng)});
+  const double per_point_sparse = ink(sparse) / 100.0, per_point_dense = ink(dense) / 400.0;
+  // Marker area scales like 1/N: about 4x smaller (overlaps only reduce the dense count).
+  CHECK(per_point_dense < 0.4 * per_point_sparse);
+  CHECK(per_point_dense > 0.1 * per_point_sparse);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("ppsynth plot and plot-pcf write images; a bad extension fails cleanly", "[render]") {
+  const auto dir = scratch_dir("cli");
+  const fs::path pts = dir / "pts.txt", other = dir / "other.txt";
+  {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::ofstream a(pts), b(other);
+    a << "# x y class\n";
+    b << "# x y class\n";
+    for (int i = 0; i < 60; ++i) a << u(rng) << " " << u(rng) << " " << (i % 2) << "\n";
+    for (int i = 0; i < 240; ++i) b << u(rng) << " " << u(rng) << " " << (i % 2) << "\n";
+  }
+  const std::string bin = PPSYNTH_BINARY;
+  auto run = [&](const std::string& args) {
+    return std::system((bin + " -q " + args + " > " + (dir / "log.txt").string() + " 2>&1").c_str());
+  };
+  CHECK(run("plot " + pts.string() + " -o " + (dir / "a.png").string()) == 0);
+  CHECK(head_bytes(dir / "a.png", 4) == "\x89PNG");
+  CHECK(run("plot " + pts.string() + " -o " + (dir / "b.pdf").string() + " --compare " + other.string()) == 0);
+  CHECK(head_bytes(dir / "b.pdf", 4) == "%PDF");
+  CHECK(run("plot-pcf --exemplar " + pts.string() + " --output " + other.string() + " -o " + (dir / "pcf.svg").string()) == 0);
+  CHECK(head_bytes(dir / "pcf.svg", 5) == "<?xml");
+  CHECK(run("plot " + pts.string() + " -o " + (dir / "c.gif").string()) != 0);
+  CHECK_FALSE(fs::exists(dir / "c.gif"));
+  CHECK(run("plot " + pts.string() + " -o " + (dir / "d.png").string() + " --color-attr nope") != 0);
+  CHECK_FALSE(fs::exists(dir / "d.png"));
+  fs::remove_all(dir);
+}

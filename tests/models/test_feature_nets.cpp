@@ -1,0 +1,79 @@
+#include <catch2/catch.hpp>
+
+#include "models/feature_net.hpp"
+#include "models/fixed_filter_bank.hpp"
+#include "models/random_filter_net.hpp"
+#include "models/rasterizer.hpp"
+
+using namespace ppsynth;
+
+TEST_CASE("RandomFilterNet: the paper's architecture", "[models][net]") {
+  RandomFilterNet net(RandomFilterNetOptions{});
+  int64_t params = 0;
+  for (auto& p : net.parameters()) {
+    params += p.numel();
+    CHECK_FALSE(p.requires_grad());
+  }
+  CHECK(params == 2176080);  // method.md section 3
+  auto f = net.forward(torch::rand({1, 10, 32, 32}));
+  REQUIRE(f.size() == 3);
+  CHECK(f[0].sizes() == torch::IntArrayRef({1, 120, 32, 32}));
+  CHECK(f[1].sizes() == torch::IntArrayRef({1, 120, 16, 16}));
+  CHECK(f[2].sizes() == torch::IntArrayRef({1, 120, 8, 8}));
+  // Instance norm + ReLU: non-negative, per-channel pre-ReLU mean ~ 0.
+  CHECK(f[2].min().item<float>() >= 0);
+}
+
+TEST_CASE("RandomFilterNet is drawn from the seed", "[models][net]") {
+  RandomFilterNetOptions o;
+  o.channels = 8;
+  auto x = torch::rand({1, 10, 16, 16});
+  RandomFilterNet a(o), b(o);
+  o.seed = 96;
+  RandomFilterNet c(o);
+  CHECK(torch::equal(a.forward(x)[2], b.forward(x)[2]));
+  CHECK_FALSE(torch::equal(a.forward(x)[2], c.forward(x)[2]));
+}
+
+TEST_CASE("RandomFilterNet options: no IN / no ReLU change the features", "[models][net]") {
+  RandomFilterNetOptions o;
+  o.channels = 8;
+  auto x = torch::rand({1, 10, 16, 16}) * 5;
+  auto base = RandomFilterNet(o).forward(x)[0];
+  o.relu = false;
+  auto norelu = RandomFilterNet(o).forward(x)[0];
+  CHECK(norelu.min().item<float>() < 0);
+  o.relu = true;
+  o.instance_norm = false;
+  auto noin = RandomFilterNet(o).forward(x)[0];
+  CHECK_FALSE(torch::allclose(base, noin));
+}
+
+TEST_CASE("Feature nets from the registry: fixed banks and identity", "[models][net]") {
+  auto& reg = FeatureNetRegistry::instance();
+  auto x = torch::rand({1, 10, 16, 16});
+  for (std::string bank : {"gaussian", "sobel", "derivative", "all"}) {
+    auto net = reg.create(json{{"type", "fixed_bank"}, {"bank", bank}}, "feature_net", 10, 1);
+    auto f = net->forward(x);
+    const int64_t B = bank == "all" ? 12 : 4;
+    REQUIRE(f.size() == 3);
+    CHECK(f[0].size(1) == 10 * B);
+    CHECK(f[2].size(2) == 4);
+  }
+  CHECK(filter_bank("gaussian")[0].sum().item<double>() == Approx(1.0));
+  CHECK(filter_bank("sobel")[0].sum().item<double>() == Approx(0.0).margin(1e-12));
+  auto id = reg.create(json{{"type", "identity"}}, "feature_net", 10, 1);
+  CHECK(torch::equal(id->forward(x)[2], x));
+  CHECK_THROWS_AS(reg.create(json{{"type", "fixed_bank"}, {"bank", "fourier"}}, "feature_net", 10, 1), InputError);
+}
+
+TEST_CASE("Pixel splat: bilinear, mass-preserving, differentiable", "[models][splat]") {
+  auto r = RasterizerRegistry::instance().create(json{{"type", "pixel_splat"}}, "rasterizer", RasterizerArgs{16, 1, 4});
+  auto p = torch::tensor({{0.3, 0.4}, {0.61, 0.52}}, torch::kFloat64).set_requires_grad(true);
+  auto img = r->forward(p, {}, 0, {});
+  CHECK(img.sizes() == torch::IntArrayRef({1, 1, 16, 16}));
+  CHECK(img.sum().item<double>() == Approx(2.0));
+  auto probe = torch::arange(256, torch::kFloat64).view({1, 1, 16, 16});
+  (img * probe).sum().backward();
+  CHECK(p.grad().abs().sum().item<double>() > 0);
+}
