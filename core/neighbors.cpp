@@ -109,6 +109,15 @@ std::vector<size_t> NeighborIndex::knn(Vec2 q, size_t k, std::vector<double>* di
   }
 }
 
+size_t NeighborIndex::knn_into(Vec2 q, size_t k, size_t* idx, double* dist2) const {
+  const Impl& m = *impl_;
+  if (m.periodic) throw std::logic_error("NeighborIndex::knn_into: plane indices only");
+  k = std::min(k, m.n);
+  if (k == 0) return 0;
+  const double qp[2] = {q.x, q.y};
+  return m.tree->knnSearch(qp, k, idx, dist2);
+}
+
 std::vector<size_t> NeighborIndex::radius(Vec2 q, double r, std::vector<double>* dist) const {
   const Impl& m = *impl_;
   std::vector<size_t> out;

@@ -32,6 +32,10 @@ class NeighborIndex {
   // The min(k, size()) nearest points to q, sorted by increasing distance (tie order
   // unspecified); `dist` (optional) receives their distances.
   std::vector<size_t> knn(Vec2 q, size_t k, std::vector<double>* dist = nullptr) const;
+  // Allocation-free k-NN into caller buffers (k entries each): indices and SQUARED
+  // distances, sorted; returns how many were found. Plane (non-periodic) indices only; for
+  // hot loops such as the Gabor maps (one query per grid position every iteration).
+  size_t knn_into(Vec2 q, size_t k, size_t* idx, double* dist2) const;
   // All points within distance r of q (inclusive), sorted by increasing distance.
   std::vector<size_t> radius(Vec2 q, double r, std::vector<double>* dist = nullptr) const;
   // Nearest point to point i other than i itself (size() must be >= 2, else InputError).

@@ -11,11 +11,29 @@ std::vector<int64_t> kept_lags(int q) {
   return lags;
 }
 
-// Cross-correlation r(a,b) = sum_ij x(i+a, j+b) k(i, j) for the kept lags, by FFT on a
-// grid padded to 2H x 2W (no wrap-around for |a| < H).
+// Smallest 2,3,5-smooth size >= n (fast FFT lengths).
+int64_t smooth_size(int64_t n) {
+  for (int64_t m = std::max<int64_t>(n, 1);; ++m) {
+    int64_t r = m;
+    for (int64_t f : {2, 3, 5})
+      while (r % f == 0) r /= f;
+    if (r == 1) return m;
+  }
+}
+
+// Padding that keeps the kept lags free of wrap-around: the circular correlation at lag a
+// adds the linear one at a -+ P, which vanishes when P >= H + max|a|. For the loss's crop
+// (max|a| = q/2) this is ~1.25 H instead of the 2 H a full linear correlation needs.
+int64_t fft_size(int64_t n, const std::vector<int64_t>& lags) {
+  int64_t L = 0;
+  for (auto a : lags) L = std::max<int64_t>(L, std::abs(a));
+  return smooth_size(n + L);
+}
+
+// Cross-correlation r(a,b) = sum_ij x(i+a, j+b) k(i, j) for the kept lags, by FFT.
 torch::Tensor cross_corr(const torch::Tensor& x, const torch::Tensor& k, const std::vector<int64_t>& la,
                          const std::vector<int64_t>& lb) {
-  const int64_t H = x.size(-2), W = x.size(-1), Ph = 2 * H, Pw = 2 * W;
+  const int64_t H = x.size(-2), W = x.size(-1), Ph = fft_size(H, la), Pw = fft_size(W, lb);
   auto X = torch::fft::rfft2(x, std::vector<int64_t>{Ph, Pw});
   auto K = torch::fft::rfft2(k, std::vector<int64_t>{Ph, Pw});
   auto r = torch::fft::irfft2(X * K.conj(), std::vector<int64_t>{Ph, Pw});

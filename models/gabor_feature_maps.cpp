@@ -50,8 +50,10 @@ torch::Tensor grid_knn(const torch::Tensor& points, const torch::Tensor& grid, i
   auto ga = g.accessor<double, 2>();
   auto ia = idx.accessor<int64_t, 2>();
   at::parallel_for(0, G, 256, [&](int64_t b, int64_t e) {
+    std::vector<size_t> nb(k);
+    std::vector<double> d2(k);
     for (int64_t q = b; q < e; ++q) {
-      auto nb = index.knn(Vec2{ga[q][0], ga[q][1]}, static_cast<size_t>(k));
+      index.knn_into(Vec2{ga[q][0], ga[q][1]}, static_cast<size_t>(k), nb.data(), d2.data());
       for (int j = 0; j < k; ++j) ia[q][j] = static_cast<int64_t>(nb[j]);
     }
   });

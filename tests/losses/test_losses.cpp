@@ -41,7 +41,7 @@ TEST_CASE("Deep correlation of a hand-computed 2x2 map", "[losses][correlation]"
 }
 
 TEST_CASE("FFT deep correlation equals the direct sum, values and exact gradient", "[losses][correlation]") {
-  for (int q : {3, 4, 6}) {
+  for (int q : {3, 4, 6, 11}) {
     auto F = rnd({1, 3, 6, 6}, 10 + q);
     auto fa = F.clone().set_requires_grad(true), fb = F.clone().set_requires_grad(true);
     auto probe = rnd({3, q, q}, 20);
