@@ -62,6 +62,22 @@ torch::Tensor grid_knn(const torch::Tensor& points, const torch::Tensor& grid, i
 
 namespace {
 
+// cos and sin of a*x and a*y for a set of positions (a = 2 pi f). The pair terms need
+// cos/sin(a (p - g)), which the angle-difference identities build from these per-point and
+// per-grid-position values: 4 trig calls per position instead of 4 per (point, grid) pair.
+template <typename T>
+struct Phases {
+  std::vector<T> cx, sx, cy, sy;
+  Phases(const T* xy, int64_t n, T a) : cx(n), sx(n), cy(n), sy(n) {
+    for (int64_t i = 0; i < n; ++i) {
+      cx[i] = std::cos(a * xy[2 * i]);
+      sx[i] = std::sin(a * xy[2 * i]);
+      cy[i] = std::cos(a * xy[2 * i + 1]);
+      sy[i] = std::sin(a * xy[2 * i + 1]);
+    }
+  }
+};
+
 // Per-neighbour terms shared by forward and backward.
 template <typename T>
 struct Term {
@@ -69,13 +85,17 @@ struct Term {
   T cos_t[9], sin_t[9];
 };
 
+// Point i, grid position g: d = p_i - g; e = exp(-|d|^2 / 2 s^2); cos/sin(2 pi nu . d) for
+// the 9 frequencies from cos/sin of the x and y parts.
 template <typename T>
-inline void eval_term(T dx, T dy, T inv2s2, T w2pi, Term<T>& t) {
+inline void eval_term(T dx, T dy, T inv2s2, const Phases<T>& P, int64_t i, const Phases<T>& G, int64_t g,
+                      Term<T>& t) {
   t.dx = dx;
   t.dy = dy;
   t.e = std::exp(-(dx * dx + dy * dy) * inv2s2);
-  const T cx = std::cos(w2pi * dx), sx = std::sin(w2pi * dx);
-  const T cy = std::cos(w2pi * dy), sy = std::sin(w2pi * dy);
+  // cos(a(p - g)) = cos ap cos ag + sin ap sin ag ; sin(a(p - g)) = sin ap cos ag - cos ap sin ag
+  const T cx = P.cx[i] * G.cx[g] + P.sx[i] * G.sx[g], sx = P.sx[i] * G.cx[g] - P.cx[i] * G.sx[g];
+  const T cy = P.cy[i] * G.cy[g] + P.sy[i] * G.sy[g], sy = P.sy[i] * G.cy[g] - P.cy[i] * G.sy[g];
   for (int f = 0; f < 9; ++f) {
     const int nx = f % 3 - 1, ny = f / 3 - 1;
     const T Cx = nx == 0 ? T(1) : cx, Sx = T(nx) * sx;
@@ -125,12 +145,13 @@ void maps_forward(const torch::Tensor& P, const torch::Tensor& W, const torch::T
   const T w2pi = T(kTwoPi * mp.frequency);
   const T invk = T(1) / T(mp.k);
   const int C = static_cast<int>(mp.channels.size());
+  const Phases<T> PP(P.data_ptr<T>(), P.size(0), w2pi), GP(grid.data_ptr<T>(), grid.size(0), w2pi);
   at::parallel_for(0, grid.size(0), 512, [&](int64_t b, int64_t e) {
     Term<T> t;
     for (int64_t g = b; g < e; ++g) {
       for (int j = 0; j < mp.k; ++j) {
         const int64_t i = ia[g][j];
-        eval_term<T>(pa[i][0] - ga[g][0], pa[i][1] - ga[g][1], inv2s2, w2pi, t);
+        eval_term<T>(pa[i][0] - ga[g][0], pa[i][1] - ga[g][1], inv2s2, PP, i, GP, g, t);
         for (int c = 0; c < C; ++c) {
           const auto& ch = mp.channels[c];
           T v = ch.freq < 0 ? t.e : t.e * t.cos_t[ch.freq];
@@ -162,13 +183,14 @@ void maps_backward(const torch::Tensor& P, const torch::Tensor& W, const torch::
   // One accumulator per thread: grid positions scatter into shared points.
   const int nthreads = at::get_num_threads();
   std::vector<std::vector<T>> acc(nthreads, std::vector<T>(2 * N, T(0)));
+  const Phases<T> PP(P.data_ptr<T>(), N, w2pi), GP(grid.data_ptr<T>(), grid.size(0), w2pi);
   at::parallel_for(0, grid.size(0), 512, [&](int64_t b, int64_t e) {
     auto& my = acc[at::get_thread_num()];
     Term<T> t;
     for (int64_t g = b; g < e; ++g) {
       for (int j = 0; j < mp.k; ++j) {
         const int64_t i = ia[g][j];
-        eval_term<T>(pa[i][0] - ga[g][0], pa[i][1] - ga[g][1], inv2s2, w2pi, t);
+        eval_term<T>(pa[i][0] - ga[g][0], pa[i][1] - ga[g][1], inv2s2, PP, i, GP, g, t);
         T gx = 0, gy = 0;
         for (int c = 0; c < C; ++c) {
           const auto& ch = mp.channels[c];

@@ -20,24 +20,28 @@ RandomFilterNet::RandomFilterNet(RandomFilterNetOptions o) : opt_(o) {
     block_end_.push_back(static_cast<int>(convs_.size()) - 1);
   }
   freeze(*this);
+  if (o.dtype != torch::kFloat32) this->to(o.dtype);
 }
 
 torch::Tensor RandomFilterNet::activate(const torch::Tensor& x) const {
   torch::Tensor y = x;
   if (opt_.instance_norm)
     y = torch::instance_norm(y, {}, {}, {}, {}, /*use_input_stats=*/true, 0.1, 1e-5, /*cudnn_enabled=*/false);
-  if (opt_.relu) y = torch::relu(y);
+  // In place, as the published nn.ReLU(inplace=True): neither the norm nor the conv needs
+  // its output for backward, and it saves a full-resolution buffer per layer.
+  if (opt_.relu) y = torch::relu_(y);
   return y;
 }
 
 Features RandomFilterNet::forward(const torch::Tensor& maps) {
   Features out;
-  torch::Tensor x = maps;
+  const bool cast = opt_.dtype != maps.scalar_type() && opt_.dtype != torch::kFloat32;
+  torch::Tensor x = cast ? maps.to(opt_.dtype) : maps;
   size_t next_block = 0;
   for (size_t i = 0; i < convs_.size(); ++i) {
     x = activate(convs_[i]->forward(x));
     if (next_block < block_end_.size() && static_cast<int>(i) == block_end_[next_block]) {
-      out.push_back(x);
+      out.push_back(cast ? x.to(maps.scalar_type()) : x);
       ++next_block;
     }
   }
@@ -48,7 +52,7 @@ Features RandomFilterNet::forward(const torch::Tensor& maps) {
 
 PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "random",
                  (ppsynth::json{{"channels", 120}, {"kernel_size", 7}, {"depth", 3},
-                                {"instance_norm", true}, {"relu", true}}),
+                                {"instance_norm", true}, {"relu", true}, {"precision", "float32"}}),
                  "the paper's random-filter network (Glorot-uniform, frozen)",
                  [](const ppsynth::json& p, int in_channels, uint64_t seed) -> std::unique_ptr<ppsynth::FeatureNet> {
                    ppsynth::RandomFilterNetOptions o;
@@ -59,6 +63,10 @@ PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "random",
                    o.instance_norm = p["instance_norm"];
                    o.relu = p["relu"];
                    o.seed = seed;
+                   const std::string prec = p["precision"].get<std::string>();
+                   if (prec == "bfloat16") o.dtype = torch::kBFloat16;
+                   else if (prec != "float32")
+                     throw ppsynth::config_error("feature_net.precision", "expected \"float32\" or \"bfloat16\", got \"" + prec + "\"");
                    if (o.channels < 1) throw ppsynth::config_error("feature_net.channels", "must be >= 1");
                    if (o.kernel_size < 1 || o.kernel_size % 2 == 0)
                      throw ppsynth::config_error("feature_net.kernel_size", "must be odd and >= 1");

@@ -15,6 +15,9 @@ json gabor_defaults() {
       {"num_sigmas", 4},
       {"grid", {{"res", 0}, {"min_res", 128}, {"max_res", 256}}},  // res 0 = clamp(round(9/d))
       {"k", 30},                                                   // neighbours: min(M, k)
+      // M = the exemplar points of the classes in play at a class stage (the published disk
+      // and multi-attribute optimisers); false: M = all exemplar points (its point optimiser).
+      {"k_per_stage", true},
       {"jitter", true},
       {"rasterizer", {{"type", "gabor"}}},
       {"feature_net", {{"type", "random"}}},
@@ -82,6 +85,7 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, in
   const int k = get_int(p, "k", "method");
   if (k < 1) throw config_error("method.k", "must be >= 1");
   s.k = static_cast<int>(std::min<size_t>(exemplar.size(), static_cast<size_t>(k)));
+  s.k_per_stage = p["k_per_stage"].get<bool>();
   s.attr_cols = map_attribute_columns(exemplar, p["map_attributes"]);
   s.jitter = p["jitter"].get<bool>();
   s.rule = ConvergenceRule{get_int(p["convergence"], "window", "method.convergence"),
@@ -104,11 +108,21 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, in
 
 GaborPipeline::GaborPipeline(const json& p, const GaborSettings& s, uint64_t seed)
     : p_(p), s_(s), seed_(seed), loss_(p["losses"], "method.losses") {
-  RasterizerArgs ex_args{s.res, 1.0, s.k}, out_args{s.upscale * s.res, static_cast<double>(s.upscale), s.k};
-  ex_rast_ = RasterizerRegistry::instance().create(p["rasterizer"], "method.rasterizer", ex_args, &resolved_rast_);
-  out_rast_ = RasterizerRegistry::instance().create(p["rasterizer"], "method.rasterizer", out_args);
+  build_rasterizers();
   in_channels_ = ex_rast_->channels(static_cast<int>(s.attr_cols.size()));
   redraw_network(seed);
+}
+
+void GaborPipeline::build_rasterizers() {
+  RasterizerArgs ex_args{s_.res, 1.0, s_.k}, out_args{s_.upscale * s_.res, static_cast<double>(s_.upscale), s_.k};
+  ex_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", ex_args, &resolved_rast_);
+  out_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", out_args);
+}
+
+void GaborPipeline::set_neighbours(int k) {
+  if (k == s_.k) return;
+  s_.k = k;
+  build_rasterizers();
 }
 
 void GaborPipeline::redraw_network(uint64_t seed) {

@@ -27,6 +27,7 @@ struct GaborSettings {
   int res = 128;                // exemplar grid; the output grid is u * res
   int upscale = 2;
   int k = 30;                   // neighbours per grid position: min(M, k)
+  bool k_per_stage = true;      // k = min(k, exemplar points of the stage's classes)
   std::vector<double> sigmas;   // coarse -> fine
   std::vector<int> attr_cols;   // attribute columns weighting the maps
   std::vector<int> class_order;
@@ -55,6 +56,8 @@ class GaborPipeline {
   torch::Tensor draw_jitter(std::mt19937_64& rng) const;
   // A new random network (the published code draws one per class for attribute scenes).
   void redraw_network(uint64_t seed);
+  // Neighbours per grid position for the next stage (rebuilds the rasterizers if it changes).
+  void set_neighbours(int k);
 
   const CompositeLoss& composite() const { return loss_; }
   json resolved() const;  // rasterizer, feature net and losses with every default filled in
@@ -68,6 +71,7 @@ class GaborPipeline {
   CompositeLoss loss_;
   json resolved_rast_, resolved_net_;
   int in_channels_ = 10;
+  void build_rasterizers();
 };
 
 // Published toroidal wrap (x > 1 -> x - floor(x); x < 0 -> x + ceil(|x|)), identity gradient.

@@ -75,6 +75,8 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
     const std::vector<int> active(s.class_order.begin(), s.class_order.begin() + st + 1);
     if (fresh_net && st > 0) pipe.redraw_network(ctx.seed + 7919ull * st);
     const PointSet ex_active = exemplar.subset_classes(active);
+    const int k_stage = s.k_per_stage ? static_cast<int>(std::min<size_t>(s.k, ex_active.size())) : s.k;
+    pipe.set_neighbours(k_stage);
     const auto ex_pts = positions_tensor(ex_active);
     const auto ex_w = A > 0 ? normalized_attributes(ex_active, s.attr_cols) : torch::Tensor();
 
@@ -147,7 +149,7 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
       }
       ev.iteration = it;
       ev.seconds = since(stage_start);
-      stats["stages"].push_back({{"stage", ev.stage}, {"class", cls}, {"sigma", sigma}, {"iterations", it},
+      stats["stages"].push_back({{"stage", ev.stage}, {"class", cls}, {"sigma", sigma}, {"k", k_stage}, {"iterations", it},
                                  {"final_loss", losses.empty() ? 0.0 : losses.back()}, {"seconds", ev.seconds}});
       ctx.stage_end(ev, out);
     }

@@ -77,3 +77,18 @@ TEST_CASE("Pixel splat: bilinear, mass-preserving, differentiable", "[models][sp
   (img * probe).sum().backward();
   CHECK(p.grad().abs().sum().item<double>() > 0);
 }
+
+TEST_CASE("RandomFilterNet in bfloat16 stays close to float32", "[models][net]") {
+  auto& reg = FeatureNetRegistry::instance();
+  auto f32 = reg.create(json{{"type", "random"}, {"channels", 16}}, "feature_net", 10, 5);
+  auto b16 = reg.create(json{{"type", "random"}, {"channels", 16}, {"precision", "bfloat16"}}, "feature_net", 10, 5);
+  auto x = torch::rand({1, 10, 32, 32});
+  auto a = f32->forward(x), b = b16->forward(x);
+  for (size_t l = 0; l < a.size(); ++l) {
+    CHECK(b[l].scalar_type() == torch::kFloat32);
+    const double rel = ((a[l] - b[l]).norm() / a[l].norm()).item<double>();
+    CHECK(rel < 0.05);
+    CHECK(rel > 0);  // it really ran in reduced precision
+  }
+  CHECK_THROWS_WITH(reg.create(json{{"type", "random"}, {"precision", "half"}}, "feature_net", 10, 5), Catch::Contains("precision"));
+}

@@ -1,6 +1,7 @@
 #include "apps/ppsynth/synthesis/run_config.hpp"
 
 #include "core/config/config.hpp"
+#include "core/config/defaults_catalog.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/paths.hpp"
@@ -67,3 +68,9 @@ std::optional<PointSet> load_initialization(const json& r) {
 }
 
 }  // namespace ppsynth::app
+
+namespace {
+[[maybe_unused]] const bool ppsynth_run_kind = ppsynth::register_defaults_kind("run", [] {
+  return ppsynth::json{{"run", {{"description", "top-level keys of a synthesis config"}, {"defaults", ppsynth::app::run_defaults()}}}};
+});
+}  // namespace

@@ -22,7 +22,8 @@ namespace ppsynth::app {
 
 namespace {
 
-// PCF of the exemplar vs the output (quadrant average): all classes, then each class.
+// PCF of the exemplar vs the output (quadrant average): all classes, each class, each
+// class pair (cross PCF).
 void plot_pcf(const std::string& path, const nlohmann::json& m) {
   auto curve_plot = [](const std::string& title, const nlohmann::json& pcf) {
     CurvePlot cp;
@@ -39,11 +40,17 @@ void plot_pcf(const std::string& path, const nlohmann::json& m) {
   if (m.contains("classes") && m["classes"].size() > 1)
     for (auto& c : m["classes"])
       if (c.contains("pcf")) plots.push_back(curve_plot("class " + c["class"].dump(), c["pcf"]));
+  if (m.contains("cross"))
+    for (auto& c : m["cross"])
+      if (c.contains("pcf")) plots.push_back(curve_plot("cross " + c["ci"].dump() + "-" + c["cj"].dump(), c["pcf"]));
   if (plots.size() == 1) plot_curves(path, plots[0]);
   else if (!plots.empty()) plot_curve_grid(path, plots, std::min<int>(3, static_cast<int>(plots.size())));
 }
 
 }  // namespace
+
+void write_run(RunOutcome& o, const nlohmann::json& r, const std::string& name, const std::string& partial, bool quick,
+               std::chrono::steady_clock::time_point t0);
 
 RunOutcome run_synthesis(const nlohmann::json& r, const std::string& dir_in, bool quick) {
   using Clock = std::chrono::steady_clock;
@@ -57,6 +64,21 @@ RunOutcome run_synthesis(const nlohmann::json& r, const std::string& dir_in, boo
   const std::string partial = o.dir + ".partial";
   fs::remove_all(partial);
   fs::create_directories(partial + "/snapshots");
+  try {
+    write_run(o, r, name, partial, quick, t0);
+  } catch (...) {
+    fs::remove_all(partial);  // an interrupted run leaves no half-written directory
+    throw;
+  }
+  fs::remove_all(o.dir);
+  fs::rename(partial, o.dir);
+  spdlog::info("[{}] wrote {} ({:.1f} s)", name, o.dir, o.seconds);
+  return o;
+}
+
+void write_run(RunOutcome& o, const nlohmann::json& r, const std::string& name, const std::string& partial, bool quick,
+               std::chrono::steady_clock::time_point t0) {
+  using Clock = std::chrono::steady_clock;
 
   SynthesisContext ctx;
   ctx.seed = r["seed"].get<uint64_t>();
@@ -110,10 +132,6 @@ RunOutcome run_synthesis(const nlohmann::json& r, const std::string& dir_in, boo
                         {"total_seconds", o.seconds},
                         {"method_stats", stats}};
   write_text_atomic(partial + "/run.json", run.dump(2) + "\n");
-  fs::remove_all(o.dir);
-  fs::rename(partial, o.dir);
-  spdlog::info("[{}] wrote {} ({:.1f} s)", name, o.dir, o.seconds);
-  return o;
 }
 
 }  // namespace ppsynth::app
