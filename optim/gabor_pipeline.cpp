@@ -28,7 +28,7 @@ json gabor_defaults() {
       {"convergence", {{"window", 100}, {"check_every", 10}, {"threshold", 0.01}}},
       {"init", {{"type", "best_candidate"}}},
       {"class_order", json::array()},  // empty = file order
-      {"map_attributes", "auto"},
+      {"map_attributes", nullptr},  // null or "auto": every non-constant attribute; or a list of names ([] = none)
       {"fresh_net_per_class", false},
       // --quick: every knob that sets the cost, shrunk (tests and smoke runs).
       {"quick", {{"res", 24}, {"channels", 8}, {"max_iterations", 4}, {"num_sigmas", 2}}},
@@ -42,7 +42,7 @@ torch::Tensor wrap_unit(const torch::Tensor& x) {
 
 std::vector<int> map_attribute_columns(const PointSet& ex, const json& spec) {
   std::vector<int> cols;
-  if (spec.is_string() && spec.get<std::string>() == "auto") {
+  if (spec.is_null() || (spec.is_string() && spec.get<std::string>() == "auto")) {
     for (size_t a = 0; a < ex.num_attributes(); ++a) {
       const auto& c = ex.attribute_column(a);
       if (!c.empty() && *std::max_element(c.begin(), c.end()) > *std::min_element(c.begin(), c.end()))

@@ -77,7 +77,7 @@ class GaborPipeline {
 // Published toroidal wrap (x > 1 -> x - floor(x); x < 0 -> x + ceil(|x|)), identity gradient.
 torch::Tensor wrap_unit(const torch::Tensor& x);
 
-// The map weights of Eq. 5 for a config's "map_attributes": "auto" = every attribute column
+// The map weights of Eq. 5 for a config's "map_attributes": null or "auto" = every attribute column
 // that is not constant; or an explicit list of names. Returns column indices.
 std::vector<int> map_attribute_columns(const PointSet& exemplar, const json& spec);
 

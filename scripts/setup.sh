@@ -31,5 +31,10 @@ fi
 if [ "${1:-}" = "--no-build" ]; then exit 0; fi
 
 cd "$here"
+# ccache: paths relative to the checkout, so a fresh clone elsewhere (CI) reuses the cache;
+# the precompiled header needs the pch sloppiness to be cacheable.
+export CCACHE_BASEDIR="$here"
+export CCACHE_SLOPPINESS="pch_defines,time_macros,include_file_mtime,include_file_ctime"
+export CCACHE_NOHASHDIR=1
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"

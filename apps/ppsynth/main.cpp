@@ -28,8 +28,6 @@ bool register_command(const std::string& name, const std::string& description, S
   return true;
 }
 
-const char* revision() { return PPSYNTH_REVISION; }
-
 }  // namespace ppsynth::app
 
 int main(int argc, char** argv) {

@@ -70,6 +70,9 @@ json load_config(const std::string& path) {
 
 json merge(const json& base, const json& over) {
   if (!base.is_object() || !over.is_object()) return over;
+  // A component spec whose "type" changes is replaced, not merged: the parent's parameters
+  // belong to the parent's component (a gabor method's c1 means nothing to roveri2015).
+  if (base.contains("type") && over.contains("type") && base["type"] != over["type"]) return over;
   json out = base;
   for (auto it = over.begin(); it != over.end(); ++it) {
     if (out.contains(it.key()) && out[it.key()].is_object() && it.value().is_object())

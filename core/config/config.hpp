@@ -16,7 +16,8 @@ using json = nlohmann::json;
 // Reads a JSON config file and resolves its "parent" chain (cycles are errors).
 json load_config(const std::string& path);
 
-// Deep merge: `over` wins; objects merge recursively; arrays and scalars replace.
+// Deep merge: `over` wins; objects merge recursively (except a component spec whose "type"
+// differs, which replaces the parent's); arrays and scalars replace.
 json merge(const json& base, const json& over);
 
 // Returns defaults overridden by `user`. Unknown keys, and values whose JSON type differs

@@ -22,6 +22,18 @@ TEST_CASE("apply_defaults merges and names unknown keys", "[config]") {
   CHECK_THROWS_WITH(apply_defaults(defaults, json{{"a", "str"}}, ""), Catch::Contains("'a'") && Catch::Contains("number"));
 }
 
+TEST_CASE("merge: objects merge, a component whose type changes is replaced", "[config]") {
+  json parent = {{"seed", 1}, {"method", {{"type", "gabor"}, {"c1", 2.0}, {"grid", {{"res", 64}, {"max_res", 256}}}}}};
+  json same = merge(parent, json{{"method", {{"type", "gabor"}, {"grid", {{"res", 32}}}}}});
+  CHECK(same["method"]["c1"] == 2.0);
+  CHECK(same["method"]["grid"]["res"] == 32);
+  CHECK(same["method"]["grid"]["max_res"] == 256);
+  CHECK(same["seed"] == 1);
+  json other = merge(parent, json{{"method", {{"type", "roveri2015"}}}});
+  CHECK(other["method"] == json{{"type", "roveri2015"}});
+  CHECK(other["seed"] == 1);
+}
+
 TEST_CASE("set_override parses JSON values and paths", "[config]") {
   json c = {{"losses", json::array({json{{"weight", 1.0}}})}, {"seed", 1}};
   set_override(c, "seed=42");

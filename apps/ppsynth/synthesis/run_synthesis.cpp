@@ -2,11 +2,13 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 
 #include "apps/ppsynth/command.hpp"
 #include "apps/ppsynth/synthesis/run_config.hpp"
 #include "apps/ppsynth/synthesis/run_observers.hpp"
 #include "core/atomic_file.hpp"
+#include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/log.hpp"
 #include "core/metrics/evaluation.hpp"
@@ -132,6 +134,68 @@ void write_run(RunOutcome& o, const nlohmann::json& r, const std::string& name, 
                         {"total_seconds", o.seconds},
                         {"method_stats", stats}};
   write_text_atomic(partial + "/run.json", run.dump(2) + "\n");
+}
+
+namespace {
+
+nlohmann::json read_json_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw file_error(path, 0, "missing (not a finished run directory?)");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw file_error(path, 0, std::string("not valid JSON: ") + e.what());
+  }
+}
+
+nlohmann::json synthesis_key(nlohmann::json c) {
+  for (const char* k : {"name", "description", "snapshots", "evaluate"}) c.erase(k);
+  return c;
+}
+
+}  // namespace
+
+RunOutcome load_run(const std::string& dir) {
+  RunOutcome o;
+  o.dir = dir;
+  o.config = read_json_file(dir + "/config.json");
+  const nlohmann::json run = read_json_file(dir + "/run.json");
+  o.stats = run.value("method_stats", nlohmann::json::object());
+  o.seconds = run.value("total_seconds", 0.0);
+  o.exemplar = load_exemplar(o.config);
+  o.output = read_points(dir + "/output.txt");
+  if (fs::exists(dir + "/init.txt")) o.initialization = read_points(dir + "/init.txt");
+  if (fs::exists(dir + "/metrics.json")) o.metrics = read_json_file(dir + "/metrics.json");
+  return o;
+}
+
+bool same_synthesis(const nlohmann::json& a, const nlohmann::json& b) { return synthesis_key(a) == synthesis_key(b); }
+
+std::string find_matching_run(const nlohmann::json& resolved, bool quick, const std::vector<std::string>& roots) {
+  auto matches = [&](const fs::path& d) {
+    std::error_code ec;
+    if (!fs::is_regular_file(d / "config.json", ec) || !fs::is_regular_file(d / "run.json", ec) ||
+        !fs::is_regular_file(d / "output.txt", ec))
+      return false;
+    try {
+      return same_synthesis(read_json_file((d / "config.json").string()), resolved) &&
+             read_json_file((d / "run.json").string()).value("quick", !quick) == quick;
+    } catch (const InputError&) {
+      return false;  // a damaged directory is simply not a match
+    }
+  };
+  for (auto& root : roots) {
+    std::error_code ec;
+    if (!fs::is_directory(root, ec)) throw InputError("--reuse " + root + ": not a directory");
+    if (matches(root)) return root;
+    std::vector<fs::path> subdirs;
+    for (auto& e : fs::directory_iterator(root, ec))
+      if (e.is_directory() && e.path().extension() != ".partial") subdirs.push_back(e.path());
+    std::sort(subdirs.begin(), subdirs.end());  // deterministic choice when several match
+    for (auto& d : subdirs)
+      if (matches(d)) return d.string();
+  }
+  return "";
 }
 
 }  // namespace ppsynth::app

@@ -7,6 +7,7 @@
 // The directory is built as "<dir>.partial" and renamed when complete: an interrupted run
 // leaves no half-written run directory.
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -23,5 +24,18 @@ struct RunOutcome {
 
 // `resolved`: from resolve_run_config. quick: tiny settings (tests, --quick).
 RunOutcome run_synthesis(const nlohmann::json& resolved, const std::string& dir, bool quick);
+
+// Reads a finished run directory back (config.json, run.json, output.txt, init.txt; the
+// exemplar from the config). Throws InputError naming the file when something is missing.
+RunOutcome load_run(const std::string& dir);
+
+// True when two resolved run configs describe the same synthesis: everything but the keys
+// that only label or decorate a run (name, description, snapshots, evaluate) is equal.
+bool same_synthesis(const nlohmann::json& a, const nlohmann::json& b);
+
+// A finished run directory under any of `roots` (each root itself or one of its direct
+// subdirectories) made by the same synthesis (same_synthesis) at the same quick setting;
+// "" when none. Lets a report reuse long runs instead of repeating them (reproduce --reuse).
+std::string find_matching_run(const nlohmann::json& resolved, bool quick, const std::vector<std::string>& roots);
 
 }  // namespace ppsynth::app

@@ -1,0 +1,71 @@
+// `ppsynth reproduce NAME [--quick] [--out DIR] [--set key=value ...]`
+// `ppsynth reproduce --list` | `ppsynth reproduce --check [NAME...]`
+// Re-runs a published experiment (a figure, table or ablation of Huang et al. 2022) from its
+// config in configs/paper/ and writes a self-contained report (reports/NAME/index.html, plus
+// CSV/Markdown tables). Schema: apps/ppsynth/synthesis/reproduce_config.hpp, docs/reproduce.md.
+#include <filesystem>
+#include <iostream>
+
+#include "apps/ppsynth/command.hpp"
+#include "apps/ppsynth/synthesis/reproduce_config.hpp"
+#include "apps/ppsynth/synthesis/reproduce_runner.hpp"
+#include "core/error.hpp"
+
+namespace {
+
+struct Opts {
+  std::vector<std::string> names, sets, reuse;
+  std::string out;
+  bool quick = false, list = false, check = false;
+};
+
+ppsynth::app::RunFn setup(CLI::App& app) {
+  auto o = std::make_shared<Opts>();
+  app.add_option("name", o->names, "config name in configs/paper (e.g. fig05, table1) or a path to a .json config");
+  app.add_flag("--list", o->list, "list the configs in configs/paper");
+  app.add_flag("--check", o->check, "validate the named configs (all of configs/paper if none) without running");
+  app.add_flag("--quick", o->quick, "small grids, few iterations, few filters (smoke test)");
+  app.add_option("-o,--out", o->out, "report directory (default reports/NAME)");
+  app.add_option("--reuse", o->reuse,
+                 "reuse finished run directories (DIR or its subdirectories, e.g. runs/) whose resolved config equals a column's");
+  app.add_option("--set", o->sets, "override a key of every panel's run config: key.path=value (method.* keys: ours only)");
+  return [o]() {
+    using namespace ppsynth;
+    namespace fs = std::filesystem;
+    if (o->list) {
+      for (auto& f : app::list_reproduce_configs(app::paper_config_dir())) {
+        try {
+          auto c = app::load_reproduce_config(f);
+          std::printf("%-24s %-10s %2zu panel(s)  %s\n", fs::path(f).stem().c_str(), c.kind.c_str(), c.panels.size(), c.title.c_str());
+        } catch (const InputError& e) {
+          std::printf("%-24s INVALID: %s\n", fs::path(f).stem().c_str(), e.what());
+        }
+      }
+      return 0;
+    }
+    if (o->check) {
+      std::vector<std::string> files;
+      for (auto& n : o->names) files.push_back(app::find_reproduce_config(n));
+      if (o->names.empty()) files = app::list_reproduce_configs(app::paper_config_dir());
+      for (auto& f : files) {
+        auto c = app::load_reproduce_config(f);  // throws InputError naming the file and key
+        std::printf("ok  %s (%zu panels)\n", f.c_str(), c.panels.size());
+      }
+      return 0;
+    }
+    if (o->names.size() != 1) throw InputError("give one config name (see --list)");
+    auto config = app::load_reproduce_config(app::find_reproduce_config(o->names.front()));
+    app::ReproduceOptions ro;
+    ro.quick = o->quick;
+    ro.out = o->out;
+    ro.overrides = o->sets;
+    ro.reuse = o->reuse;
+    auto res = app::run_reproduction(config, ro);
+    std::cout << res.dir << "/index.html\n";
+    return 0;
+  };
+}
+
+}  // namespace
+
+PPSYNTH_COMMAND("reproduce", "re-run a figure, table or ablation of the paper from configs/paper and write a report", setup)

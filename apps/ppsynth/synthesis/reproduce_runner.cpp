@@ -1,0 +1,270 @@
+#include "apps/ppsynth/synthesis/reproduce_runner.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include "apps/ppsynth/synthesis/report_writer.hpp"
+#include "apps/ppsynth/synthesis/reproduce_gabor_maps.hpp"
+#include "apps/ppsynth/synthesis/run_config.hpp"
+#include "apps/ppsynth/synthesis/run_synthesis.hpp"
+#include "core/atomic_file.hpp"
+#include "core/config/config.hpp"
+#include "core/error.hpp"
+#include "core/formats/point_io.hpp"
+#include "core/generators/generator.hpp"
+#include "core/log.hpp"
+#include "core/metrics/evaluation.hpp"
+#include "core/paths.hpp"
+#include "core/render/plot_curves.hpp"
+#include "core/render/plot_points.hpp"
+
+namespace fs = std::filesystem;
+
+namespace ppsynth::app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// The exemplar of a panel with "exemplar_generator": generated, written into the panel folder.
+std::string generate_exemplar(const PanelSpec& p, bool quick, const std::string& panel_dir, std::string& description) {
+  json spec = p.generator["generator"];
+  if (quick && !p.generator["quick"].is_null()) spec = merge(spec, p.generator["quick"]);
+  const size_t n = p.generator["n"].get<size_t>();
+  const uint64_t seed = p.generator["seed"].get<uint64_t>();
+  PointSet ps = generate_points(spec, n, seed, Domain{}, "panels." + p.name + ".exemplar_generator.generator");
+  const std::string path = panel_dir + "/exemplar.txt";
+  write_points(path, ps, Format::Plain);
+  description = spec.dump() + ", n = " + std::to_string(n) + ", seed " + std::to_string(seed) + " (panels/" + p.name + "/exemplar.txt)";
+  return fs::absolute(path).string();
+}
+
+void plot_pcf_comparison(const std::string& path, const PanelResult& pr) {
+  CurvePlot cp;
+  cp.title = pr.name + ": PCF, exemplar vs outputs (4-quadrant mean)";
+  cp.xlabel = "r / r_max";
+  cp.ylabel = "g(r)";
+  bool have_ex = false;
+  for (const auto& c : pr.columns) {
+    if (c.status != "ok" || !c.metrics.contains("all") || !c.metrics["all"].contains("pcf")) continue;
+    const auto& pcf = c.metrics["all"]["pcf"];
+    const auto r = pcf["r"].get<std::vector<double>>();
+    if (!have_ex) {
+      cp.series.push_back(Series{"exemplar", r, pcf["exemplar"].get<std::vector<double>>(), true});
+      have_ex = true;
+    }
+    cp.series.push_back(Series{c.column, r, pcf["output"].get<std::vector<double>>(), false});
+  }
+  if (have_ex) plot_curves(path, cp, 640, 380);
+}
+
+void read_run_json(ColumnResult& c, const std::string& run_dir) {
+  std::ifstream in(run_dir + "/run.json");
+  if (!in) return;
+  try {
+    json r = json::parse(in);
+    c.synthesis_seconds = r.value("synthesis_seconds", 0.0);
+  } catch (...) {
+  }
+}
+
+ColumnResult synthesise(const ReproduceConfig& c, const PanelSpec& p, const std::string& column, const ReproduceOptions& o,
+                        const std::string& generated_exemplar, const std::string& partial, PanelResult& pr,
+                        PointSet& ours_init, std::string& ours_init_source) {
+  json run = column_run_config(c, p, column, o.overrides);
+  if (!generated_exemplar.empty()) {
+    run["exemplar"] = generated_exemplar;
+    run["format"] = "plain";
+  }
+  json resolved;
+  try {
+    resolved = resolve_run_config(run, {});
+  } catch (const InputError& e) {
+    throw InputError(c.source + ": panel '" + p.name + "', column '" + column + "': " + e.what());
+  }
+  const std::string rel = "panels/" + p.name + "/" + column;
+  RunOutcome out;
+  const std::string reused = o.reuse.empty() ? "" : find_matching_run(resolved, o.quick, o.reuse);
+  if (!reused.empty()) {
+    spdlog::info("[{}/{}] '{}': reusing the finished run {}", c.name, p.name, column, reused);
+    fs::create_directories(fs::path(partial + "/" + rel).parent_path());
+    fs::copy(reused, partial + "/" + rel, fs::copy_options::recursive);
+    out = load_run(partial + "/" + rel);
+  } else {
+    out = run_synthesis(resolved, partial + "/" + rel, o.quick);
+  }
+  ColumnResult r;
+  r.column = column;
+  r.output = out.output;
+  r.metrics = out.metrics.is_null() ? evaluate(out.exemplar, out.output) : out.metrics;
+  r.run_dir = rel;
+  r.source = reused.empty() ? rel : rel + " (reused from " + reused + ")";
+  r.config = out.config;
+  r.stats = out.stats;
+  r.seconds = out.seconds;
+  r.iterations = total_iterations(out.stats);
+  read_run_json(r, out.dir);
+  if (pr.exemplar.empty()) pr.exemplar = out.exemplar;
+  if (column == "ours") {
+    ours_init = out.initialization;
+    ours_init_source = rel + "/init.txt";
+  }
+  return r;
+}
+
+void run_panel(const ReproduceConfig& c, const PanelSpec& p, const ReproduceOptions& o, const std::string& partial, PanelResult& pr) {
+  const auto t0 = Clock::now();
+  pr.name = p.name;
+  const std::string panel_dir = partial + "/panels/" + p.name;
+  fs::create_directories(panel_dir);
+  std::string generated;
+  if (!p.generator.is_null()) {
+    const auto tg = Clock::now();
+    generated = generate_exemplar(p, o.quick, panel_dir, pr.exemplar_source);
+    spdlog::info("[{}/{}] generated exemplar in {:.1f} s", c.name, p.name, since(tg));
+  }
+
+  if (p.kind == "gabor_maps") {
+    json run = column_run_config(c, p, "ours", o.overrides);
+    if (!generated.empty()) run["exemplar"] = generated;
+    json r = resolve_run_config(run, {});
+    pr.exemplar = load_exemplar(r);
+    if (pr.exemplar_source.empty()) pr.exemplar_source = r["exemplar"];
+    for (auto& [file, caption] : render_gabor_map_figure(pr.exemplar, p.maps, o.quick, panel_dir))
+      pr.images.push_back({"panels/" + p.name + "/" + file, caption});
+    pr.seconds = since(t0);
+    return;
+  }
+
+  // Synthesised columns first ("ours" before the others), then init and reference.
+  std::map<std::string, ColumnResult> done;
+  PointSet ours_init;
+  std::string ours_init_source;
+  std::vector<std::string> order;
+  if (std::count(p.methods.begin(), p.methods.end(), "ours")) order.push_back("ours");
+  for (auto& m : p.methods)
+    if (m != "ours") order.push_back(m);
+  for (auto& m : order) {
+    if (m == "init" || m == "reference") continue;
+    if (!method_available(m)) {
+      ColumnResult r;
+      r.column = m;
+      r.status = "pending";
+      spdlog::warn("[{}/{}] method '{}' is not registered in this build: column left empty", c.name, p.name, m);
+      done[m] = r;
+      continue;
+    }
+    spdlog::info("[{}/{}] running '{}'", c.name, p.name, m);
+    done[m] = synthesise(c, p, m, o, generated, partial, pr, ours_init, ours_init_source);
+  }
+  if (pr.exemplar.empty()) {  // only init/reference columns: still need the exemplar
+    json run = column_run_config(c, p, "ours", o.overrides);
+    if (!generated.empty()) run["exemplar"] = generated, run["format"] = "plain";
+    pr.exemplar = load_exemplar(resolve_run_config(run, {}));
+  }
+  if (pr.exemplar_source.empty()) pr.exemplar_source = p.run.value("exemplar", "");
+  for (auto& m : p.methods) {
+    if (m == "init") {
+      ColumnResult r;
+      r.column = "init";
+      r.output = ours_init;
+      r.source = ours_init_source;
+      if (ours_init.empty()) r.status = "missing";
+      else r.metrics = evaluate(pr.exemplar, ours_init);
+      pr.columns.push_back(r);
+    } else if (m == "reference") {
+      ColumnResult r;
+      r.column = "reference";
+      if (p.reference.empty()) {
+        r.status = "missing";
+      } else {
+        r.source = p.reference;
+        r.output = read_points(resolve_data_path(p.reference));
+        r.metrics = evaluate(pr.exemplar, r.output);
+      }
+      pr.columns.push_back(r);
+    } else {
+      pr.columns.push_back(done.at(m));
+    }
+  }
+
+  // Exemplar and every column side by side (the paper's layout), and the PCFs together.
+  std::vector<std::pair<std::string, PointSet>> sets = {{"exemplar", pr.exemplar}};
+  for (auto& col : pr.columns) sets.push_back({col.status == "ok" ? col.column : col.column + " (n/a)", col.output});
+  plot_panels(panel_dir + "/side_by_side.png", sets, PointStyle{}, 320);
+  pr.images.push_back({"panels/" + p.name + "/side_by_side.png", p.title + ": exemplar and outputs"});
+  plot_pcf_comparison(panel_dir + "/pcf_compare.png", pr);
+  if (fs::exists(panel_dir + "/pcf_compare.png"))
+    pr.images.push_back({"panels/" + p.name + "/pcf_compare.png", p.title + ": PCF of the exemplar and of each output"});
+  pr.seconds = since(t0);
+}
+
+// Generated exemplars are written inside "<out>.partial"; after the rename the run
+// directories' config.json must name the final place.
+void fix_partial_paths(const std::string& partial, const std::string& dir, const ReproduceResult& res) {
+  const std::string from = fs::absolute(partial).string(), to = fs::absolute(dir).string();
+  for (const auto& p : res.panels)
+    for (const auto& c : p.columns) {
+      if (c.run_dir.empty()) continue;
+      const std::string f = dir + "/" + c.run_dir + "/config.json";
+      std::ifstream in(f);
+      if (!in) continue;
+      std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      in.close();
+      bool changed = false;
+      for (size_t pos; (pos = text.find(from)) != std::string::npos; changed = true) text.replace(pos, from.size(), to);
+      if (changed) write_text_atomic(f, text);
+    }
+}
+
+}  // namespace
+
+int total_iterations(const json& stats) {
+  if (!stats.is_object()) return 0;
+  if (stats.contains("stages") && stats["stages"].is_array()) {
+    int n = 0;
+    for (auto& s : stats["stages"]) n += s.value("iterations", 0);
+    return n;
+  }
+  return stats.value("iterations", 0);
+}
+
+ReproduceResult run_reproduction(const ReproduceConfig& c, const ReproduceOptions& o) {
+  const auto t0 = Clock::now();
+  try {
+    check_reproduce_runs(c, o.overrides);  // a bad --set fails before anything is written
+  } catch (const InputError& e) {
+    if (c.source.empty()) throw;
+    throw InputError(c.source + ": " + e.what());
+  }
+  ReproduceResult res;
+  res.quick = o.quick;
+  res.dir = o.out.empty() ? "reports/" + c.name : o.out;
+  while (res.dir.size() > 1 && res.dir.back() == '/') res.dir.pop_back();
+  const std::string partial = res.dir + ".partial";
+  fs::remove_all(partial);
+  fs::create_directories(partial + "/panels");
+  try {
+    for (const auto& p : c.panels) {
+      res.panels.emplace_back();
+      run_panel(c, p, o, partial, res.panels.back());
+      spdlog::info("[{}] panel {} done in {:.1f} s", c.name, p.name, res.panels.back().seconds);
+    }
+    res.seconds = since(t0);
+    write_reproduce_report(c, res, partial, o);
+  } catch (...) {
+    fs::remove_all(partial);
+    throw;
+  }
+  fs::remove_all(res.dir);
+  fs::rename(partial, res.dir);
+  fix_partial_paths(partial, res.dir, res);
+  spdlog::info("[{}] wrote {}/index.html ({:.1f} s)", c.name, res.dir, res.seconds);
+  return res;
+}
+
+}  // namespace ppsynth::app

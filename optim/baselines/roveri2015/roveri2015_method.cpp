@@ -1,0 +1,220 @@
+// "roveri2015": thesis Chapter 3 (Roveri et al. 2015, "Example Based Repetitive Structure
+// Synthesis") as a SynthesisMethod, for 2-D point patterns with classes and attributes.
+//
+// Expansion by S = u^2: the output is synthesised on a domain u times wider and taller than
+// the exemplar's, in exemplar units (so the exemplar's structures keep their size there),
+// initialised by random patch copy (patch_init.hpp) or ctx.initialization, optimised by
+// Algorithm 1 (solver.hpp), and finally mapped onto the unit square (structures at 1/u size).
+// Lengths scale with d_nn, the exemplar's mean nearest-neighbour distance: sigma =
+// sigma_factor d_nn, delta_0 = window_factor d_nn (params.hpp).
+// Progress: one ProgressEvent stage per scale ("scale s/N, delta=..."), one iteration event
+// per local-global round (loss = T of Eq. 3.6), a stage_end with the current output.
+#include <chrono>
+#include <cmath>
+
+#include "core/config/config.hpp"
+#include "core/error.hpp"
+#include "core/log.hpp"
+#include "core/metrics/nearest_neighbor.hpp"
+#include "optim/baselines/roveri2015/functional.hpp"
+#include "optim/baselines/roveri2015/params.hpp"
+#include "optim/baselines/roveri2015/patch_init.hpp"
+#include "optim/baselines/roveri2015/solver.hpp"
+#include "optim/baselines/roveri2015/synthesis_state.hpp"
+#include "optim/method.hpp"
+
+namespace ppsynth::roveri2015 {
+
+namespace {
+
+const char* kp_ = "method";
+
+double positive(const nlohmann::json& p, const std::string& key) {
+  const double v = get_number(p, key, kp_);
+  if (!(v > 0)) throw config_error(std::string(kp_) + "." + key, "must be > 0");
+  return v;
+}
+int at_least(const nlohmann::json& p, const std::string& key, int lo) {
+  const int v = get_int(p, key, kp_);
+  if (v < lo) throw config_error(std::string(kp_) + "." + key, "must be >= " + std::to_string(lo));
+  return v;
+}
+
+class Roveri2015Method : public SynthesisMethod {
+ public:
+  explicit Roveri2015Method(const nlohmann::json& p) {
+    p_.sigma_factor = positive(p, "sigma_factor");
+    p_.window_factor = positive(p, "window_factor");
+    const std::string w = get_string(p, "window", kp_);
+    if (w == "box") p_.window = WindowKind::Box;
+    else if (w == "gaussian") p_.window = WindowKind::Gaussian;
+    else throw config_error(std::string(kp_) + ".window", "expected \"box\" or \"gaussian\", got \"" + w + "\"");
+    p_.window_cutoff = positive(p, "window_cutoff");
+    p_.pair_cutoff = positive(p, "pair_cutoff");
+    p_.attribute_weight = get_number(p, "attribute_weight", kp_);
+    if (p_.attribute_weight < 0) throw config_error(std::string(kp_) + ".attribute_weight", "must be >= 0");
+    p_.quad_spacing = positive(p, "quad_spacing");
+    p_.match_restarts = at_least(p, "match_restarts", 0);
+    p_.match_iterations = at_least(p, "match_iterations", 0);
+    p_.aligned_starts = at_least(p, "aligned_starts", 0);
+    p_.match_step = positive(p, "match_step");
+    p_.match_margin = get_number(p, "match_margin", kp_);
+    if (p_.match_margin < 0) throw config_error(std::string(kp_) + ".match_margin", "must be >= 0");
+    p_.merge_iterations = at_least(p, "merge_iterations", 0);
+    p_.merge_step = positive(p, "merge_step");
+    p_.merge_tolerance = get_number(p, "merge_tolerance", kp_);
+    p_.attribute_iterations = at_least(p, "attribute_iterations", 0);
+    p_.local_global_iterations = at_least(p, "local_global_iterations", 1);
+    p_.sampling_control_iterations = at_least(p, "sampling_control_iterations", 1);
+    p_.scale_factor = get_number(p, "scale_factor", kp_);
+    if (!(p_.scale_factor > 0 && p_.scale_factor < 1))
+      throw config_error(std::string(kp_) + ".scale_factor", "must be in (0, 1)");
+    p_.min_window_ratio = get_number(p, "min_window_ratio", kp_);
+    if (!(p_.min_window_ratio > 0 && p_.min_window_ratio <= 1))
+      throw config_error(std::string(kp_) + ".min_window_ratio", "must be in (0, 1]");
+    p_.sampling_epsilon = get_number(p, "sampling_epsilon", kp_);
+    p_.candidate_iterations = at_least(p, "candidate_iterations", 0);
+    p_.max_candidate_fraction = get_number(p, "max_candidate_fraction", kp_);
+    if (!(p_.max_candidate_fraction >= 0 && p_.max_candidate_fraction <= 1))
+      throw config_error(std::string(kp_) + ".max_candidate_fraction", "must be in [0, 1]");
+    p_.patch_size = positive(p, "patch_size");
+    p_.periodic_output = get_bool(p, "periodic_output", kp_);
+    quick_scales_ = at_least(p, "quick_scales", 1);
+  }
+
+  PointSet synthesize(const PointSet& exemplar, const SynthesisContext& ctx) override {
+    validate(exemplar, "exemplar");
+    if (exemplar.size() < 3) throw InputError("roveri2015: the exemplar needs at least 3 points");
+    if (ctx.upscale < 1) throw InputError("roveri2015: upscale must be >= 1");
+    const auto t_start = std::chrono::steady_clock::now();
+    const Domain E = exemplar.domain();
+    const double u = ctx.upscale;
+    const Domain out_domain{E.x0, E.y0, E.x0 + u * E.width(), E.y0 + u * E.height(), p_.periodic_output};
+    const Domain unit{0, 0, 1, 1, p_.periodic_output};
+
+    const double d_nn = mean_nn_distance(exemplar, false);
+    if (!(d_nn > 0)) throw InputError("roveri2015: the exemplar's points all coincide");
+    const double sigma = p_.sigma_factor * d_nn;
+    const double delta0 = p_.window_factor * d_nn;
+    KernelParams probe;
+    probe.delta = delta0;
+    probe.window = p_.window;
+    probe.window_cutoff = p_.window_cutoff;
+    if (p_.periodic_output && probe.radius() >= 0.5 * std::min(out_domain.width(), out_domain.height()))
+      throw InputError("roveri2015: the window radius (" + std::to_string(probe.radius()) +
+                       ") must be below half the periodic output domain; lower window_factor");
+
+    RoveriParams p = p_;
+    if (ctx.quick) {
+      p.min_window_ratio = std::pow(p.scale_factor, quick_scales_ - 1) * (1 - 1e-9);
+      p.local_global_iterations = 1;
+      p.sampling_control_iterations = 1;
+      p.merge_iterations = std::min(p.merge_iterations, 10);
+    }
+
+    PointSet init = ctx.initialization ? ctx.initialization->mapped_to(out_domain)
+                                       : random_patch_copy(exemplar, out_domain,
+                                                           p.patch_size * std::min(E.width(), E.height()), ctx.seed);
+    ctx.start(init.mapped_to(unit));
+    const ChannelEncoder enc(exemplar, p.attribute_weight);
+    if (init.num_attributes() != exemplar.num_attributes())
+      throw InputError("roveri2015: the initialization has " + std::to_string(init.num_attributes()) +
+                       " attribute columns, the exemplar " + std::to_string(exemplar.num_attributes()));
+    SynthesisState st(encode_points(exemplar, enc), E, encode_points(init, enc), out_domain, p.periodic_output);
+
+    const auto to_unit = [&](const SynthesisState& s) { return decode_points(s.out, enc, exemplar, out_domain).mapped_to(unit); };
+    ProgressEvent ev;
+    auto t_stage = std::chrono::steady_clock::now();
+    const auto since = [](std::chrono::steady_clock::time_point t) {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    };
+    SolverCallbacks cb;
+    cb.scale_begin = [&](int s, int n, double delta) {
+      ev = ProgressEvent{};
+      ev.stage = "scale " + std::to_string(s + 1) + "/" + std::to_string(n) + ", delta " + std::to_string(delta / d_nn) + " d_nn";
+      ev.stage_index = s;
+      ev.stage_count = n;
+      ev.max_iterations = p.local_global_iterations * p.sampling_control_iterations;
+      t_stage = std::chrono::steady_clock::now();
+      ctx.stage_begin(ev);
+    };
+    cb.iteration = [&](int, int it, int, double T) {
+      ev.iteration = it;
+      ev.loss = T;
+      ev.seconds = since(t_stage);
+      ctx.iteration(ev);
+    };
+    nlohmann::json scales = nlohmann::json::array();
+    cb.scale_end = [&](int, const SynthesisState& s, const ScaleReport& r) {
+      ev.loss = r.energy_end;
+      ev.seconds = since(t_stage);
+      ctx.stage_end(ev, to_unit(s));
+      scales.push_back({{"delta", r.delta},
+                        {"energy_start", r.energy_start},
+                        {"energy_end", r.energy_end},
+                        {"points", r.points},
+                        {"added", r.added},
+                        {"removed", r.removed},
+                        {"merge_iterations", r.merge_iterations},
+                        {"seconds", r.seconds}});
+      spdlog::debug("roveri2015: delta {:.4f}: T {:.4g} -> {:.4g}, {} points (+{} -{}), {:.2f} s", r.delta,
+                    r.energy_start, r.energy_end, r.points, r.added, r.removed, r.seconds);
+    };
+    solve(st, enc, p, sigma, delta0, ctx.seed ^ 0x9e3779b97f4a7c15ULL, cb);
+    PointSet out = to_unit(st);
+    if (ctx.stats) {
+      auto& j = *ctx.stats;
+      j["d_nn"] = d_nn;
+      j["sigma"] = sigma;
+      j["delta0"] = delta0;
+      j["quadrature_points"] = st.quad.size();
+      j["initial_points"] = init.size();
+      j["points"] = out.size();
+      j["target_points"] = size_t(u * u) * exemplar.size();
+      j["scales"] = scales;
+      j["seconds"] = since(t_start);
+    }
+    return out;
+  }
+
+ private:
+  RoveriParams p_;
+  int quick_scales_ = 2;
+};
+
+}  // namespace
+
+}  // namespace ppsynth::roveri2015
+
+PPSYNTH_REGISTER(ppsynth::MethodRegistry, "roveri2015",
+                 (nlohmann::json{{"sigma_factor", 1.0},
+                                 {"window_factor", 2.0},
+                                 {"window", "gaussian"},
+                                 {"window_cutoff", 2.5},
+                                 {"pair_cutoff", 4.5},
+                                 {"attribute_weight", 0.5},
+                                 {"quad_spacing", 1.0},
+                                 {"match_restarts", 5},
+                                 {"match_iterations", 20},
+                                 {"aligned_starts", 2},
+                                 {"match_step", 0.5},
+                                 {"match_margin", 1.0},
+                                 {"merge_iterations", 30},
+                                 {"merge_step", 0.1},
+                                 {"merge_tolerance", 1e-6},
+                                 {"attribute_iterations", 10},
+                                 {"local_global_iterations", 3},
+                                 {"sampling_control_iterations", 2},
+                                 {"scale_factor", 0.9},
+                                 {"min_window_ratio", 0.5},
+                                 {"sampling_epsilon", 1e-6},
+                                 {"candidate_iterations", 5},
+                                 {"max_candidate_fraction", 0.5},
+                                 {"patch_size", 0.5},
+                                 {"periodic_output", false},
+                                 {"quick_scales", 2}}),
+                 "Roveri et al. 2015 (thesis Ch. 3): functional neighbourhood matching, multi-scale local-global "
+                 "solver with sampling control, random-patch-copy init",
+                 [](const nlohmann::json& p) -> std::unique_ptr<ppsynth::SynthesisMethod> {
+                   return std::make_unique<ppsynth::roveri2015::Roveri2015Method>(p);
+                 })

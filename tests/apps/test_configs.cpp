@@ -1,0 +1,156 @@
+// Every config under configs/ runs, through the same functions the commands call, with
+// --quick settings (so no config can rot):
+//   configs/runs, configs/methods  -> resolve_run_config + run_synthesis (a method-only
+//                                     fragment runs on the lines exemplar)
+//   configs/paper                  -> load_reproduce_config + run_reproduction (report)
+//   configs/pptbf                  -> pptbf_params_from_json + render_pptbf (16 x 16)
+// and no config lives in a folder this test does not know.
+
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "apps/ppsynth/synthesis/reproduce_config.hpp"
+#include "apps/ppsynth/synthesis/reproduce_runner.hpp"
+#include "apps/ppsynth/synthesis/run_config.hpp"
+#include "apps/ppsynth/synthesis/run_synthesis.hpp"
+#include "core/config/config.hpp"
+#include "core/log.hpp"
+#include "core/procedural/pptbf.hpp"
+#include "core/procedural/pptbf_params.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using ppsynth::json;
+
+const fs::path kConfigs = fs::path(PPSYNTH_SOURCE_DIR) / "configs";
+
+std::vector<fs::path> json_files(const fs::path& dir) {
+  std::vector<fs::path> v;
+  for (auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".json") v.push_back(e.path());
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+fs::path scratch(const std::string& name) {
+  auto d = fs::temp_directory_path() / ("ppsynth_configs_" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+size_t count_points(const fs::path& f) {
+  std::ifstream in(f);
+  size_t n = 0;
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty() && line[0] != '#') ++n;
+  return n;
+}
+
+struct QuietLogs {
+  QuietLogs() { ppsynth::configure_logging(-2); }
+  ~QuietLogs() { ppsynth::configure_logging(0); }
+};
+
+}  // namespace
+
+TEST_CASE("every config folder is one this test runs", "[apps][configs]") {
+  const std::set<std::string> known = {"runs", "methods", "paper", "pptbf"};
+  for (auto& e : fs::directory_iterator(kConfigs)) {
+    INFO(e.path().string());
+    if (e.is_directory()) CHECK(known.count(e.path().filename().string()) == 1);
+    else CHECK(e.path().extension() != ".json");  // loose configs at the top would be skipped
+  }
+  for (auto& d : known) CHECK_FALSE(json_files(kConfigs / d).empty());
+}
+
+TEST_CASE("every run config runs with --quick", "[apps][configs]") {
+  QuietLogs quiet;
+  const fs::path out = scratch("runs");
+  for (const char* dir : {"runs", "methods"})
+    for (auto& f : json_files(kConfigs / dir)) {
+      INFO(f.string());
+      json c = ppsynth::load_config(f.string());
+      // A method-only fragment (configs/methods/pcf2017.json) runs on the lines exemplar.
+      if (!c.contains("exemplar")) c["exemplar"] = "shared:data/exemplars/gabor-paper/lines.txt";
+      try {
+        json r = ppsynth::app::resolve_run_config(c, {});
+        const fs::path run_dir = out / (std::string(dir) + "_" + f.stem().string());
+        auto o = ppsynth::app::run_synthesis(r, run_dir.string(), true);
+        const int u = r["upscale"];
+        const double target = double(o.exemplar.size() * u * u);
+        if (r["method"]["type"] == "roveri2015")  // sampling control (Eq. 3.7) adapts the count
+          CHECK(std::abs(double(o.output.size()) - target) <= 0.25 * target);
+        else
+          CHECK(o.output.size() == o.exemplar.size() * u * u);
+        // The Gabor method keeps every class; the baselines document that they pool them.
+        if (r["method"]["type"] == "gabor") CHECK(o.output.num_classes() == o.exemplar.num_classes());
+        CHECK(count_points(run_dir / "output.txt") == o.output.size());
+        CHECK(fs::exists(run_dir / "run.json"));
+        CHECK(std::isfinite(o.metrics["all"]["pcf_mse"].get<double>()));
+      } catch (const std::exception& e) {
+        FAIL_CHECK(f.string() << ": " << e.what());
+      }
+    }
+}
+
+TEST_CASE("every paper config (configs/paper) reproduces with --quick", "[apps][configs][reproduce]") {
+  QuietLogs quiet;
+  const fs::path out = scratch("paper");
+  const auto files = json_files(kConfigs / "paper");
+  REQUIRE(files.size() >= 20);  // one config per row of method.md section 7 (and more)
+  for (auto& f : files) {
+    INFO(f.string());
+    try {
+      auto c = ppsynth::app::load_reproduce_config(f.string());
+      CHECK(c.name == f.stem().string());
+      CHECK_FALSE(c.claim.empty());
+      ppsynth::app::ReproduceOptions o;
+      o.quick = true;
+      o.out = (out / c.name).string();
+      auto r = ppsynth::app::run_reproduction(c, o);
+      CHECK(fs::exists(out / c.name / "index.html"));
+      CHECK(fs::exists(out / c.name / "metrics.csv"));
+      CHECK_FALSE(fs::exists(out / (c.name + ".partial")));
+      for (auto& t : c.tables) {
+        CHECK(fs::exists(out / c.name / (t.name + ".csv")));
+        CHECK(fs::exists(out / c.name / (t.name + ".md")));
+      }
+      REQUIRE(r.panels.size() == c.panels.size());
+      for (size_t i = 0; i < r.panels.size(); ++i) {
+        INFO("panel " << r.panels[i].name);
+        CHECK_FALSE(r.panels[i].images.empty());
+        if (c.panels[i].kind != "synthesis") continue;
+        CHECK(r.panels[i].columns.size() == c.panels[i].methods.size());
+        for (auto& col : r.panels[i].columns) {
+          INFO("column " << col.column << " status " << col.status);
+          if (col.column == "ours") CHECK(col.status == "ok");
+          if (col.status != "ok") continue;
+          CHECK(col.output.size() > 0);
+          CHECK(std::isfinite(col.metrics["all"]["pcf_mse"].get<double>()));
+        }
+      }
+    } catch (const std::exception& e) {
+      FAIL_CHECK(f.string() << ": " << e.what());
+    }
+  }
+}
+
+TEST_CASE("every PPTBF config parses and renders", "[apps][configs]") {
+  for (auto& f : json_files(kConfigs / "pptbf")) {
+    INFO(f.string());
+    try {
+      auto p = ppsynth::pptbf_params_from_json(ppsynth::load_config(f.string()));
+      auto img = ppsynth::render_pptbf(p, 16, 16);
+      CHECK(img.pixels.size() == 256u);
+      CHECK(std::all_of(img.pixels.begin(), img.pixels.end(), [](float v) { return std::isfinite(v); }));
+    } catch (const std::exception& e) {
+      FAIL_CHECK(f.string() << ": " << e.what());
+    }
+  }
+}
