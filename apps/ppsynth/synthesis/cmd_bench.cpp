@@ -209,10 +209,15 @@ app::RunFn setup(CLI::App& app) {
     if (flops > 0)
       std::printf("network FLOPs per iteration (fwd + input grad): %.1f GFLOP -> floor %.3f s; iteration / floor = %.2f\n",
                   flops / 1e9, floor_s, full.median() / floor_s);
-    std::printf("set-up before the first iteration: %.2f s; per sigma:", setup_first);
-    double setup_total = 0;
-    for (double x : setup_each) std::printf(" %.2f", x), setup_total += x;
-    std::printf(" s (all %zu sigmas %.2f s)\n", setup_each.size(), setup_total);
+    std::printf("set-up before the first iteration: %.2f s", setup_first);
+    if (setup_each.empty()) {
+      std::printf(" (per-sigma set-up not timed: --skip-setup)\n");
+    } else {
+      double setup_total = 0;
+      std::printf("; per sigma:");
+      for (double x : setup_each) std::printf(" %.2f", x), setup_total += x;
+      std::printf(" s (all %zu sigmas %.2f s)\n", setup_each.size(), setup_total);
+    }
     std::printf("peak resident memory: %.0f MiB\n", peak_rss_mib());
     out["phases"] = jp;
     out["iteration_min_s"] = full.min();

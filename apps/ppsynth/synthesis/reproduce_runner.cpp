@@ -230,6 +230,11 @@ int total_iterations(const json& stats) {
     for (auto& s : stats["stages"]) n += s.value("iterations", 0);
     return n;
   }
+  if (stats.contains("scales") && stats["scales"].is_array()) {  // roveri2015: merging steps per scale
+    int n = 0;
+    for (auto& s : stats["scales"]) n += s.value("merge_iterations", 0);
+    return n;
+  }
   return stats.value("iterations", 0);
 }
 
