@@ -265,6 +265,24 @@ TEST_CASE("generated exemplars and Gabor map panels", "[apps][reproduce]") {
   CHECK(r.panels[1].images.size() == 3);
   for (auto f : {"gabor_exemplar.png", "gabor_frequencies.png", "gabor_sigmas.png"})
     CHECK(fs::file_size(d / "rep/panels/m" / f) > 1000);
+
+  // Another report generates the same exemplar in its own folder: --reuse matches the first
+  // report's run by the exemplar's points, not its file name; another generator seed does not.
+  auto c1 = parse(minimal(json::array({gen})));
+  o.reuse = {(d / "rep/panels/g").string()};
+  o.out = (d / "rep_same").string();
+  auto same = run_reproduction(c1, o);
+  CHECK(same.panels[0].columns[0].source.find("reused from") != std::string::npos);
+  CHECK(slurp(d / "rep_same/panels/g/ours/output.txt") == slurp(d / "rep/panels/g/ours/output.txt"));
+  json gen2 = gen;
+  gen2["exemplar_generator"]["seed"] = 4;
+  o.out = (d / "rep_other").string();
+  auto other = run_reproduction(parse(minimal(json::array({gen2}))), o);
+  CHECK(other.panels[0].columns[0].source.find("reused from") == std::string::npos);
+  // The reused run reads its exemplar from its own copy, even after the source report is gone.
+  fs::remove_all(d / "rep/panels/g/exemplar.txt");
+  auto loaded = load_run((d / "rep_same/panels/g/ours").string());
+  CHECK(loaded.exemplar.size() == 25);
 }
 
 TEST_CASE("a failing reproduction writes nothing and keeps the previous report", "[apps][reproduce]") {

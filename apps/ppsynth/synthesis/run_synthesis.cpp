@@ -1,6 +1,7 @@
 #include "apps/ppsynth/synthesis/run_synthesis.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -120,6 +121,9 @@ void write_run(RunOutcome& o, const nlohmann::json& r, const std::string& name, 
   write_text_atomic(partial + "/loss.csv", losses.csv());
   losses.plot(partial + "/loss.png", name + ": loss per iteration");
   write_text_atomic(partial + "/config.json", r.dump(2) + "\n");
+  // The exemplar as synthesised (after scaling and class merging): the run stays
+  // self-contained when a generated exemplar's file is gone, and --reuse compares contents.
+  write_points(partial + "/exemplar.txt", o.exemplar, Format::Plain);
   if (r["evaluate"].get<bool>()) {
     o.metrics = evaluate(o.exemplar, o.output);
     write_text_atomic(partial + "/metrics.json", o.metrics.dump(2) + "\n");
@@ -148,9 +152,28 @@ nlohmann::json read_json_file(const std::string& path) {
   }
 }
 
+// The keys that decide a synthesis, without the exemplar's file name: exemplars are
+// compared by content (a generated exemplar lives in each report's own folder).
 nlohmann::json synthesis_key(nlohmann::json c) {
-  for (const char* k : {"name", "description", "snapshots", "evaluate"}) c.erase(k);
+  for (const char* k : {"name", "description", "snapshots", "evaluate", "exemplar", "format"}) c.erase(k);
   return c;
+}
+
+// The exemplar a finished run synthesised from: its own copy, else the config's file.
+PointSet run_exemplar(const std::string& dir, const nlohmann::json& config) {
+  const std::string copy = dir + "/exemplar.txt";
+  return fs::exists(copy) ? read_points(copy) : load_exemplar(config);
+}
+
+bool same_points(const PointSet& a, const PointSet& b) {
+  if (a.size() != b.size() || a.classes() != b.classes() || a.attribute_names() != b.attribute_names()) return false;
+  const double tol = 1e-9;  // plain text keeps 17 digits; tolerance only for the text round trip
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (std::abs(a[i].x - b[i].x) > tol || std::abs(a[i].y - b[i].y) > tol) return false;
+    for (size_t k = 0; k < a.num_attributes(); ++k)
+      if (std::abs(a.attr(i, k) - b.attr(i, k)) > tol * (1 + std::abs(a.attr(i, k)))) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -162,7 +185,7 @@ RunOutcome load_run(const std::string& dir) {
   const nlohmann::json run = read_json_file(dir + "/run.json");
   o.stats = run.value("method_stats", nlohmann::json::object());
   o.seconds = run.value("total_seconds", 0.0);
-  o.exemplar = load_exemplar(o.config);
+  o.exemplar = run_exemplar(dir, o.config);
   o.output = read_points(dir + "/output.txt");
   if (fs::exists(dir + "/init.txt")) o.initialization = read_points(dir + "/init.txt");
   if (fs::exists(dir + "/metrics.json")) o.metrics = read_json_file(dir + "/metrics.json");
@@ -172,14 +195,17 @@ RunOutcome load_run(const std::string& dir) {
 bool same_synthesis(const nlohmann::json& a, const nlohmann::json& b) { return synthesis_key(a) == synthesis_key(b); }
 
 std::string find_matching_run(const nlohmann::json& resolved, bool quick, const std::vector<std::string>& roots) {
+  const PointSet wanted = load_exemplar(resolved);
   auto matches = [&](const fs::path& d) {
     std::error_code ec;
     if (!fs::is_regular_file(d / "config.json", ec) || !fs::is_regular_file(d / "run.json", ec) ||
         !fs::is_regular_file(d / "output.txt", ec))
       return false;
     try {
-      return same_synthesis(read_json_file((d / "config.json").string()), resolved) &&
-             read_json_file((d / "run.json").string()).value("quick", !quick) == quick;
+      const nlohmann::json config = read_json_file((d / "config.json").string());
+      return same_synthesis(config, resolved) &&
+             read_json_file((d / "run.json").string()).value("quick", !quick) == quick &&
+             same_points(run_exemplar(d.string(), config), wanted);
     } catch (const InputError&) {
       return false;  // a damaged directory is simply not a match
     }

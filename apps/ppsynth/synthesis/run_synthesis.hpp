@@ -26,15 +26,17 @@ struct RunOutcome {
 RunOutcome run_synthesis(const nlohmann::json& resolved, const std::string& dir, bool quick);
 
 // Reads a finished run directory back (config.json, run.json, output.txt, init.txt; the
-// exemplar from the config). Throws InputError naming the file when something is missing.
+// exemplar from its exemplar.txt copy, or the config's file for runs made before the copy). Throws InputError naming the file when something is missing.
 RunOutcome load_run(const std::string& dir);
 
-// True when two resolved run configs describe the same synthesis: everything but the keys
-// that only label or decorate a run (name, description, snapshots, evaluate) is equal.
+// True when two resolved run configs describe the same synthesis apart from the exemplar:
+// everything but the keys that only label or decorate a run (name, description, snapshots,
+// evaluate) and the exemplar's file name and format (exemplars are compared by content).
 bool same_synthesis(const nlohmann::json& a, const nlohmann::json& b);
 
 // A finished run directory under any of `roots` (each root itself or one of its direct
-// subdirectories) made by the same synthesis (same_synthesis) at the same quick setting;
+// subdirectories) made by the same synthesis (same_synthesis) at the same quick setting from
+// the same exemplar points (so a generated exemplar in another report's folder matches);
 // "" when none. Lets a report reuse long runs instead of repeating them (reproduce --reuse).
 std::string find_matching_run(const nlohmann::json& resolved, bool quick, const std::vector<std::string>& roots);
 
