@@ -1,9 +1,10 @@
 #pragma once
 // The evaluation suite in one call: what `ppsynth eval` prints and reports consume.
 // evaluate(exemplar, output) returns JSON:
-//   "exemplar", "output": { "count", "class_counts", "d_min", "mean_nn", "relative_radius",
-//                           "relative_radius_per_class" }   (d_min/mean_nn toroidal, domain
-//                           units; relative radius per nearest_neighbor.hpp)
+//   "exemplar", "output": { "count", "class_counts", "d_min", "d_min_square", "mean_nn",
+//                           "relative_radius", "relative_radius_per_class" }   (d_min/mean_nn
+//                           toroidal, d_min_square in the plain square, domain units;
+//                           relative radius per nearest_neighbor.hpp)
 //   "upscale": sqrt(output count / exemplar count) (the per-axis u of method.md; ~2)
 //   "all":     quadrant metrics of all classes together { "pcf_mse", "wasserstein",
 //              "chamfer", "pcf": { "r", "exemplar", "output" } }   (quadrant.hpp)

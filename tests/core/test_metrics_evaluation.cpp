@@ -67,3 +67,15 @@ TEST_CASE("evaluate reproduces the reference quadrant numbers", "[metrics]") {
   CHECK(p["classes"][0]["pcf_mse"].get<double>() == Approx(0.0116).epsilon(0.05));
   CHECK(p["classes"][1]["pcf_mse"].get<double>() == Approx(0.0095).epsilon(0.05));
 }
+
+TEST_CASE("evaluate reports the closest pair on the torus and in the square", "[metrics]") {
+  // Two points in opposite corners: neighbours on the torus, far apart in the square.
+  PointSet ps;
+  ps.add({0.001, 0.001});
+  ps.add({0.999, 0.999});
+  ps.add({0.5, 0.5});
+  auto r = evaluate(ps, ps);
+  CHECK(r["output"]["d_min"].get<double>() == Approx(std::sqrt(2.0) * 0.002).margin(1e-9));
+  CHECK(r["output"]["d_min_square"].get<double>() == Approx(std::sqrt(2.0) * 0.499).margin(1e-9));
+  CHECK(format_evaluation(r).find("d_min_square") != std::string::npos);
+}
