@@ -24,6 +24,10 @@ struct RandomFilterNetOptions {
   // convolutions are ~2x faster on CPUs with AVX512_BF16; features return as float32, so the
   // losses stay in float32). Weights are drawn in float32 from the seed either way.
   torch::Dtype dtype = torch::kFloat32;
+  // CPU fast path for float32, batch 1 (the synthesis): channels-last activations and an
+  // input-gradient-only backward (see random_filter_net.cpp). Same features and gradients
+  // within float rounding (tests/models/test_feature_nets.cpp); off = LibTorch's plain path.
+  bool fast_cpu = true;
 };
 
 class RandomFilterNet : public FeatureNet {
@@ -33,10 +37,15 @@ class RandomFilterNet : public FeatureNet {
   const RandomFilterNetOptions& options() const { return opt_; }
 
  private:
-  torch::Tensor activate(const torch::Tensor& x) const;
+  torch::Tensor activate(const torch::Tensor& x, bool fast) const;
+  bool use_fast_path(const torch::Tensor& maps) const;
   RandomFilterNetOptions opt_;
   std::vector<torch::nn::Conv2d> convs_;
+  // Fast path: each conv's filters channels-last, and transposed + flipped (the filters of
+  // its input gradient, which is itself a convolution at stride 1).
+  std::vector<torch::Tensor> w_cl_, w_grad_cl_;
   std::vector<int> block_end_;  // index of the last conv of each block
+  std::vector<int64_t> strides_;
 };
 
 }  // namespace ppsynth

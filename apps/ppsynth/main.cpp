@@ -35,17 +35,18 @@ bool register_command(const std::string& name, const std::string& description, S
 
 }  // namespace ppsynth::app
 
-// glibc hands freed blocks above its trim threshold back to the kernel, so every synthesis
-// iteration page-faults its ~30 MiB activation buffers in again. Measured with `ppsynth
-// bench` on lines (256 x 256 output grid, idle machine): one iteration 1.82 s -> 1.16 s, the
-// network backward 0.85 s -> 0.40 s. So freed memory stays in the heap for reuse; blocks
-// above 32 MiB (glibc's largest mmap threshold, e.g. a 512 x 512 grid's) still use mmap.
-// PPSYNTH_MALLOC=system keeps glibc's defaults (to measure the difference).
+// glibc hands freed blocks above its trim threshold back to the kernel and serves blocks
+// above its mmap threshold (at most 32 MiB) from fresh mappings, so every synthesis
+// iteration page-faults its activation buffers in again. Measured with `ppsynth bench` on
+// lines, idle machine: 256 x 256 output grid, one iteration 1.71 s -> 1.20 s (network
+// backward 0.76 -> 0.45 s); 512 x 512, 5.8 s -> 3.7 s. So everything comes from the heap
+// and freed memory stays there for reuse (peak resident memory at 512 x 512: 1655 -> 2085
+// MiB; it is returned when the process ends). PPSYNTH_MALLOC=system keeps glibc's defaults.
 void keep_freed_memory() {
 #ifdef __GLIBC__
   const char* env = std::getenv("PPSYNTH_MALLOC");
   if (env && std::string(env) == "system") return;
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_MMAP_MAX, 0);
   mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
   mallopt(M_TOP_PAD, 64 << 20);
 #endif

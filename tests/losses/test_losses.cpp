@@ -115,3 +115,20 @@ TEST_CASE("Composite loss from config: weights, defaults, errors naming the key"
   CHECK_THROWS_WITH(CompositeLoss(json::array({json{{"type", "correlation"}, {"gradient", "fast"}}})), Catch::Contains("gradient"));
   CHECK_THROWS_WITH(CompositeLoss(json::array({json{{"type", "nope"}}})), Catch::Contains("losses[0].type"));
 }
+
+TEST_CASE("Gram matrix: values and gradient equal the direct formula, NCHW and channels-last", "[losses][gram]") {
+  torch::manual_seed(3);
+  auto F0 = torch::randn({1, 5, 6, 7}, torch::kFloat64);
+  auto W = torch::randn({5, 5}, torch::kFloat64);  // a non-symmetric upstream gradient
+  auto direct = F0.detach().clone().set_requires_grad(true);
+  auto f = direct.reshape({5, -1});
+  auto G_direct = torch::mm(f, f.t()) / static_cast<double>(F0.numel());
+  (G_direct * W).sum().backward();
+  for (auto fmt : {at::MemoryFormat::Contiguous, at::MemoryFormat::ChannelsLast}) {
+    auto F = F0.detach().contiguous(fmt).set_requires_grad(true);
+    auto G = gram_matrix(F);
+    CHECK(torch::allclose(G, G_direct, 1e-12, 1e-14));
+    (G * W).sum().backward();
+    CHECK(torch::allclose(F.grad(), direct.grad(), 1e-12, 1e-14));
+  }
+}

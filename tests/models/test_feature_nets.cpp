@@ -2,6 +2,7 @@
 
 #include "models/feature_net.hpp"
 #include "models/fixed_filter_bank.hpp"
+#include "losses/gram_loss.hpp"
 #include "models/random_filter_net.hpp"
 #include "models/rasterizer.hpp"
 
@@ -47,6 +48,47 @@ TEST_CASE("RandomFilterNet options: no IN / no ReLU change the features", "[mode
   o.instance_norm = false;
   auto noin = RandomFilterNet(o).forward(x)[0];
   CHECK_FALSE(torch::allclose(base, noin));
+}
+
+TEST_CASE("RandomFilterNet fast CPU path equals the plain path", "[models][net]") {
+  // Channels-last activations, batch norm for one image's instance norm and the
+  // input-gradient-only convolution backward must not change what the network computes.
+  for (bool in : {true, false})
+    for (bool relu : {true, false}) {
+      INFO("instance_norm " << in << " relu " << relu);
+      RandomFilterNetOptions o;
+      o.channels = 12;
+      o.instance_norm = in;
+      o.relu = relu;
+      auto x = (torch::rand({1, 10, 24, 24}) * 3).set_requires_grad(true);
+      auto probe = [&](bool fast, torch::Tensor& grad) {
+        o.fast_cpu = fast;
+        RandomFilterNet net(o);
+        auto xi = x.detach().clone().set_requires_grad(true);
+        auto f = net.forward(xi);
+        torch::Tensor loss;
+        for (size_t l = 0; l < f.size(); ++l) {
+          auto w = torch::linspace(-1, 1, f[l].numel()).view(f[l].sizes());  // a generic upstream gradient
+          auto t = (f[l] * w).sum() + gram_matrix(f[l]).pow(2).sum();
+          loss = loss.defined() ? loss + t : t;
+        }
+        loss.backward();
+        grad = xi.grad();
+        return f;
+      };
+      torch::Tensor g_fast, g_plain;
+      auto fast = probe(true, g_fast), plain = probe(false, g_plain);
+      REQUIRE(fast.size() == plain.size());
+      CHECK(fast[0].is_contiguous(at::MemoryFormat::ChannelsLast));
+      for (size_t l = 0; l < fast.size(); ++l) {
+        CHECK(fast[l].sizes() == plain[l].sizes());
+        CHECK(torch::allclose(fast[l], plain[l], 1e-4, 1e-5));
+        CHECK(torch::allclose(gram_matrix(fast[l]), gram_matrix(plain[l]), 1e-4, 1e-7));
+      }
+      const double scale = g_plain.abs().max().item<double>();
+      CHECK(scale > 0);
+      CHECK((g_fast - g_plain).abs().max().item<double>() < 1e-4 * scale);
+    }
 }
 
 TEST_CASE("Feature nets from the registry: fixed banks and identity", "[models][net]") {

@@ -98,6 +98,9 @@ app::RunFn setup(CLI::App& app) {
     PointSet start = init->initialize(ex.size() * u * u, 0, seed);
     auto ex_pts = positions_tensor(ex);
     auto moving = positions_tensor(start).set_requires_grad(true);
+    // Map weights (disks, multi-attribute scenes): the output carries the exemplar's values u^2 times.
+    const auto ex_w = s.attr_cols.empty() ? torch::Tensor() : normalized_attributes(ex, s.attr_cols);
+    const auto out_w = ex_w.defined() ? ex_w.repeat({u * u, 1}) : torch::Tensor();
     const double sigma = s.sigmas.front();
     std::mt19937_64 rng(seed);
     json out = {{"exemplar", r["exemplar"]}, {"points", ex.size()}, {"output_points", start.size()},
@@ -108,16 +111,16 @@ app::RunFn setup(CLI::App& app) {
     std::vector<double> setup_each;
     {
       auto a = Clock::now();
-      pipe.set_targets(ex_pts, {}, sigma);
+      pipe.set_targets(ex_pts, ex_w, sigma);
       setup_first = std::chrono::duration<double>(Clock::now() - a).count() +
                     std::chrono::duration<double>(a - settings_t0).count();
       if (!o->skip_setup)
         for (double sg : s.sigmas) {
           auto b = Clock::now();
-          pipe.set_targets(ex_pts, {}, sg);
+          pipe.set_targets(ex_pts, ex_w, sg);
           setup_each.push_back(std::chrono::duration<double>(Clock::now() - b).count());
         }
-      pipe.set_targets(ex_pts, {}, sigma);
+      pipe.set_targets(ex_pts, ex_w, sigma);
     }
 
     // --- phases of one iteration -----------------------------------------------------
@@ -134,11 +137,11 @@ app::RunFn setup(CLI::App& app) {
     torch::Tensor maps;
     phases.push_back({"Gabor maps forward", time_it(o->reps, [&] {
                         torch::NoGradGuard ng;
-                        maps = pipe.output_maps(pts, {}, sigma, jit);
+                        maps = pipe.output_maps(pts, out_w, sigma, jit);
                       })});
     phases.push_back({"Gabor maps backward", time_it(o->reps, [&] {
                         auto p2 = pts.clone().set_requires_grad(true);
-                        auto m = pipe.output_maps(p2, {}, sigma, jit);
+                        auto m = pipe.output_maps(p2, out_w, sigma, jit);
                         auto probe = torch::ones_like(m);
                         // forward is inside: subtract it afterwards
                         m.backward(probe);
@@ -177,7 +180,7 @@ app::RunFn setup(CLI::App& app) {
     auto optimizer_spec = p["optimizer"];
     Timing full = time_it(o->reps, [&] {
       if (moving.grad().defined()) moving.grad().zero_();
-      auto m = pipe.output_maps(wrap_unit(moving), {}, sigma, pipe.draw_jitter(rng));
+      auto m = pipe.output_maps(wrap_unit(moving), out_w, sigma, pipe.draw_jitter(rng));
       pipe.loss(pipe.features(m)).backward();
     });
 
@@ -192,7 +195,7 @@ app::RunFn setup(CLI::App& app) {
       torch::conv2d(conv_x, conv_w, {}, 1, 3);
     });
     const double conv_gflops = 2.0 * 120 * 120 * 49 * double(R) * R / conv.min() / 1e9;
-    const double flops = s.feature_net.value("type", "") == "random" ? net_flops(10, C, ks, depth, R) : 0;
+    const double flops = s.feature_net.value("type", "") == "random" ? net_flops(static_cast<int>(maps.size(1)), C, ks, depth, R) : 0;
     const double floor_s = flops / (conv_gflops * 1e9);
 
     // --- print ---------------------------------------------------------------------------
