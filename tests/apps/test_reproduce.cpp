@@ -308,6 +308,25 @@ TEST_CASE("a failing reproduction writes nothing and keeps the previous report",
   CHECK_FALSE(fs::exists(d / "rep_set.partial"));
 }
 
+TEST_CASE("--panels runs only the named panels and says which were left out", "[apps][reproduce]") {
+  QuietLogs quiet;
+  const fs::path d = scratch("panels");
+  auto c = parse(minimal(json::array({lines_panel("a"), lines_panel("b")})));
+  ReproduceOptions o;
+  o.quick = true;
+  o.out = (d / "rep").string();
+  o.panels = {"b"};
+  auto r = run_reproduction(c, o);
+  REQUIRE(r.panels.size() == 1);
+  CHECK(r.panels[0].name == "b");
+  CHECK_FALSE(fs::exists(d / "rep/panels/a"));
+  CHECK(slurp(d / "rep/index.html").find("panel(s) a not run") != std::string::npos);
+  o.panels = {"z"};
+  o.out = (d / "rep_bad").string();
+  CHECK_THROWS_WITH(run_reproduction(c, o), Catch::Contains("'z'") && Catch::Contains("a, b"));
+  CHECK_FALSE(fs::exists(d / "rep_bad"));
+}
+
 TEST_CASE("report cells and config lookup", "[apps][reproduce]") {
   CHECK(format_cell(json(0.123456)) == "0.1235");
   CHECK(format_cell(json(3)) == "3");

@@ -14,7 +14,7 @@
 namespace {
 
 struct Opts {
-  std::vector<std::string> names, sets, reuse;
+  std::vector<std::string> names, sets, reuse, panels;
   std::string out;
   bool quick = false, list = false, check = false;
 };
@@ -28,6 +28,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_option("-o,--out", o->out, "report directory (default reports/NAME)");
   app.add_option("--reuse", o->reuse,
                  "reuse finished run directories (DIR or its subdirectories, e.g. runs/) whose resolved config equals a column's");
+  app.add_option("--panels", o->panels, "run only these panels (the report says which were left out)");
   app.add_option("--set", o->sets, "override a key of every panel's run config: key.path=value (method.* keys: ours only)");
   return [o]() {
     using namespace ppsynth;
@@ -60,6 +61,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     ro.out = o->out;
     ro.overrides = o->sets;
     ro.reuse = o->reuse;
+    ro.panels = o->panels;
     auto res = app::run_reproduction(config, ro);
     std::cout << res.dir << "/index.html\n";
     return 0;

@@ -1,5 +1,6 @@
 #include "apps/ppsynth/synthesis/reproduce_runner.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -238,7 +239,32 @@ int total_iterations(const json& stats) {
   return stats.value("iterations", 0);
 }
 
-ReproduceResult run_reproduction(const ReproduceConfig& c, const ReproduceOptions& o) {
+namespace {
+
+// The config restricted to the panels named in `names` (all when empty); an unknown name is
+// an error listing the panels there are.
+ReproduceConfig select_panels(const ReproduceConfig& c, const std::vector<std::string>& names) {
+  if (names.empty()) return c;
+  ReproduceConfig r = c;
+  r.panels.clear();
+  std::string all, left_out;
+  for (const auto& p : c.panels) all += (all.empty() ? "" : ", ") + p.name;
+  for (const auto& n : names)
+    if (std::none_of(c.panels.begin(), c.panels.end(), [&](const PanelSpec& p) { return p.name == n; }))
+      throw InputError((c.source.empty() ? c.name : c.source) + ": --panels: no panel '" + n + "' (panels: " + all + ")");
+  for (const auto& p : c.panels) {
+    if (std::find(names.begin(), names.end(), p.name) != names.end()) r.panels.push_back(p);
+    else left_out += (left_out.empty() ? "" : ", ") + p.name;
+  }
+  r.description += (r.description.empty() ? "" : " ") + std::string("Partial report: panel(s) ") + left_out +
+                   " not run (--panels).";
+  return r;
+}
+
+}  // namespace
+
+ReproduceResult run_reproduction(const ReproduceConfig& config, const ReproduceOptions& o) {
+  const ReproduceConfig c = select_panels(config, o.panels);
   const auto t0 = Clock::now();
   try {
     check_reproduce_runs(c, o.overrides);  // a bad --set fails before anything is written

@@ -31,6 +31,8 @@ struct ReproduceOptions {
   // Finished run directories to reuse (find_matching_run): a synthesised column whose resolved
   // config equals one of theirs is copied into the report instead of being run again.
   std::vector<std::string> reuse;
+  // Only these panels (by name; all when empty). The report says which ones were left out.
+  std::vector<std::string> panels;
 };
 
 struct ColumnResult {
