@@ -17,10 +17,6 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 
-#ifndef PPSYNTH_REVISION
-#define PPSYNTH_REVISION "unknown"
-#endif
-
 namespace ppsynth::app {
 
 std::map<std::string, CommandEntry>& commands() {

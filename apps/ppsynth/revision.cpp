@@ -1,5 +1,7 @@
-// The project revision (git describe at configure time), named in every run directory and report.
+// The project revision (git describe, refreshed at every build by scripts/write_revision.cmake),
+// named in every run directory and report.
 #include "apps/ppsynth/command.hpp"
+#include "ppsynth_revision.h"
 
 namespace ppsynth::app {
 const char* revision() { return PPSYNTH_REVISION; }
