@@ -37,13 +37,13 @@ constexpr double kTwoPi = 6.283185307179586;
 
 }  // namespace
 
-torch::Tensor grid_knn(const torch::Tensor& points, const torch::Tensor& grid, int k) {
+torch::Tensor grid_knn(const torch::Tensor& points, const torch::Tensor& grid, int k, bool periodic) {
   auto p = points.detach().to(torch::kFloat64).contiguous();
   const int64_t n = p.size(0);
   std::vector<Vec2> pts(n);
   auto pa = p.accessor<double, 2>();
   for (int64_t i = 0; i < n; ++i) pts[i] = Vec2{pa[i][0], pa[i][1]};
-  NeighborIndex index(pts);
+  NeighborIndex index(pts, Domain{}, periodic);
   auto g = grid.detach().to(torch::kFloat64).contiguous();
   const int64_t G = g.size(0);
   auto idx = torch::empty({G, k}, torch::kInt64);
@@ -53,6 +53,12 @@ torch::Tensor grid_knn(const torch::Tensor& points, const torch::Tensor& grid, i
     std::vector<size_t> nb(k);
     std::vector<double> d2(k);
     for (int64_t q = b; q < e; ++q) {
+      if (periodic) {
+        // Nearest image of each point (allocating query; the plane path below is the hot one).
+        auto found = index.knn(Vec2{ga[q][0], ga[q][1]}, static_cast<size_t>(k));
+        for (int j = 0; j < k; ++j) ia[q][j] = static_cast<int64_t>(found[j]);
+        continue;
+      }
       index.knn_into(Vec2{ga[q][0], ga[q][1]}, static_cast<size_t>(k), nb.data(), d2.data());
       for (int j = 0; j < k; ++j) ia[q][j] = static_cast<int64_t>(nb[j]);
     }
@@ -85,17 +91,46 @@ struct Term {
   T cos_t[9], sin_t[9];
 };
 
-// Point i, grid position g: d = p_i - g; e = exp(-|d|^2 / 2 s^2); cos/sin(2 pi nu . d) for
-// the 9 frequencies from cos/sin of the x and y parts.
+// Periodic maps (unit torus): d is the minimum image of p_i - g, d = (p_i - g) - s with an
+// integer shift s per axis; the phase identities then need a rotation by -a s, whose cos and
+// sin for s = +-1 are precomputed here (s is 0 except for terms across the wrap).
+template <typename T>
+struct Wrap {
+  bool on = false;
+  T ca = 1, sa = 0;  // cos(a), sin(a), a = 2 pi f
+  Wrap(bool periodic, T a) : on(periodic), ca(std::cos(a)), sa(std::sin(a)) {}
+  // Rotates (c, s) = (cos th, sin th) to (cos(th - a n), sin(th - a n)) for n in {-1, 0, 1}.
+  void rotate(T& c, T& s, T n) const {
+    if (n == T(0)) return;
+    const T cn = ca, sn = n * sa;
+    const T c2 = c * cn + s * sn, s2 = s * cn - c * sn;
+    c = c2;
+    s = s2;
+  }
+};
+
+// Point i, grid position g: d = p_i - g (minimum image when periodic); e = exp(-|d|^2 / 2 s^2);
+// cos/sin(2 pi nu . d) for the 9 frequencies from cos/sin of the x and y parts.
 template <typename T>
 inline void eval_term(T dx, T dy, T inv2s2, const Phases<T>& P, int64_t i, const Phases<T>& G, int64_t g,
-                      Term<T>& t) {
+                      const Wrap<T>& wrap, Term<T>& t) {
+  T nx = 0, ny = 0;
+  if (wrap.on) {
+    nx = std::nearbyint(dx);
+    ny = std::nearbyint(dy);
+    dx -= nx;
+    dy -= ny;
+  }
   t.dx = dx;
   t.dy = dy;
   t.e = std::exp(-(dx * dx + dy * dy) * inv2s2);
   // cos(a(p - g)) = cos ap cos ag + sin ap sin ag ; sin(a(p - g)) = sin ap cos ag - cos ap sin ag
-  const T cx = P.cx[i] * G.cx[g] + P.sx[i] * G.sx[g], sx = P.sx[i] * G.cx[g] - P.cx[i] * G.sx[g];
-  const T cy = P.cy[i] * G.cy[g] + P.sy[i] * G.sy[g], sy = P.sy[i] * G.cy[g] - P.cy[i] * G.sy[g];
+  T cx = P.cx[i] * G.cx[g] + P.sx[i] * G.sx[g], sx = P.sx[i] * G.cx[g] - P.cx[i] * G.sx[g];
+  T cy = P.cy[i] * G.cy[g] + P.sy[i] * G.sy[g], sy = P.sy[i] * G.cy[g] - P.cy[i] * G.sy[g];
+  if (wrap.on) {
+    wrap.rotate(cx, sx, nx);
+    wrap.rotate(cy, sy, ny);
+  }
   for (int f = 0; f < 9; ++f) {
     const int nx = f % 3 - 1, ny = f / 3 - 1;
     const T Cx = nx == 0 ? T(1) : cx, Sx = T(nx) * sx;
@@ -109,6 +144,7 @@ struct MapsParams {
   double sigma = 0.05;     // output-grid sigma (already divided by u)
   double frequency = 1.5;  // f = 1.5 u
   int k = 30;
+  bool periodic = false;
   std::vector<GaborChannel> channels;
 
   // Round trip through the autograd context (IValues), so the graph owns its parameters.
@@ -118,6 +154,7 @@ struct MapsParams {
     ctx->saved_data["sigma"] = sigma;
     ctx->saved_data["frequency"] = frequency;
     ctx->saved_data["k"] = static_cast<int64_t>(k);
+    ctx->saved_data["periodic"] = periodic;
     ctx->saved_data["channels"] = codes;
   }
   static MapsParams load(torch::autograd::AutogradContext* ctx) {
@@ -125,6 +162,7 @@ struct MapsParams {
     mp.sigma = ctx->saved_data["sigma"].toDouble();
     mp.frequency = ctx->saved_data["frequency"].toDouble();
     mp.k = static_cast<int>(ctx->saved_data["k"].toInt());
+    mp.periodic = ctx->saved_data["periodic"].toBool();
     for (int64_t code : ctx->saved_data["channels"].toIntVector())
       mp.channels.push_back({static_cast<int>(code / 1000) - 1, static_cast<int>(code % 1000) - 1});
     return mp;
@@ -146,12 +184,13 @@ void maps_forward(const torch::Tensor& P, const torch::Tensor& W, const torch::T
   const T invk = T(1) / T(mp.k);
   const int C = static_cast<int>(mp.channels.size());
   const Phases<T> PP(P.data_ptr<T>(), P.size(0), w2pi), GP(grid.data_ptr<T>(), grid.size(0), w2pi);
+  const Wrap<T> wrap(mp.periodic, w2pi);
   at::parallel_for(0, grid.size(0), 512, [&](int64_t b, int64_t e) {
     Term<T> t;
     for (int64_t g = b; g < e; ++g) {
       for (int j = 0; j < mp.k; ++j) {
         const int64_t i = ia[g][j];
-        eval_term<T>(pa[i][0] - ga[g][0], pa[i][1] - ga[g][1], inv2s2, PP, i, GP, g, t);
+        eval_term<T>(pa[i][0] - ga[g][0], pa[i][1] - ga[g][1], inv2s2, PP, i, GP, g, wrap, t);
         for (int c = 0; c < C; ++c) {
           const auto& ch = mp.channels[c];
           T v = ch.freq < 0 ? t.e : t.e * t.cos_t[ch.freq];
@@ -184,13 +223,14 @@ void maps_backward(const torch::Tensor& P, const torch::Tensor& W, const torch::
   const int nthreads = at::get_num_threads();
   std::vector<std::vector<T>> acc(nthreads, std::vector<T>(2 * N, T(0)));
   const Phases<T> PP(P.data_ptr<T>(), N, w2pi), GP(grid.data_ptr<T>(), grid.size(0), w2pi);
+  const Wrap<T> wrap(mp.periodic, w2pi);
   at::parallel_for(0, grid.size(0), 512, [&](int64_t b, int64_t e) {
     auto& my = acc[at::get_thread_num()];
     Term<T> t;
     for (int64_t g = b; g < e; ++g) {
       for (int j = 0; j < mp.k; ++j) {
         const int64_t i = ia[g][j];
-        eval_term<T>(pa[i][0] - ga[g][0], pa[i][1] - ga[g][1], inv2s2, PP, i, GP, g, t);
+        eval_term<T>(pa[i][0] - ga[g][0], pa[i][1] - ga[g][1], inv2s2, PP, i, GP, g, wrap, t);
         T gx = 0, gy = 0;
         for (int c = 0; c < C; ++c) {
           const auto& ch = mp.channels[c];
@@ -276,10 +316,11 @@ torch::Tensor GaborFeatureMapsImpl::forward(const torch::Tensor& points, const t
   mp->sigma = sigma / opt_.upscale;
   mp->frequency = opt_.base_frequency * opt_.upscale;
   mp->k = static_cast<int>(std::min<int64_t>(opt_.k, n));
+  mp->periodic = opt_.periodic;
   mp->channels = gabor_channels(A, opt_.spatial_only);
   torch::Tensor grid = grid_.to(points.scalar_type());
   if (jitter.defined()) grid = grid + jitter.to(points.scalar_type());
-  auto idx = grid_knn(points, grid, mp->k);
+  auto idx = grid_knn(points, grid, mp->k, opt_.periodic);
   auto w = A > 0 ? weights : torch::empty({0, 0}, points.options());
   auto out = GaborMapsFunction::apply(points, w, grid, idx, *mp);
   return out.view({1, static_cast<int64_t>(mp->channels.size()), opt_.res, opt_.res});

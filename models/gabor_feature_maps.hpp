@@ -16,7 +16,11 @@
 // Cost: k-NN O(res^2 (log N + k)); forward and backward O(res^2 k C), independent of N
 // beyond the search. Sigma is given in exemplar units and divided by u (the output is the
 // exemplar zoomed out by u). The k neighbours are searched in the plane (not on the torus),
-// as in the published code.
+// as in the published code, unless `periodic`: then the domain is the unit torus, each grid
+// position sees the nearest image of every point and p - g is the minimum image. The
+// optimiser already wraps positions toroidally; periodic OUTPUT maps make the maps agree
+// with that, so a point near x = 1 is seen by grid positions near x = 0 and the border
+// stops being a place where points lose half their influence (where they park otherwise).
 #include <torch/torch.h>
 
 #include <vector>
@@ -29,6 +33,7 @@ struct GaborMapsOptions {
   int k = 30;              // neighbours per grid position
   double base_frequency = 1.5;
   bool spatial_only = false;
+  bool periodic = false;   // unit torus: nearest images, minimum-image offsets
 };
 
 // One output channel: which frequency (-1 = spatial map) and which weight column (-1 = none).
@@ -56,9 +61,9 @@ class GaborFeatureMapsImpl : public torch::nn::Module {
 };
 TORCH_MODULE(GaborFeatureMaps);
 
-// The k nearest points (plane distance, nanoflann) of every grid position: res^2 x k int64.
-// Part of forward(); public for the benchmark.
-torch::Tensor grid_knn(const torch::Tensor& points, const torch::Tensor& grid, int k);
+// The k nearest points (plane or toroidal distance, nanoflann) of every grid position:
+// res^2 x k int64. Part of forward(); public for the benchmark.
+torch::Tensor grid_knn(const torch::Tensor& points, const torch::Tensor& grid, int k, bool periodic = false);
 
 // Reference evaluation of Eq. 5 with plain tensor ops (every point a neighbour when k >= N).
 // For tests only: O(res^2 N C) memory.

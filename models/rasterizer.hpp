@@ -24,6 +24,7 @@ struct RasterizerArgs {
   int res = 128;        // grid positions per axis of THIS raster (output: u * exemplar res)
   double upscale = 1;   // u
   int k = 30;           // neighbours (Gabor)
+  bool output = false;  // the raster of the synthesised points (not the exemplar's)
 };
 
 using RasterizerRegistry = Registry<Rasterizer, RasterizerArgs>;

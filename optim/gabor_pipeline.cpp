@@ -114,7 +114,7 @@ GaborPipeline::GaborPipeline(const json& p, const GaborSettings& s, uint64_t see
 }
 
 void GaborPipeline::build_rasterizers() {
-  RasterizerArgs ex_args{s_.res, 1.0, s_.k}, out_args{s_.upscale * s_.res, static_cast<double>(s_.upscale), s_.k};
+  RasterizerArgs ex_args{s_.res, 1.0, s_.k}, out_args{s_.upscale * s_.res, static_cast<double>(s_.upscale), s_.k, true};
   ex_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", ex_args, &resolved_rast_);
   out_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", out_args);
 }

@@ -3,12 +3,34 @@
 #include "models/feature_grid.hpp"
 #include "models/gabor_feature_maps.hpp"
 
+#include <functional>
+
 using namespace ppsynth;
 
 namespace {
 torch::Tensor random_points(int n, uint64_t seed) {
   auto g = at::detail::createCPUGenerator(seed);
   return at::rand({n, 2}, g, torch::kFloat64);
+}
+
+// Largest |analytic - central difference| over all coordinates of pts, and largest |gradient|.
+std::pair<double, double> gradient_vs_finite_differences(const std::function<torch::Tensor(const torch::Tensor&)>& f,
+                                                        const torch::Tensor& pts) {
+  auto p = pts.clone().set_requires_grad(true);
+  f(p).backward();
+  auto analytic = p.grad().clone();
+  const double h = 1e-6;
+  double max_err = 0, max_grad = 0;
+  for (int64_t i = 0; i < pts.size(0); ++i)
+    for (int c = 0; c < 2; ++c) {
+      auto pp = pts.clone(), pm = pts.clone();
+      pp[i][c] += h;
+      pm[i][c] -= h;
+      double fd = (f(pp).item<double>() - f(pm).item<double>()) / (2 * h);
+      max_err = std::max(max_err, std::abs(fd - analytic[i][c].item<double>()));
+      max_grad = std::max(max_grad, std::abs(fd));
+    }
+  return {max_err, max_grad};
 }
 }  // namespace
 
@@ -49,20 +71,7 @@ TEST_CASE("Gabor maps gradient matches finite differences (double)", "[models][g
     auto wa = A == 0 ? torch::Tensor() : w.narrow(1, 0, A);
     auto probe = at::randn({1, maps->channels(A), res, res}, g, torch::kFloat64);
     auto f = [&](const torch::Tensor& p) { return (maps->forward(p, wa, 0.2, {}) * probe).sum(); };
-    auto p = pts.clone().set_requires_grad(true);
-    f(p).backward();
-    auto analytic = p.grad().clone();
-    const double h = 1e-6;
-    double max_err = 0, max_grad = 0;
-    for (int i = 0; i < n; ++i)
-      for (int c = 0; c < 2; ++c) {
-        auto pp = pts.clone(), pm = pts.clone();
-        pp[i][c] += h;
-        pm[i][c] -= h;
-        double fd = (f(pp).item<double>() - f(pm).item<double>()) / (2 * h);
-        max_err = std::max(max_err, std::abs(fd - analytic[i][c].item<double>()));
-        max_grad = std::max(max_grad, std::abs(fd));
-      }
+    auto [max_err, max_grad] = gradient_vs_finite_differences(f, pts);
     INFO("A=" << A << " max |grad| " << max_grad);
     CHECK(max_grad > 1e-3);
     CHECK(max_err < 1e-6 * std::max(1.0, max_grad));
@@ -99,4 +108,55 @@ TEST_CASE("Gabor maps: shapes, channel counts, zoom-out grid", "[models][gabor]"
   auto am = m1.argmax().item<int64_t>();
   CHECK(am % 33 == static_cast<int64_t>(std::lround((0.7 - 1.0 / 34) / (1 - 2.0 / 34) * 32)));  // column = x
   CHECK(am / 33 == static_cast<int64_t>(std::lround((0.2 - 1.0 / 34) / (1 - 2.0 / 34) * 32)));  // row = y
+}
+
+TEST_CASE("Periodic Gabor maps see the nearest image of each point across the border", "[models][gabor]") {
+  // A point near the corner (0.995, 0.985): on the torus its images at x - 1 and y - 1 are the
+  // ones grid positions near x = 0 / y = 0 see. For a small sigma every grid position sees at
+  // most one image with non-negligible weight, so the periodic map of the one point (k = 1)
+  // equals 4 x the plane map of its four images (k = 4). u = 1 (f = 1.5, not an integer) so
+  // the phase of the wrapped terms must be rotated, not merely re-used.
+  const double x = 0.995, y = 0.985, sigma = 0.04;
+  auto one = torch::tensor({{x, y}}, torch::kFloat64);
+  auto images = torch::tensor({{x, y}, {x - 1, y}, {x, y - 1}, {x - 1, y - 1}}, torch::kFloat64);
+  for (double u : {1.0, 2.0}) {
+    GaborMapsOptions op;
+    op.res = 24;
+    op.upscale = u;
+    op.k = 1;
+    op.periodic = true;
+    GaborMapsOptions oq = op;
+    oq.k = 4;
+    oq.periodic = false;
+    auto periodic = GaborFeatureMaps(op)->forward(one, {}, sigma, {});
+    auto plane = GaborFeatureMaps(oq)->forward(images, {}, sigma, {});
+    INFO("u = " << u);
+    CHECK(torch::allclose(periodic, 4 * plane, 1e-9, 1e-9));
+    // Grid positions near x = 0 do see the point: not a vacuous comparison.
+    CHECK(periodic[0][0][0][0].item<double>() > 1e-3);
+    // The plane maps of the point alone do not reach the opposite corner.
+    auto alone = GaborFeatureMaps(oq)->forward(one, {}, sigma, {});
+    CHECK(alone[0][0][0][0].item<double>() < 1e-6);
+  }
+}
+
+TEST_CASE("Periodic Gabor maps gradient matches finite differences near the border", "[models][gabor]") {
+  // Points within a sigma of the border, so terms across the wrap carry gradient.
+  auto pts = torch::tensor({{0.01, 0.5}, {0.98, 0.52}, {0.5, 0.995}, {0.47, 0.02}, {0.985, 0.015}}, torch::kFloat64);
+  const int n = 5, res = 10;
+  auto g = at::detail::createCPUGenerator(6);
+  for (double u : {1.0, 2.0}) {
+    GaborMapsOptions o;
+    o.res = res;
+    o.upscale = u;
+    o.k = n;
+    o.periodic = true;
+    GaborFeatureMaps maps(o);
+    auto probe = at::randn({1, maps->channels(0), res, res}, g, torch::kFloat64);
+    auto f = [&](const torch::Tensor& p) { return (maps->forward(p, {}, 0.15, {}) * probe).sum(); };
+    auto [max_err, max_grad] = gradient_vs_finite_differences(f, pts);
+    INFO("u = " << u << " max |grad| " << max_grad);
+    CHECK(max_grad > 1e-3);
+    CHECK(max_err < 1e-6 * std::max(1.0, max_grad));
+  }
 }
