@@ -2,9 +2,12 @@
 // The evaluation suite in one call: what `ppsynth eval` prints and reports consume.
 // evaluate(exemplar, output) returns JSON:
 //   "exemplar", "output": { "count", "class_counts", "d_min", "d_min_square", "mean_nn",
+//                           "border_fraction",
 //                           "relative_radius", "relative_radius_per_class" }   (d_min/mean_nn
 //                           toroidal, d_min_square in the plain square, domain units;
-//                           relative radius per nearest_neighbor.hpp)
+//                           relative radius per nearest_neighbor.hpp; "border_fraction":
+//                           share of points within 1 % of the domain size of the border,
+//                           3.96 % for uniform points; parked points raise it)
 //   "upscale": sqrt(output count / exemplar count) (the per-axis u of method.md; ~2)
 //   "all":     quadrant metrics of all classes together { "pcf_mse", "wasserstein",
 //              "chamfer", "pcf": { "r", "exemplar", "output" } }   (quadrant.hpp)

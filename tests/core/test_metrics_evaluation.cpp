@@ -78,4 +78,7 @@ TEST_CASE("evaluate reports the closest pair on the torus and in the square", "[
   CHECK(r["output"]["d_min"].get<double>() == Approx(std::sqrt(2.0) * 0.002).margin(1e-9));
   CHECK(r["output"]["d_min_square"].get<double>() == Approx(std::sqrt(2.0) * 0.499).margin(1e-9));
   CHECK(format_evaluation(r).find("d_min_square") != std::string::npos);
+  // Two of the three points lie within 1 % of the border.
+  CHECK(r["output"]["border_fraction"].get<double>() == Approx(2.0 / 3));
+  CHECK(format_evaluation(r).find("border_fraction") != std::string::npos);
 }
