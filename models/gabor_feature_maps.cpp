@@ -114,12 +114,12 @@ struct Wrap {
 template <typename T>
 inline void eval_term(T dx, T dy, T inv2s2, const Phases<T>& P, int64_t i, const Phases<T>& G, int64_t g,
                       const Wrap<T>& wrap, Term<T>& t) {
-  T nx = 0, ny = 0;
+  T wx = 0, wy = 0;  // wrap shifts: non-zero only for periodic terms across the border
   if (wrap.on) {
-    nx = std::nearbyint(dx);
-    ny = std::nearbyint(dy);
-    dx -= nx;
-    dy -= ny;
+    wx = std::nearbyint(dx);
+    wy = std::nearbyint(dy);
+    dx -= wx;
+    dy -= wy;
   }
   t.dx = dx;
   t.dy = dy;
@@ -127,10 +127,8 @@ inline void eval_term(T dx, T dy, T inv2s2, const Phases<T>& P, int64_t i, const
   // cos(a(p - g)) = cos ap cos ag + sin ap sin ag ; sin(a(p - g)) = sin ap cos ag - cos ap sin ag
   T cx = P.cx[i] * G.cx[g] + P.sx[i] * G.sx[g], sx = P.sx[i] * G.cx[g] - P.cx[i] * G.sx[g];
   T cy = P.cy[i] * G.cy[g] + P.sy[i] * G.sy[g], sy = P.sy[i] * G.cy[g] - P.cy[i] * G.sy[g];
-  if (wrap.on) {
-    wrap.rotate(cx, sx, nx);
-    wrap.rotate(cy, sy, ny);
-  }
+  wrap.rotate(cx, sx, wx);  // no-ops for a zero shift
+  wrap.rotate(cy, sy, wy);
   for (int f = 0; f < 9; ++f) {
     const int nx = f % 3 - 1, ny = f / 3 - 1;
     const T Cx = nx == 0 ? T(1) : cx, Sx = T(nx) * sx;
