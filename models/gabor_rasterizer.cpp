@@ -25,8 +25,10 @@ std::unique_ptr<Rasterizer> make(const json& p, const RasterizerArgs& a, bool sp
   o.k = a.k;
   o.base_frequency = get_number(p, "base_frequency", "rasterizer");
   o.spatial_only = spatial_only;
-  // The exemplar is not tileable, so only the output's maps may be periodic.
-  o.periodic = a.output && get_bool(p, "periodic_output", "rasterizer");
+  // Each raster chooses on its own: periodic output maps alone remove border parking but
+  // ask the torus to copy the exemplar's border fade (clumps); periodic exemplar maps too
+  // treat the exemplar as a tile, so both sides have no border (docs/method.md "Border parking").
+  o.periodic = get_bool(p, a.output ? "periodic_output" : "periodic_exemplar", "rasterizer");
   if (o.base_frequency < 0) throw config_error("rasterizer.base_frequency", "must be >= 0");
   return std::make_unique<GaborRasterizer>(o);
 }
@@ -34,10 +36,10 @@ std::unique_ptr<Rasterizer> make(const json& p, const RasterizerArgs& a, bool sp
 }  // namespace
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::RasterizerRegistry, "gabor", (ppsynth::json{{"base_frequency", 1.5}, {"periodic_output", false}}),
+PPSYNTH_REGISTER(ppsynth::RasterizerRegistry, "gabor", (ppsynth::json{{"base_frequency", 1.5}, {"periodic_output", false}, {"periodic_exemplar", false}}),
                  "Gabor maps: 1 spatial + 9 frequency maps per attribute (paper Eq. 5)",
                  [](const ppsynth::json& p, ppsynth::RasterizerArgs a) { return ppsynth::make(p, a, false); })
-PPSYNTH_REGISTER(ppsynth::RasterizerRegistry, "spatial", (ppsynth::json{{"base_frequency", 1.5}, {"periodic_output", false}}),
+PPSYNTH_REGISTER(ppsynth::RasterizerRegistry, "spatial", (ppsynth::json{{"base_frequency", 1.5}, {"periodic_output", false}, {"periodic_exemplar", false}}),
                  "spatial maps only (gamma = 0; Fig. 11, irregular-convolution features)",
                  [](const ppsynth::json& p, ppsynth::RasterizerArgs a) { return ppsynth::make(p, a, true); })
 PPSYNTH_DEFAULTS_KIND("rasterizer", ppsynth::RasterizerRegistry)

@@ -209,6 +209,8 @@ TEST_CASE("a reproduction writes a report whose numbers match an independent eva
   CHECK(cmp.find("lines (paper)") != std::string::npos);
   const std::string rr = slurp(d / "rep/relative_radius.csv");
   CHECK(rr.find("0.7300") != std::string::npos);
+  const std::string rt = slurp(d / "rep/runtime.csv");
+  CHECK(rt.find("s per iteration (ours)") != std::string::npos);
 
   json rep = json::parse(slurp(d / "rep/report.json"));
   CHECK(rep["quick"] == true);

@@ -134,3 +134,20 @@ TEST_CASE("RandomFilterNet in bfloat16 stays close to float32", "[models][net]")
   }
   CHECK_THROWS_WITH(reg.create(json{{"type", "random"}, {"precision", "half"}}, "feature_net", 10, 5), Catch::Contains("precision"));
 }
+
+TEST_CASE("Gabor rasterizer: periodic_exemplar and periodic_output reach their own raster", "[models][gabor]") {
+  // A point near x = 1: a periodic raster sees it at x = 0 too, a plane raster does not.
+  auto p = torch::tensor({{0.99, 0.5}}, torch::kFloat64);
+  auto left_column = [&](bool exemplar_periodic, bool output_periodic, bool output) {
+    json cfg{{"type", "gabor"}, {"periodic_exemplar", exemplar_periodic}, {"periodic_output", output_periodic}};
+    RasterizerArgs a{16, 1, 1, output};
+    auto r = RasterizerRegistry::instance().create(cfg, "rasterizer", a);
+    return r->forward(p, {}, 0.05, {})[0][0].select(1, 0).sum().item<double>();
+  };
+  const double plane = left_column(false, false, false);
+  CHECK(plane < 1e-6);
+  CHECK(left_column(true, false, false) > 1e-2);  // the exemplar's raster
+  CHECK(left_column(false, true, false) == Approx(plane).margin(1e-12));  // only the output's flag
+  CHECK(left_column(false, true, true) > 1e-2);
+  CHECK(left_column(true, false, true) == Approx(plane).margin(1e-12));
+}

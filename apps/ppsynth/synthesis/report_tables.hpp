@@ -7,7 +7,7 @@
 //                    plus a "(paper)" row from the panel's "paper" numbers
 //   relative_radius  paper Table 1: rho of the exemplar and of every method's output, plus the
 //                    table's "paper" row
-//   runtime          paper Table 3: classes, points, attributes, iterations and wall time of
+//   runtime          paper Table 3: classes, points, attributes, iterations, wall time and s/iteration of
 //                    "ours" per panel, beside the panel's published numbers
 // Published numbers whose column we do not have (e.g. methods we did not implement) become
 // extra columns: nothing in a config's "paper" object is dropped. Numbers are printed with 4
