@@ -228,6 +228,7 @@ void plot_panels(const std::string& path, const std::vector<std::pair<std::strin
   render::render_to_file(path, static_cast<int>(std::ceil(width)), static_cast<int>(std::ceil(height)), [&](cairo_t* cr) {
     for (int i = 0; i < n; ++i) {
       const auto& [title, ps] = panels[i];
+      if (title.empty() && ps.empty()) continue;  // a filler cell of a ragged grid: left blank
       const double cx = (i % cols) * cell_w + kMargin, cy = (i / cols) * cell_h;
       double fw, fh;
       frame_size(ps.domain(), side, fw, fh);

@@ -33,7 +33,8 @@ void plot_points(const std::string& path, const PointSet& ps, const PointStyle& 
 
 // Several point sets side by side, each with its title (e.g. exemplar | init | output),
 // wrapping after `columns` panels (0 = all in one row). Auto marker size is computed per
-// panel from its own N. One shared class legend below.
+// panel from its own N. One shared class legend below. An entry with an empty title and an
+// empty set is a blank cell (fills the last cells of a ragged grid: no frame, no "N = 0").
 void plot_panels(const std::string& path,
                  const std::vector<std::pair<std::string, PointSet>>& panels,
                  const PointStyle& style = {}, int panel_px = 400, int columns = 0);

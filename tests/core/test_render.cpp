@@ -244,3 +244,22 @@ TEST_CASE("ppsynth plot and plot-pcf write images; a bad extension fails cleanly
   CHECK_FALSE(fs::exists(dir / "d.png"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("a blank cell (empty title, empty set) of a panel grid draws nothing", "[render]") {
+  const auto dir = scratch_dir("blank");
+  const fs::path png = dir / "grid.png";
+  const int px = 200;
+  auto blank_half_is_white = [&](const std::string& title) {
+    plot_panels(png.string(), {{"a", random_two_class(20, 3)}, {title, PointSet()}}, PointStyle{}, px, 2);
+    cairo_surface_t* s = cairo_image_surface_create_from_png(png.string().c_str());
+    REQUIRE(cairo_surface_status(s) == CAIRO_STATUS_SUCCESS);
+    cairo_surface_flush(s);
+    bool white = true;  // the second cell, above the legend strip
+    for (int y = 0; y < px - 10 && white; ++y)
+      for (int x = px + 5; x < 2 * px - 5 && white; ++x) white = is_white(pixel(s, x, y));
+    cairo_surface_destroy(s);
+    return white;
+  };
+  CHECK(blank_half_is_white(""));
+  CHECK_FALSE(blank_half_is_white("empty output"));  // a titled empty set still gets its frame
+}
