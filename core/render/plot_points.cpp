@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 
 #include "core/error.hpp"
 #include "core/render/canvas.hpp"
@@ -148,20 +149,23 @@ void draw_points_in_frame(cairo_t* cr, const PointSet& ps, const PointStyle& st,
 // Legend entries for the classes present in any of the point sets (labels from the files).
 std::vector<LegendItem> class_legend(const std::vector<const PointSet*>& sets, const PointStyle& st,
                                      bool with_counts) {
-  std::map<int, int> label_of;  // class id -> file label
+  // class id (the colour) -> its file labels; panels of one figure may label the same id
+  // differently (a merged 1-class set "0" beside a 2-class file's "1000"): show them all.
+  std::map<int, std::set<int>> labels_of;
   std::map<int, size_t> count;
   bool disks = false;
   for (const PointSet* ps : sets) {
     disks = disks || uses_disks(*ps, st);
     for (size_t i = 0; i < ps->size(); ++i) {
-      label_of.emplace(ps->cls(i), ps->class_label(ps->cls(i)));
+      labels_of[ps->cls(i)].insert(ps->class_label(ps->cls(i)));
       ++count[ps->cls(i)];
     }
   }
   std::vector<LegendItem> items;
-  if (label_of.size() <= 1) return items;
-  for (auto [k, label] : label_of) {
-    std::string text = "class " + std::to_string(label);
+  if (labels_of.size() <= 1) return items;
+  for (const auto& [k, labels] : labels_of) {
+    std::string text = "class ";
+    for (int label : labels) text += (text.size() > 6 ? " / " : "") + std::to_string(label);
     if (with_counts) text += " (n=" + std::to_string(count[k]) + ")";
     items.push_back({text, class_color(k), disks ? Marker::Disk : Marker::Dot});
   }
