@@ -164,8 +164,11 @@ std::vector<LegendItem> class_legend(const std::vector<const PointSet*>& sets, c
   std::vector<LegendItem> items;
   if (labels_of.size() <= 1) return items;
   for (const auto& [k, labels] : labels_of) {
-    std::string text = "class ";
-    for (int label : labels) text += (text.size() > 6 ? " / " : "") + std::to_string(label);
+    std::string text = "class", sep = " ";
+    for (int label : labels) {
+      text += sep + std::to_string(label);
+      sep = " / ";
+    }
     if (with_counts) text += " (n=" + std::to_string(count[k]) + ")";
     items.push_back({text, class_color(k), disks ? Marker::Disk : Marker::Dot});
   }
