@@ -218,8 +218,12 @@ void plot_panels(const std::string& path, const std::vector<std::pair<std::strin
   const int cols = columns <= 0 ? n : std::min(columns, n);
   const int rows = (n + cols - 1) / cols;
 
+  // A blank cell (empty title, empty set) only holds a place in the grid: it is not drawn and
+  // takes no part in the legend or the colour range.
+  auto blank = [](const std::pair<std::string, PointSet>& p) { return p.first.empty() && p.second.empty(); };
   std::vector<const PointSet*> sets;
-  for (const auto& p : panels) sets.push_back(&p.second);
+  for (const auto& p : panels)
+    if (!blank(p)) sets.push_back(&p.second);
   const bool single = n == 1;
   const auto legend = class_legend(sets, style, single);
   const Range crange = color_range_of(sets, style);
@@ -234,8 +238,8 @@ void plot_panels(const std::string& path, const std::vector<std::pair<std::strin
 
   render::render_to_file(path, static_cast<int>(std::ceil(width)), static_cast<int>(std::ceil(height)), [&](cairo_t* cr) {
     for (int i = 0; i < n; ++i) {
+      if (blank(panels[i])) continue;
       const auto& [title, ps] = panels[i];
-      if (title.empty() && ps.empty()) continue;  // a filler cell of a ragged grid: left blank
       const double cx = (i % cols) * cell_w + kMargin, cy = (i / cols) * cell_h;
       double fw, fh;
       frame_size(ps.domain(), side, fw, fh);

@@ -262,4 +262,11 @@ TEST_CASE("a blank cell (empty title, empty set) of a panel grid draws nothing",
   };
   CHECK(blank_half_is_white(""));
   CHECK_FALSE(blank_half_is_white("empty output"));  // a titled empty set still gets its frame
+  // A blank cell has no attributes and is not asked for the colour attribute.
+  PointSet coloured;
+  coloured.add_attribute("depth");
+  coloured.add({0.5, 0.5}, 0, {1.0});
+  PointStyle by_depth;
+  by_depth.color_attribute = "depth";
+  CHECK_NOTHROW(plot_panels(png.string(), {{"a", coloured}, {"", PointSet()}}, by_depth, px, 2));
 }
