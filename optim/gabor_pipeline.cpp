@@ -30,6 +30,9 @@ json gabor_defaults() {
       {"class_order", json::array()},  // empty = file order
       {"map_attributes", nullptr},  // null or "auto": every non-constant attribute; or a list of names ([] = none)
       {"fresh_net_per_class", false},
+      // Not in the paper: weight of a per-class term for the second and later classes (the
+      // loss on the moving class's own maps vs the exemplar class's own); 0 = the paper.
+      {"class_own_weight", 0.0},
       // --quick: every knob that sets the cost, shrunk (tests and smoke runs).
       {"quick", {{"res", 24}, {"channels", 8}, {"max_iterations", 4}, {"num_sigmas", 2}}},
   };
@@ -88,6 +91,8 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, in
   s.k_per_stage = p["k_per_stage"].get<bool>();
   s.attr_cols = map_attribute_columns(exemplar, p["map_attributes"]);
   s.jitter = p["jitter"].get<bool>();
+  s.class_own_weight = get_number(p, "class_own_weight", "method");
+  if (!(s.class_own_weight >= 0)) throw config_error("method.class_own_weight", "must be >= 0");
   s.rule = ConvergenceRule{get_int(p["convergence"], "window", "method.convergence"),
                            get_int(p["convergence"], "check_every", "method.convergence"),
                            get_number(p["convergence"], "threshold", "method.convergence")};

@@ -53,6 +53,11 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
   validate(exemplar, "exemplar");
   const GaborSettings s = resolve_gabor_settings(p_, exemplar, ctx.upscale, ctx.quick);
   GaborPipeline pipe(p_, s, ctx.seed);
+  // The per-class term (s.class_own_weight, not in the paper) needs rasters with the class's
+  // own k and targets of the class alone: a second pipeline. Its network is drawn from the
+  // same seed as `pipe`'s, so both terms see the same random filters.
+  std::unique_ptr<GaborPipeline> own;
+  if (s.class_own_weight > 0 && exemplar.num_classes() > 1) own = std::make_unique<GaborPipeline>(p_, s, ctx.seed);
   auto init = InitializerRegistry::instance().create(p_["init"], "method.init");
   OptimizerRegistry::instance().entry(p_["optimizer"].value("type", ""), "method.optimizer.type");
   const bool fresh_net = p_["fresh_net_per_class"].get<bool>();
@@ -63,7 +68,7 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
   PointSet out = initial_output(exemplar, ctx, *init, out_index);
   ctx.start(out);
 
-  json stats = {{"grid_res", s.res}, {"output_grid_res", s.upscale * s.res}, {"k", s.k}, {"sigmas", s.sigmas},
+  json stats = {{"grid_res", s.res}, {"class_own_weight", s.class_own_weight}, {"output_grid_res", s.upscale * s.res}, {"k", s.k}, {"sigmas", s.sigmas},
                 {"mean_nn_distance", s.mean_nn_distance}, {"stages", json::array()}};
   double t_targets = 0, t_maps = 0, t_net = 0, t_loss = 0, t_backward = 0, t_step = 0;
   std::mt19937_64 jitter_rng(ctx.seed ^ 0x9e3779b97f4a7c15ull);
@@ -74,6 +79,7 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
     const int cls = s.class_order[st];
     const std::vector<int> active(s.class_order.begin(), s.class_order.begin() + st + 1);
     if (fresh_net && st > 0) pipe.redraw_network(ctx.seed + 7919ull * st);
+    const bool own_term = own && st > 0;
     const PointSet ex_active = exemplar.subset_classes(active);
     const int k_stage = s.k_per_stage ? static_cast<int>(std::min<size_t>(s.k, ex_active.size())) : s.k;
     pipe.set_neighbours(k_stage);
@@ -90,11 +96,21 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
     const auto frozen = positions_tensor(out.subset(frozen_idx));
     const auto out_w = A > 0 ? normalized_attributes(out.subset(active_idx), s.attr_cols) : torch::Tensor();
     auto moving = positions_tensor(out.subset(moving_idx)).set_requires_grad(true);
+    torch::Tensor own_ex_pts, own_ex_w, own_out_w;
+    if (own_term) {
+      if (fresh_net) own->redraw_network(ctx.seed + 7919ull * st);
+      const PointSet ex_own = exemplar.subset_class(cls);
+      own->set_neighbours(s.k_per_stage ? static_cast<int>(std::min<size_t>(s.k, ex_own.size())) : s.k);
+      own_ex_pts = positions_tensor(ex_own);
+      own_ex_w = A > 0 ? normalized_attributes(ex_own, s.attr_cols) : torch::Tensor();
+      own_out_w = A > 0 ? normalized_attributes(out.subset(moving_idx), s.attr_cols) : torch::Tensor();
+    }
 
     for (size_t j = 0; j < s.sigmas.size(); ++j, ++stage_index) {
       const double sigma = s.sigmas[j];
       auto t0 = Clock::now();
       pipe.set_targets(ex_pts, ex_w, sigma);
+      if (own_term) own->set_targets(own_ex_pts, own_ex_w, sigma);
       t_targets += since(t0);
       auto optimizer = OptimizerRegistry::instance().create(p_["optimizer"], "method.optimizer", moving, static_cast<int>(j));
 
@@ -109,12 +125,19 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
       const auto stage_start = Clock::now();
       auto closure = [&]() {
         auto ta = Clock::now();
-        auto pts = frozen.size(0) > 0 ? torch::cat({frozen, wrap_unit(moving)}) : wrap_unit(moving);
-        auto maps = pipe.output_maps(pts, out_w, sigma, pipe.draw_jitter(jitter_rng));
+        const auto mv = wrap_unit(moving);
+        const auto jitter = pipe.draw_jitter(jitter_rng);
+        auto pts = frozen.size(0) > 0 ? torch::cat({frozen, mv}) : mv;
+        auto maps = pipe.output_maps(pts, out_w, sigma, jitter);
+        torch::Tensor own_maps;
+        if (own_term) own_maps = own->output_maps(mv, own_out_w, sigma, jitter);
         auto tb = Clock::now();
         auto feats = pipe.features(maps);
+        Features own_feats;
+        if (own_term) own_feats = own->features(own_maps);
         auto tc = Clock::now();
         auto l = pipe.loss(feats);
+        if (own_term) l = l + s.class_own_weight * own->loss(own_feats);
         auto td = Clock::now();
         l.backward();
         t_maps += std::chrono::duration<double>(tb - ta).count();

@@ -5,6 +5,8 @@
 //     for each sigma (coarse -> fine, sigma_schedule):
 //       exemplar -> Rasterizer -> FeatureNet -> loss targets          (once per sigma)
 //       repeat: wrap(moving) + frozen -> Rasterizer(u) -> FeatureNet -> CompositeLoss
+//               [+ class_own_weight x the same on the moving class alone, classes after the
+//                first; not in the paper, off by default]
 //               -> backward -> PositionOptimizer step                 (until ConvergenceRule)
 //
 // Single-class, multi-class, attributes and disks are data here (which points move, which are

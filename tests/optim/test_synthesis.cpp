@@ -65,6 +65,42 @@ TEST_CASE("Quick 2-class synthesis keeps classes and attributes and freezes earl
   CHECK(moved > 0);
 }
 
+TEST_CASE("The per-class term (class_own_weight) acts on the later classes only", "[optim][synthesis]") {
+  auto ex = two_class_exemplar();
+  struct FirstLossPerStage : SynthesisObserver {
+    std::vector<double> first;
+    void on_iteration(const ProgressEvent& e) override {
+      if (e.iteration == 0) first.push_back(e.loss);
+    }
+  };
+  SynthesisContext ctx;
+  ctx.quick = true;
+  ctx.seed = 3;
+  FirstLossPerStage paper_seen, own_seen;
+  ctx.observers = {&paper_seen};
+  auto paper = gabor()->synthesize(ex, ctx);
+  ctx.observers = {&own_seen};
+  auto with_own = gabor(json{{"class_own_weight", 1.0}})->synthesize(ex, ctx);
+  REQUIRE(paper.size() == with_own.size());
+  // Class 0 (the first stage, where joint = own) is untouched; class 1 moves differently.
+  double class1_diff = 0;
+  for (size_t i = 0; i < paper.size(); ++i) {
+    if (paper.cls(i) == 0) {
+      CHECK(paper[i].x == with_own[i].x);
+      CHECK(paper[i].y == with_own[i].y);
+    } else {
+      class1_diff += std::abs(paper[i].x - with_own[i].x) + std::abs(paper[i].y - with_own[i].y);
+    }
+  }
+  CHECK(class1_diff > 0);
+  // 2 classes x 2 quick sigmas: the first loss of each class-1 stage carries the added term.
+  REQUIRE(paper_seen.first.size() == 4);
+  REQUIRE(own_seen.first.size() == 4);
+  CHECK(own_seen.first[0] == paper_seen.first[0]);
+  CHECK(own_seen.first[2] > paper_seen.first[2]);
+  CHECK_THROWS_WITH(gabor(json{{"class_own_weight", -1.0}})->synthesize(ex, ctx), Catch::Contains("class_own_weight"));
+}
+
 TEST_CASE("Same config and seed give the same output", "[optim][synthesis]") {
   auto ex = jittered_grid_points(16, 5);
   SynthesisContext ctx;
