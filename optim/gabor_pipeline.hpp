@@ -38,6 +38,10 @@ struct GaborSettings {
   // class alone. The joint maps constrain a later class only through the joint pattern; this
   // term also asks for the class's own spacing (docs/method.md "Per-class structure").
   double class_own_weight = 0;
+  // Not in the paper (weight 0 = off): the soft minimum-distance term of
+  // optim/separation_term.hpp, weighted by separation_weight x the stage's first loss value.
+  double separation_weight = 0;
+  double separation_fraction = 0.9;
   ConvergenceRule rule;
   json feature_net;             // the net spec after --quick shrinking
 };

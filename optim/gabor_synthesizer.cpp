@@ -6,6 +6,7 @@
 #include "models/point_tensor.hpp"
 #include "optim/initializer.hpp"
 #include "optim/position_optimizer.hpp"
+#include "optim/separation_term.hpp"
 
 namespace ppsynth {
 
@@ -68,7 +69,7 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
   PointSet out = initial_output(exemplar, ctx, *init, out_index);
   ctx.start(out);
 
-  json stats = {{"grid_res", s.res}, {"class_own_weight", s.class_own_weight}, {"output_grid_res", s.upscale * s.res}, {"k", s.k}, {"sigmas", s.sigmas},
+  json stats = {{"grid_res", s.res}, {"class_own_weight", s.class_own_weight}, {"separation_weight", s.separation_weight}, {"output_grid_res", s.upscale * s.res}, {"k", s.k}, {"sigmas", s.sigmas},
                 {"mean_nn_distance", s.mean_nn_distance}, {"stages", json::array()}};
   double t_targets = 0, t_maps = 0, t_net = 0, t_loss = 0, t_backward = 0, t_step = 0;
   std::mt19937_64 jitter_rng(ctx.seed ^ 0x9e3779b97f4a7c15ull);
@@ -96,6 +97,9 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
     const auto frozen = positions_tensor(out.subset(frozen_idx));
     const auto out_w = A > 0 ? normalized_attributes(out.subset(active_idx), s.attr_cols) : torch::Tensor();
     auto moving = positions_tensor(out.subset(moving_idx)).set_requires_grad(true);
+    std::unique_ptr<SeparationTerm> separation;
+    if (s.separation_weight > 0)
+      separation = std::make_unique<SeparationTerm>(exemplar, out, moving_idx, frozen_idx, s.upscale, s.separation_fraction);
     torch::Tensor own_ex_pts, own_ex_w, own_out_w;
     if (own_term) {
       if (fresh_net) own->redraw_network(ctx.seed + 7919ull * st);
@@ -122,6 +126,7 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
       ev.max_iterations = s.max_iterations;
       ctx.stage_begin(ev);
       std::vector<double> losses;
+      double separation_scale = -1;  // the stage's first loss value, once known
       const auto stage_start = Clock::now();
       auto closure = [&]() {
         auto ta = Clock::now();
@@ -138,6 +143,10 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
         auto tc = Clock::now();
         auto l = pipe.loss(feats);
         if (own_term) l = l + s.class_own_weight * own->loss(own_feats);
+        if (separation) {
+          if (separation_scale < 0) separation_scale = l.item<double>();
+          l = l + s.separation_weight * separation_scale * (*separation)(mv, frozen);
+        }
         auto td = Clock::now();
         l.backward();
         t_maps += std::chrono::duration<double>(tb - ta).count();
