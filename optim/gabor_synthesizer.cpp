@@ -69,8 +69,9 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
   PointSet out = initial_output(exemplar, ctx, *init, out_index);
   ctx.start(out);
 
-  json stats = {{"grid_res", s.res}, {"class_own_weight", s.class_own_weight}, {"separation_weight", s.separation_weight}, {"output_grid_res", s.upscale * s.res}, {"k", s.k}, {"sigmas", s.sigmas},
-                {"mean_nn_distance", s.mean_nn_distance}, {"stages", json::array()}};
+  json stats = {{"grid_res", s.res}, {"output_grid_res", s.upscale * s.res}, {"k", s.k}, {"sigmas", s.sigmas},
+                {"mean_nn_distance", s.mean_nn_distance}, {"stages", json::array()},
+                {"class_own_weight", s.class_own_weight}, {"separation_weight", s.separation_weight}};
   double t_targets = 0, t_maps = 0, t_net = 0, t_loss = 0, t_backward = 0, t_step = 0;
   std::mt19937_64 jitter_rng(ctx.seed ^ 0x9e3779b97f4a7c15ull);
   const int total_stages = K * static_cast<int>(s.sigmas.size());
