@@ -36,7 +36,7 @@ struct GaborSettings {
   // Not in the paper (0 = off, the paper's method): from the second class stage on, add this
   // weight times the same loss on the maps of the moving class ALONE against the exemplar's
   // class alone. The joint maps constrain a later class only through the joint pattern; this
-  // term also asks for the class's own spacing (docs/method.md "Per-class structure").
+  // term also asks for the class's own spacing (docs/method.md "Beyond the paper").
   double class_own_weight = 0;
   // Not in the paper (weight 0 = off): the soft minimum-distance term of
   // optim/separation_term.hpp, weighted by separation_weight x the stage's first loss value.
