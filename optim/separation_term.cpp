@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/neighbors.hpp"
+
 namespace ppsynth {
 
 std::vector<std::vector<double>> class_pair_min_distance(const PointSet& ps) {
@@ -13,7 +15,7 @@ std::vector<std::vector<double>> class_pair_min_distance(const PointSet& ps) {
   for (size_t i = 0; i < ps.size(); ++i)
     for (size_t j = i + 1; j < ps.size(); ++j) {
       const int a = ps.cls(i), b = ps.cls(j);
-      const double dist = std::hypot(ps[i].x - ps[j].x, ps[i].y - ps[j].y);
+      const double dist = point_distance(ps[i], ps[j]);  // in the square: the exemplar is a crop
       d[a][b] = d[b][a] = std::min(d[a][b], dist);
     }
   for (auto& row : d)
