@@ -37,6 +37,10 @@ json gabor_defaults() {
       // stage's first loss value; threshold fraction x the exemplar's closest pair per class
       // pair / u (at least r_i + r_j for disks). weight 0 = the paper.
       {"separation", {{"weight", 0.0}, {"fraction", 0.9}}},
+      // Not in the paper: the moving class's PCF (and, with cross, its cross-PCF to the frozen
+      // classes) against the exemplar's (optim/pcf_match_term.hpp). At a class's start the
+      // term weighs `weight` x the paper's loss. weight 0 = the paper.
+      {"pcf_match", {{"weight", 0.0}, {"cross", true}}},
       // --quick: every knob that sets the cost, shrunk (tests and smoke runs).
       {"quick", {{"res", 24}, {"channels", 8}, {"max_iterations", 4}, {"num_sigmas", 2}}},
   };
@@ -102,6 +106,10 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, in
   if (!(s.separation_weight >= 0)) throw config_error("method.separation.weight", "must be >= 0");
   if (!(s.separation_fraction > 0 && s.separation_fraction <= 2))
     throw config_error("method.separation.fraction", "must be in (0, 2]");
+  s.pcf_match_weight = get_number(p["pcf_match"], "weight", "method.pcf_match");
+  if (!(s.pcf_match_weight >= 0)) throw config_error("method.pcf_match.weight", "must be >= 0");
+  if (!p["pcf_match"]["cross"].is_boolean()) throw config_error("method.pcf_match.cross", "expected true or false");
+  s.pcf_match_cross = p["pcf_match"]["cross"].get<bool>();
   s.rule = ConvergenceRule{get_int(p["convergence"], "window", "method.convergence"),
                            get_int(p["convergence"], "check_every", "method.convergence"),
                            get_number(p["convergence"], "threshold", "method.convergence")};

@@ -42,6 +42,10 @@ struct GaborSettings {
   // optim/separation_term.hpp, weighted by separation_weight x the stage's first loss value.
   double separation_weight = 0;
   double separation_fraction = 0.9;
+  // Not in the paper (weight 0 = off): the PCF-matching term of optim/pcf_match_term.hpp;
+  // at each class's first evaluation it weighs pcf_match_weight x the paper's loss.
+  double pcf_match_weight = 0;
+  bool pcf_match_cross = true;
   ConvergenceRule rule;
   json feature_net;             // the net spec after --quick shrinking
 };

@@ -5,6 +5,7 @@
 
 #include "models/point_tensor.hpp"
 #include "optim/initializer.hpp"
+#include "optim/pcf_match_term.hpp"
 #include "optim/position_optimizer.hpp"
 #include "optim/separation_term.hpp"
 
@@ -71,7 +72,8 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
 
   json stats = {{"grid_res", s.res}, {"output_grid_res", s.upscale * s.res}, {"k", s.k}, {"sigmas", s.sigmas},
                 {"mean_nn_distance", s.mean_nn_distance}, {"stages", json::array()},
-                {"class_own_weight", s.class_own_weight}, {"separation_weight", s.separation_weight}};
+                {"class_own_weight", s.class_own_weight}, {"separation_weight", s.separation_weight},
+                {"pcf_match_weight", s.pcf_match_weight}};
   double t_targets = 0, t_maps = 0, t_net = 0, t_loss = 0, t_backward = 0, t_step = 0;
   std::mt19937_64 jitter_rng(ctx.seed ^ 0x9e3779b97f4a7c15ull);
   const int total_stages = K * static_cast<int>(s.sigmas.size());
@@ -101,6 +103,12 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
     std::unique_ptr<SeparationTerm> separation;
     if (s.separation_weight > 0)
       separation = std::make_unique<SeparationTerm>(exemplar, out, moving_idx, frozen_idx, s.upscale, s.separation_fraction);
+    std::unique_ptr<PcfMatchTerm> pcf_match;
+    if (s.pcf_match_weight > 0) {
+      pcf_match = std::make_unique<PcfMatchTerm>(exemplar, out, moving_idx, frozen_idx, s.upscale, s.pcf_match_cross);
+      if (pcf_match->curves() == 0) pcf_match.reset();
+    }
+    double pcf_match_start = -1;  // the PCF term at the class's first evaluation
     torch::Tensor own_ex_pts, own_ex_w, own_out_w;
     if (own_term) {
       if (fresh_net) own->redraw_network(ctx.seed + 7919ull * st);
@@ -127,7 +135,9 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
       ev.max_iterations = s.max_iterations;
       ctx.stage_begin(ev);
       std::vector<double> losses;
-      double separation_scale = -1;  // the stage's first loss value, once known
+      // The paper's loss (+ own term) at the stage's first evaluation: the unit of the
+      // optional terms, so one weight serves every scene and sigma.
+      double stage_scale = -1;
       const auto stage_start = Clock::now();
       auto closure = [&]() {
         auto ta = Clock::now();
@@ -144,10 +154,16 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
         auto tc = Clock::now();
         auto l = pipe.loss(feats);
         if (own_term) l = l + s.class_own_weight * own->loss(own_feats);
-        if (separation) {
-          if (separation_scale < 0) separation_scale = l.item<double>();
-          l = l + s.separation_weight * separation_scale * (*separation)(mv, frozen);
+        if ((pcf_match || separation) && stage_scale < 0) stage_scale = l.item<double>();
+        if (pcf_match) {
+          // Divided by its value at the class's start: it weighs pcf_match_weight x the
+          // paper's loss there, whatever the scene's PCF scale, and fades as the class's PCF
+          // approaches the exemplar's.
+          auto term = (*pcf_match)(mv, frozen);
+          if (pcf_match_start < 0) pcf_match_start = std::max(term.item<double>(), 1e-3);
+          l = l + s.pcf_match_weight * stage_scale / pcf_match_start * term;
         }
+        if (separation) l = l + s.separation_weight * stage_scale * (*separation)(mv, frozen);
         auto td = Clock::now();
         l.backward();
         t_maps += std::chrono::duration<double>(tb - ta).count();
