@@ -29,4 +29,10 @@ torch::Tensor normalized_attributes(const PointSet& ps, const std::vector<int>& 
   return w.to(dtype);
 }
 
+torch::Tensor torus_distances(const torch::Tensor& a, const torch::Tensor& b) {
+  auto diff = a.unsqueeze(1) - b.unsqueeze(0);
+  diff = diff - torch::round(diff);
+  return torch::sqrt(diff.pow(2).sum(-1) + 1e-12);
+}
+
 }  // namespace ppsynth

@@ -13,5 +13,9 @@ void set_positions(PointSet& ps, const torch::Tensor& xy);
 // weights w_i of Eq. 5; method.md section 2). An all-zero column gives weight 1.
 torch::Tensor normalized_attributes(const PointSet& ps, const std::vector<int>& columns,
                                     torch::Dtype dtype = torch::kFloat32);
+// Pairwise distances (n x m) between positions a (n x 2) and b (m x 2) on the unit torus
+// (minimum image), differentiable: round() passes no gradient, and a small epsilon keeps
+// the gradient of coincident points finite (the point terms of optim/ use it).
+torch::Tensor torus_distances(const torch::Tensor& a, const torch::Tensor& b);
 
 }  // namespace ppsynth

@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "core/metrics/pcf.hpp"
+#include "models/point_tensor.hpp"
 
 namespace ppsynth {
 
@@ -54,9 +55,7 @@ namespace {
 // g(r_b) for the pairs of a (n x 2) and b (m x 2) on the unit torus; `same`: a == b, i != j.
 torch::Tensor torus_pcf(const torch::Tensor& a, const torch::Tensor& b, bool same, const torch::Tensor& radii,
                         double sigma) {
-  auto diff = a.unsqueeze(1) - b.unsqueeze(0);
-  diff = diff - torch::round(diff);  // minimum image; round() passes no gradient
-  auto d = torch::sqrt(diff.pow(2).sum(-1) + 1e-12);  // n x m
+  auto d = torus_distances(a, b);  // n x m
   const int64_t n = a.size(0), m = b.size(0);
   double pairs = static_cast<double>(n) * m;
   if (same) {  // each unordered pair once, counted twice (ordered pairs as in the estimator)

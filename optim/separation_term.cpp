@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/neighbors.hpp"
+#include "models/point_tensor.hpp"
 
 namespace ppsynth {
 
@@ -49,9 +50,7 @@ namespace {
 // Sum over pairs with a threshold of relu(1 - d / t)^2, d on the unit torus.
 torch::Tensor pair_penalty(const torch::Tensor& a, const torch::Tensor& b, const torch::Tensor& t) {
   if (a.size(0) == 0 || b.size(0) == 0) return torch::zeros({}, a.options());
-  auto diff = a.unsqueeze(1) - b.unsqueeze(0);
-  diff = diff - torch::round(diff);  // minimum image; round() passes no gradient, diff keeps its own
-  auto d = torch::sqrt(diff.pow(2).sum(-1) + 1e-12);
+  auto d = torus_distances(a, b);
   auto active = t > 0;
   auto v = torch::relu(1 - d / torch::where(active, t, torch::ones_like(t)));
   return (v * active).pow(2).sum();
