@@ -10,7 +10,8 @@
 //                           3.96 % for uniform points; parked points raise it)
 //   "upscale": sqrt(output count / exemplar count) (the per-axis u of method.md; ~2)
 //   "all":     quadrant metrics of all classes together { "pcf_mse", "wasserstein",
-//              "chamfer", "pcf": { "r", "exemplar", "output" } }   (quadrant.hpp)
+//              "chamfer", "exemplar_points", "pcf": { "r", "exemplar", "output" } }
+//              (quadrant.hpp; exemplar_points: how many points the row's curve rests on)
 //   "classes": [ { "class", "label", same metrics } ]  per class (present in the exemplar)
 //   "cross":   [ { "ci", "cj", "pcf_mse", "pcf": {...} } ] for every class pair ci < cj
 //   "overlap": [ { "ci", "cj", "pairs", "pair_fraction", "point_fraction" } ] (when both

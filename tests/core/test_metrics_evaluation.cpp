@@ -40,7 +40,15 @@ TEST_CASE("evaluate reports counts, classes, cross terms and curves", "[metrics]
   CHECK(r["all"]["pcf"]["r"].size() == 100);
   CHECK(r["all"]["pcf"]["output"].size() == 100);
   CHECK(r["classes"][1]["pcf"]["exemplar"].size() == 100);
-  CHECK_FALSE(format_evaluation(r).empty());
+  CHECK(r["all"]["exemplar_points"] == 60);
+  CHECK(r["classes"][1]["exemplar_points"] == 30);
+  CHECK(format_evaluation(r).find("note: with fewer than") == std::string::npos);
+  // A class of 3 exemplar points: the table says how little its row rests on.
+  PointSet few = ex;
+  for (size_t i = 0; i < few.size(); ++i) few.set_cls(i, i < 3 ? 1 : 0);
+  auto rf = evaluate(few, out);
+  CHECK(rf["classes"][1]["exemplar_points"] == 3);
+  CHECK(format_evaluation(rf).find("note: with fewer than 16 exemplar points") != std::string::npos);
   EvalOptions o;
   o.include_curves = false;
   CHECK_FALSE(evaluate(ex, out, o)["all"].contains("pcf"));
