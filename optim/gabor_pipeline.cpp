@@ -33,14 +33,9 @@ json gabor_defaults() {
       // Not in the paper: weight of a per-class term for the second and later classes (the
       // loss on the moving class's own maps vs the exemplar class's own); 0 = the paper.
       {"class_own_weight", 0.0},
-      // Not in the paper: soft minimum distance (optim/separation_term.hpp); weight x the
-      // stage's first loss value; threshold fraction x the exemplar's closest pair per class
-      // pair / u (at least r_i + r_j for disks). weight 0 = the paper.
-      {"separation", {{"weight", 0.0}, {"fraction", 0.9}}},
-      // Not in the paper: the moving class's PCF (and, with cross, its cross-PCF to the frozen
-      // classes) against the exemplar's (optim/pcf_match_term.hpp). At a class's start the
-      // term weighs `weight` x the paper's loss. weight 0 = the paper.
-      {"pcf_match", {{"weight", 0.0}, {"cross", true}}},
+      // Not in the paper: losses on the positions themselves (optim/point_term.hpp), by
+      // registered name: {"separation": {"weight": 1}, "pcf_match": {"weight": 10}}. Empty = the paper.
+      {"terms", json::object()},
       // --quick: every knob that sets the cost, shrunk (tests and smoke runs).
       {"quick", {{"res", 24}, {"channels", 8}, {"max_iterations", 4}, {"num_sigmas", 2}}},
   };
@@ -101,15 +96,6 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, in
   s.jitter = p["jitter"].get<bool>();
   s.class_own_weight = get_number(p, "class_own_weight", "method");
   if (!(s.class_own_weight >= 0)) throw config_error("method.class_own_weight", "must be >= 0");
-  s.separation_weight = get_number(p["separation"], "weight", "method.separation");
-  s.separation_fraction = get_number(p["separation"], "fraction", "method.separation");
-  if (!(s.separation_weight >= 0)) throw config_error("method.separation.weight", "must be >= 0");
-  if (!(s.separation_fraction > 0 && s.separation_fraction <= 2))
-    throw config_error("method.separation.fraction", "must be in (0, 2]");
-  s.pcf_match_weight = get_number(p["pcf_match"], "weight", "method.pcf_match");
-  if (!(s.pcf_match_weight >= 0)) throw config_error("method.pcf_match.weight", "must be >= 0");
-  if (!p["pcf_match"]["cross"].is_boolean()) throw config_error("method.pcf_match.cross", "expected true or false");
-  s.pcf_match_cross = p["pcf_match"]["cross"].get<bool>();
   s.rule = ConvergenceRule{get_int(p["convergence"], "window", "method.convergence"),
                            get_int(p["convergence"], "check_every", "method.convergence"),
                            get_number(p["convergence"], "threshold", "method.convergence")};

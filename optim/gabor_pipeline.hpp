@@ -38,14 +38,6 @@ struct GaborSettings {
   // class alone. The joint maps constrain a later class only through the joint pattern; this
   // term also asks for the class's own spacing (docs/method.md "Beyond the paper").
   double class_own_weight = 0;
-  // Not in the paper (weight 0 = off): the soft minimum-distance term of
-  // optim/separation_term.hpp, weighted by separation_weight x the stage's first loss value.
-  double separation_weight = 0;
-  double separation_fraction = 0.9;
-  // Not in the paper (weight 0 = off): the PCF-matching term of optim/pcf_match_term.hpp;
-  // at each class's first evaluation it weighs pcf_match_weight x the paper's loss.
-  double pcf_match_weight = 0;
-  bool pcf_match_cross = true;
   ConvergenceRule rule;
   json feature_net;             // the net spec after --quick shrinking
 };

@@ -5,9 +5,8 @@
 
 #include "models/point_tensor.hpp"
 #include "optim/initializer.hpp"
-#include "optim/pcf_match_term.hpp"
+#include "optim/point_term.hpp"
 #include "optim/position_optimizer.hpp"
-#include "optim/separation_term.hpp"
 
 namespace ppsynth {
 
@@ -61,6 +60,7 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
   std::unique_ptr<GaborPipeline> own;
   if (s.class_own_weight > 0 && exemplar.num_classes() > 1) own = std::make_unique<GaborPipeline>(p_, s, ctx.seed);
   auto init = InitializerRegistry::instance().create(p_["init"], "method.init");
+  auto terms = create_point_terms(p_["terms"]);
   OptimizerRegistry::instance().entry(p_["optimizer"].value("type", ""), "method.optimizer.type");
   const bool fresh_net = p_["fresh_net_per_class"].get<bool>();
   const int K = exemplar.num_classes();
@@ -72,8 +72,8 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
 
   json stats = {{"grid_res", s.res}, {"output_grid_res", s.upscale * s.res}, {"k", s.k}, {"sigmas", s.sigmas},
                 {"mean_nn_distance", s.mean_nn_distance}, {"stages", json::array()},
-                {"class_own_weight", s.class_own_weight}, {"separation_weight", s.separation_weight},
-                {"pcf_match_weight", s.pcf_match_weight}};
+                {"class_own_weight", s.class_own_weight}, {"terms", json::object()}};
+  for (const auto& t : terms) stats["terms"][t.name] = t.weight;
   double t_targets = 0, t_maps = 0, t_net = 0, t_loss = 0, t_backward = 0, t_step = 0;
   std::mt19937_64 jitter_rng(ctx.seed ^ 0x9e3779b97f4a7c15ull);
   const int total_stages = K * static_cast<int>(s.sigmas.size());
@@ -100,15 +100,7 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
     const auto frozen = positions_tensor(out.subset(frozen_idx));
     const auto out_w = A > 0 ? normalized_attributes(out.subset(active_idx), s.attr_cols) : torch::Tensor();
     auto moving = positions_tensor(out.subset(moving_idx)).set_requires_grad(true);
-    std::unique_ptr<SeparationTerm> separation;
-    if (s.separation_weight > 0)
-      separation = std::make_unique<SeparationTerm>(exemplar, out, moving_idx, frozen_idx, s.upscale, s.separation_fraction);
-    std::unique_ptr<PcfMatchTerm> pcf_match;
-    if (s.pcf_match_weight > 0) {
-      pcf_match = std::make_unique<PcfMatchTerm>(exemplar, out, moving_idx, frozen_idx, s.upscale, s.pcf_match_cross);
-      if (pcf_match->curves() == 0) pcf_match.reset();
-    }
-    double pcf_match_start = -1;  // the PCF term at the class's first evaluation
+    for (auto& t : terms) t.term->begin_class(ClassStage{exemplar, out, moving_idx, frozen_idx, s.upscale});
     torch::Tensor own_ex_pts, own_ex_w, own_out_w;
     if (own_term) {
       if (fresh_net) own->redraw_network(ctx.seed + 7919ull * st);
@@ -136,7 +128,7 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
       ctx.stage_begin(ev);
       std::vector<double> losses;
       // The paper's loss (+ own term) at the stage's first evaluation: the unit of the
-      // optional terms, so one weight serves every scene and sigma.
+      // point terms, so one weight serves every scene and sigma (optim/point_term.hpp).
       double stage_scale = -1;
       const auto stage_start = Clock::now();
       auto closure = [&]() {
@@ -154,16 +146,8 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
         auto tc = Clock::now();
         auto l = pipe.loss(feats);
         if (own_term) l = l + s.class_own_weight * own->loss(own_feats);
-        if ((pcf_match || separation) && stage_scale < 0) stage_scale = l.item<double>();
-        if (pcf_match) {
-          // Divided by its value at the class's start: it weighs pcf_match_weight x the
-          // paper's loss there, whatever the scene's PCF scale, and fades as the class's PCF
-          // approaches the exemplar's.
-          auto term = (*pcf_match)(mv, frozen);
-          if (pcf_match_start < 0) pcf_match_start = std::max(term.item<double>(), 1e-3);
-          l = l + s.pcf_match_weight * stage_scale / pcf_match_start * term;
-        }
-        if (separation) l = l + s.separation_weight * stage_scale * (*separation)(mv, frozen);
+        if (!terms.empty() && stage_scale < 0) stage_scale = l.item<double>();
+        for (auto& t : terms) l = l + t.weight * stage_scale * t.term->evaluate(mv, frozen);
         auto td = Clock::now();
         l.backward();
         t_maps += std::chrono::duration<double>(tb - ta).count();

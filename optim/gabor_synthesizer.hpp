@@ -7,10 +7,8 @@
 //       repeat: wrap(moving) + frozen -> Rasterizer(u) -> FeatureNet -> CompositeLoss
 //               [+ class_own_weight x the same on the moving class alone, classes after the
 //                first; not in the paper, off by default]
-//               [+ pcf_match: the class's PCF vs the exemplar's, optim/pcf_match_term.hpp; not
-//                in the paper, off by default]
-//               [+ separation: soft minimum distance, optim/separation_term.hpp; not in the
-//                paper, off by default]
+//               [+ point terms on the positions (method.terms: separation, pcf_match,
+//                ...; optim/point_term.hpp); not in the paper, none by default]
 //               -> backward -> PositionOptimizer step                 (until ConvergenceRule)
 //
 // Single-class, multi-class, attributes and disks are data here (which points move, which are

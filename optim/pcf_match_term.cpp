@@ -1,9 +1,11 @@
 #include "optim/pcf_match_term.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
 #include "core/metrics/pcf.hpp"
+#include "optim/point_term.hpp"
 #include "models/point_tensor.hpp"
 
 namespace ppsynth {
@@ -87,3 +89,43 @@ torch::Tensor PcfMatchTerm::operator()(const torch::Tensor& moving, const torch:
 }
 
 }  // namespace ppsynth
+
+namespace ppsynth {
+
+namespace {
+
+// The registered form: divided by its value at the class's first evaluation, so at a
+// class's start it weighs `weight` x the paper's loss whatever the scene's PCF scale, and it
+// fades as the class's PCF approaches the exemplar's.
+class PcfMatchPointTerm : public PointTerm {
+ public:
+  explicit PcfMatchPointTerm(const nlohmann::json& p) {
+    if (!p["cross"].is_boolean()) throw config_error("method.terms.pcf_match.cross", "expected true or false");
+    cross_ = p["cross"].get<bool>();
+  }
+  void begin_class(const ClassStage& s) override {
+    term_ = std::make_unique<PcfMatchTerm>(s.exemplar, s.output, s.moving, s.frozen, s.upscale, cross_);
+    start_ = -1;
+  }
+  torch::Tensor evaluate(const torch::Tensor& moving, const torch::Tensor& frozen) override {
+    if (term_->curves() == 0) return torch::zeros({}, moving.options().requires_grad(false));
+    auto v = (*term_)(moving, frozen);
+    if (start_ < 0) start_ = std::max(v.item<double>(), 1e-3);
+    return v / start_;
+  }
+
+ private:
+  bool cross_ = true;
+  std::unique_ptr<PcfMatchTerm> term_;
+  double start_ = -1;
+};
+
+}  // namespace
+
+}  // namespace ppsynth
+
+PPSYNTH_REGISTER(ppsynth::PointTermRegistry, "pcf_match", (nlohmann::json{{"weight", 0.0}, {"cross", true}}),
+                 "the moving class's PCF (and cross-PCFs to the frozen classes) on the output torus vs the exemplar's",
+                 [](const nlohmann::json& p) -> std::unique_ptr<ppsynth::PointTerm> {
+                   return std::make_unique<ppsynth::PcfMatchPointTerm>(p);
+                 })

@@ -1,5 +1,5 @@
 #pragma once
-// PcfMatchTerm: not in the paper (method.pcf_match, off by default). A differentiable
+// PcfMatchTerm: not in the paper (method.terms.pcf_match, off by default; a point term, optim/point_term.hpp). A differentiable
 // pair-correlation loss for the moving class of a class stage, after the PCF-matching
 // synthesis of Oztireli & Gross 2012 and the thesis's Chapter 4 (optim/baselines/pcf2017).
 //

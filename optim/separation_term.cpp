@@ -6,6 +6,7 @@
 
 #include "core/neighbors.hpp"
 #include "models/point_tensor.hpp"
+#include "optim/point_term.hpp"
 
 namespace ppsynth {
 
@@ -65,3 +66,35 @@ torch::Tensor SeparationTerm::operator()(const torch::Tensor& moving, const torc
 }
 
 }  // namespace ppsynth
+
+namespace ppsynth {
+
+namespace {
+
+// The registered form: builds the stage's thresholds at each class stage.
+class SeparationPointTerm : public PointTerm {
+ public:
+  explicit SeparationPointTerm(const nlohmann::json& p) : fraction_(p["fraction"].get<double>()) {
+    if (!(fraction_ > 0 && fraction_ <= 2)) throw config_error("method.terms.separation.fraction", "must be in (0, 2]");
+  }
+  void begin_class(const ClassStage& s) override {
+    term_ = std::make_unique<SeparationTerm>(s.exemplar, s.output, s.moving, s.frozen, s.upscale, fraction_);
+  }
+  torch::Tensor evaluate(const torch::Tensor& moving, const torch::Tensor& frozen) override {
+    return (*term_)(moving, frozen);
+  }
+
+ private:
+  double fraction_;
+  std::unique_ptr<SeparationTerm> term_;
+};
+
+}  // namespace
+
+}  // namespace ppsynth
+
+PPSYNTH_REGISTER(ppsynth::PointTermRegistry, "separation", (nlohmann::json{{"weight", 0.0}, {"fraction", 0.9}}),
+                 "soft minimum distance: fraction x the exemplar's closest pair per class pair / u (at least r_i + r_j)",
+                 [](const nlohmann::json& p) -> std::unique_ptr<ppsynth::PointTerm> {
+                   return std::make_unique<ppsynth::SeparationPointTerm>(p);
+                 })

@@ -1,5 +1,5 @@
 #pragma once
-// SeparationTerm: not in the paper (method.separation, off by default). A soft minimum-distance
+// SeparationTerm: not in the paper (method.terms.separation, off by default; a point term, optim/point_term.hpp). A soft minimum-distance
 // penalty on the moving output points. The Gabor losses see two points closer than a grid
 // cell as one blurred point, so outputs keep pairs closer than the exemplar ever has them:
 // the small-r mass of their PCF and, for disks, the overlaps the paper names as the method's
@@ -10,7 +10,7 @@
 //
 // d_ij on the unit torus (the positions are wrapped toroidally); dmin_ex(a, b) is the closest
 // pair of exemplar points of classes a and b (no term where a class pair has no pair).
-// The synthesiser weights it by method.separation.weight times the stage's first loss value,
+// The synthesiser weights it by method.terms.separation.weight times the stage's first loss,
 // so one weight serves every scene and sigma. Pairs are dense (n x n and n x m per
 // evaluation): cheap beside the filter network at the paper's sizes (up to ~1,100 output
 // points); a neighbour search would be the step for much larger outputs.

@@ -1,4 +1,4 @@
-// The PCF-matching term (method.pcf_match, not in the paper): its curves are core's torus
+// The PCF-matching term (method.terms.pcf_match, not in the paper): its curves are core's torus
 // estimator against core's exemplar estimator, it skips curves with nothing to say, descending
 // it brings a pattern's PCF to the exemplar's, and inside a synthesis it acts and names its
 // keys.
@@ -118,12 +118,12 @@ TEST_CASE("PCF match in a synthesis: moves the first class, bad values name the 
     return MethodRegistry::instance().create(spec, "method")->synthesize(ex, ctx);
   };
   const auto plain = run(json::object());
-  const auto matched = run(json{{"pcf_match", {{"weight", 1.0}}}});
+  const auto matched = run(json{{"terms", {{"pcf_match", {{"weight", 1.0}}}}}});
   REQUIRE(plain.size() == matched.size());
   double moved = 0;
   for (size_t i = 0; i < plain.size(); ++i) moved += std::hypot(plain[i].x - matched[i].x, plain[i].y - matched[i].y);
   CHECK(moved > 1e-4);
-  CHECK_THROWS_WITH(run(json{{"pcf_match", {{"weight", -1.0}}}}), Catch::Contains("pcf_match.weight"));
-  CHECK_THROWS_WITH(run(json{{"pcf_match", {{"cross", 1}}}}), Catch::Contains("pcf_match.cross"));
-  CHECK_THROWS_WITH(run(json{{"pcf_match", {{"sigma", 0.1}}}}), Catch::Contains("pcf_match"));
+  CHECK_THROWS_WITH(run(json{{"terms", {{"pcf_match", {{"weight", -1.0}}}}}}), Catch::Contains("pcf_match.weight"));
+  CHECK_THROWS_WITH(run(json{{"terms", {{"pcf_match", {{"weight", 1.0}, {"cross", 1}}}}}}), Catch::Contains("pcf_match.cross"));
+  CHECK_THROWS_WITH(run(json{{"terms", {{"pcf_match", {{"sigma", 0.1}}}}}}), Catch::Contains("pcf_match"));
 }

@@ -1,4 +1,4 @@
-// The separation term (method.separation, not in the paper): thresholds from the exemplar's
+// The separation term (method.terms.separation, not in the paper): thresholds from the exemplar's
 // closest pairs per class pair and from disk radii, torus distances, gradient direction, and
 // its effect inside a synthesis.
 #include <catch2/catch.hpp>
@@ -102,10 +102,10 @@ TEST_CASE("Separation in a synthesis: adds to the loss, bad values name the key"
   run(json::object(), plain);
   // fraction 2: twice the exemplar's closest distance (/ u) is more than a Poisson-disk
   // initialisation's spacing, so the first evaluation already pays for some pairs.
-  run(json{{"separation", {{"weight", 1.0}, {"fraction", 2.0}}}}, separated);
+  run(json{{"terms", {{"separation", {{"weight", 1.0}, {"fraction", 2.0}}}}}}, separated);
   CHECK(separated.first > plain.first);
   FirstLoss unused;
-  CHECK_THROWS_WITH(run(json{{"separation", {{"weight", -1.0}}}}, unused), Catch::Contains("separation.weight"));
-  CHECK_THROWS_WITH(run(json{{"separation", {{"fraction", 0.0}}}}, unused), Catch::Contains("separation.fraction"));
-  CHECK_THROWS_WITH(run(json{{"separation", {{"radius", 0.1}}}}, unused), Catch::Contains("separation"));
+  CHECK_THROWS_WITH(run(json{{"terms", {{"separation", {{"weight", -1.0}}}}}}, unused), Catch::Contains("separation.weight"));
+  CHECK_THROWS_WITH(run(json{{"terms", {{"separation", {{"weight", 1.0}, {"fraction", 0.0}}}}}}, unused), Catch::Contains("separation.fraction"));
+  CHECK_THROWS_WITH(run(json{{"terms", {{"separation", {{"radius", 0.1}}}}}}, unused), Catch::Contains("separation"));
 }
