@@ -108,7 +108,6 @@ class PcfMatchPointTerm : public PointTerm {
     start_ = -1;
   }
   torch::Tensor evaluate(const torch::Tensor& moving, const torch::Tensor& frozen) override {
-    if (term_->curves() == 0) return torch::zeros({}, moving.options().requires_grad(false));
     auto v = (*term_)(moving, frozen);
     if (start_ < 0) start_ = std::max(v.item<double>(), 1e-3);
     return v / start_;
