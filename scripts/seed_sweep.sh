@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # One config over several seeds: how much of a result is the method and how much the seed?
-# Runs `ppsynth synthesize CONFIG --seed S` for each seed (into runs/<stem>_s<S>, log beside
+# Runs `ppsynth synthesize CONFIG --seed S` for each seed (into DIR/<stem>_s<S>, log beside
 # it), evaluates each output against the run's exemplar with `ppsynth eval`, and prints one row
 # per seed (quadrant PCF MSE for all classes, each class and each class pair; the output's
 # relative radius; overlapping disk pairs when the points carry radii), then the median, min
@@ -9,19 +9,22 @@
 # is at most BOUND (1.25) times the reference's, as issue 7 asks (cross-class rows are shown,
 # not judged).
 #
-#   scripts/seed_sweep.sh [--reuse] [--reference FILE] [--bound B] CONFIG SEEDS [-- ARGS...]
+#   scripts/seed_sweep.sh [--reuse] [--runs DIR] [--reference FILE] [--bound B] CONFIG SEEDS [-- ARGS...]
 #   SEEDS: a range "95-99" or a list "95,96,101"; ARGS go to every synthesize call
-#   --reuse: keep a seed's existing runs/<stem>_s<S>/output.txt instead of running it again
+#   --runs DIR: where the run directories go (default: the repo's runs/)
+#   --reuse: keep a seed's existing DIR/<stem>_s<S>/output.txt instead of running it again
 #   e.g. scripts/seed_sweep.sh --reference shared:data/reference/poisson_n64c2_point/output.txt \
 #          configs/runs/poisson_n64c2_point.json 95-97 -- --set method.max_iterations=150
-# Needs build/ppsynth (scripts/setup.sh). PPSYNTH_THREADS sets each run's threads.
+# Needs build/ppsynth (scripts/setup.sh; PPSYNTH_BIN names another). PPSYNTH_THREADS sets each
+# run's threads.
 set -euo pipefail
-cd "$(dirname "$0")/.."
-usage="usage: scripts/seed_sweep.sh [--reuse] [--reference FILE] [--bound B] CONFIG SEEDS [-- ARGS...]"
-reuse=0 reference="" bound=1.25
+repo=$(cd "$(dirname "$0")/.." && pwd)
+usage="usage: scripts/seed_sweep.sh [--reuse] [--runs DIR] [--reference FILE] [--bound B] CONFIG SEEDS [-- ARGS...]"
+reuse=0 reference="" bound=1.25 runs=$repo/runs
 while [[ $# -gt 0 && $1 == --* && $1 != -- ]]; do
   case $1 in
     --reuse) reuse=1; shift ;;
+    --runs) runs=${2:?$usage}; shift 2 ;;
     --reference) reference=${2:?$usage}; shift 2 ;;
     --bound) bound=${2:?$usage}; shift 2 ;;
     *) echo "seed_sweep: unknown option $1" >&2; echo "$usage" >&2; exit 2 ;;
@@ -31,9 +34,17 @@ config=${1:?$usage}
 seeds_arg=${2:?$usage}
 shift 2
 [[ ${1:-} == -- ]] && shift
-bin=build/ppsynth
+# Paths as the caller gave them (relative to the caller's directory), then work from the repo.
+config=$(realpath -m "$config")
+runs=$(realpath -m "$runs")
+[[ -n $reference && $reference != shared:* ]] && reference=$(realpath -m "$reference")
+cd "$repo"
+bin=${PPSYNTH_BIN:-build/ppsynth}
 [[ -x $bin ]] || { echo "seed_sweep: $bin not built (scripts/setup.sh)" >&2; exit 1; }
 [[ -f $config ]] || { echo "seed_sweep: no config file $config" >&2; exit 1; }
+# "shared:" as in the configs (PPSYNTH_SHARED, else ../shared beside the checkout).
+[[ $reference == shared:* ]] && reference="${PPSYNTH_SHARED:-$(dirname "$repo")/shared}/${reference#shared:}"
+[[ -z $reference || -f $reference ]] || { echo "seed_sweep: no reference file $reference" >&2; exit 1; }
 [[ $bound =~ ^[0-9]+([.][0-9]+)?$ ]] || { echo "seed_sweep: --bound $bound is not a positive number" >&2; exit 2; }
 
 if [[ $seeds_arg =~ ^([0-9]+)-([0-9]+)$ ]]; then
@@ -61,12 +72,12 @@ evaluate() {  # exemplar output -> "all 0.1 class:1000 0.2 ... rho 0.5 overlaps 
 }
 
 for s in $seeds; do
-  out=runs/${stem}_s$s
+  out=$runs/${stem}_s$s
   if [[ $reuse == 1 && -f $out/output.txt ]]; then
     echo "seed $s: reusing $out" >&2
   else
     echo "seed $s: synthesizing into $out (log $out.log)" >&2
-    mkdir -p runs
+    mkdir -p "$runs"
     start=$(date +%s)
     if ! "$bin" synthesize "$config" --seed "$s" -o "$out" "$@" > "$out.log" 2>&1; then
       echo "seed_sweep: seed $s failed; the last lines of $out.log:" >&2
@@ -79,10 +90,8 @@ for s in $seeds; do
   echo "$s $(evaluate "$out/exemplar.txt" "$out/output.txt")" >> "$tmp/rows"
 done
 if [[ -n $reference ]]; then
-  [[ $reference == shared:* ]] && reference="${PPSYNTH_SHARED:-$(cd .. && pwd)/shared}/${reference#shared:}"
-  [[ -f $reference ]] || { echo "seed_sweep: no reference file $reference" >&2; exit 1; }
   first=$(echo $seeds | awk '{print $1}')
-  echo "reference $(evaluate "runs/${stem}_s$first/exemplar.txt" "$reference")" > "$tmp/ref"
+  echo "reference $(evaluate "$runs/${stem}_s$first/exemplar.txt" "$reference")" > "$tmp/ref"
 else
   : > "$tmp/ref"
 fi
