@@ -72,15 +72,25 @@ void render_to_file(const std::string& path, int width, int height,
   });
 }
 
-void draw_text(cairo_t* cr, const std::string& text, double x, double y, double size_px, HAlign h,
-               VAlign v, bool bold, double angle_rad) {
-  if (text.empty()) return;
-  cairo_save(cr);
+namespace {
+
+// The one label font (sans-serif, regular or bold) set on `cr`; returns the text's extents in it.
+cairo_text_extents_t select_font(cairo_t* cr, const std::string& text, double size_px, bool bold) {
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
                          bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, size_px);
   cairo_text_extents_t te;
   cairo_text_extents(cr, text.c_str(), &te);
+  return te;
+}
+
+}  // namespace
+
+void draw_text(cairo_t* cr, const std::string& text, double x, double y, double size_px, HAlign h,
+               VAlign v, bool bold, double angle_rad) {
+  if (text.empty()) return;
+  cairo_save(cr);
+  const cairo_text_extents_t te = select_font(cr, text, size_px, bold);
   cairo_font_extents_t fe;
   cairo_font_extents(cr, &fe);
   double dx = 0, dy = 0;
@@ -106,11 +116,7 @@ void draw_text(cairo_t* cr, const std::string& text, double x, double y, double 
 
 double text_width(cairo_t* cr, const std::string& text, double size_px, bool bold) {
   cairo_save(cr);
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
-                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, size_px);
-  cairo_text_extents_t te;
-  cairo_text_extents(cr, text.c_str(), &te);
+  const cairo_text_extents_t te = select_font(cr, text, size_px, bold);
   cairo_restore(cr);
   return te.x_advance;
 }
