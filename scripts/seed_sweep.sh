@@ -67,7 +67,7 @@ evaluate() {  # exemplar output -> "all 0.1 class:1000 0.2 ... rho 0.5 overlaps 
     /^all classes/ {printf "all %s ", $3}
     /^class / {printf "c%s %s ", $2, $3}
     /^cross / {printf "x%s %s ", $2, $3}
-    /^overlapping disk pairs \(all classes\)/ {printf "overlaps %s ", $NF}
+    /^  all classes/ {printf "overlaps %s ", $4}  # the overlapping-disks table: output pairs
     END {print ""}'
 }
 

@@ -172,10 +172,21 @@ std::string format_evaluation(const json& r) {
   if (fewest > 0 && fewest < kFewPoints)
     os << "note: with fewer than " << kFewPoints << " exemplar points, a row's pcf_mse depends on where the quadrants\n"
        << "      cut the pattern as much as on its structure (scripts/per_class_floor.sh measures it)\n";
+  // Overlap is the method's known weakness on disks (paper Fig. 15): every class pair is shown,
+  // with the output's share of overlapping pairs and of points that overlap another.
   if (r.contains("overlap")) {
-    os << "\noverlapping disk pairs (all classes): exemplar "
-       << r["overlap"]["exemplar"][0]["pairs"].get<size_t>() << ", output "
-       << r["overlap"]["output"][0]["pairs"].get<size_t>() << "\n";
+    os << "\noverlapping disks  exemplar pairs  output pairs  pair fraction  points overlapping\n";
+    const auto& ex = r["overlap"]["exemplar"];
+    const auto& out = r["overlap"]["output"];
+    for (size_t i = 0; i < out.size() && i < ex.size(); ++i) {
+      const int ci = out[i]["ci"].get<int>(), cj = out[i]["cj"].get<int>();
+      if (ci >= 0 && out.size() == 2) continue;  // one class: its pair row repeats the "all" row
+      const std::string name = ci < 0 ? "all classes" : "classes " + std::to_string(ci) + "-" + std::to_string(cj);
+      std::snprintf(line, sizeof line, "  %-16s %14zu %13zu %14s %19s\n", name.c_str(), ex[i]["pairs"].get<size_t>(),
+                    out[i]["pairs"].get<size_t>(), f(out[i]["pair_fraction"], "%.2e").c_str(),
+                    f(out[i]["point_fraction"], "%.4f").c_str());
+      os << line;
+    }
   }
   return os.str();
 }

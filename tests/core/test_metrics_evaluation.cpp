@@ -90,3 +90,29 @@ TEST_CASE("evaluate reports the closest pair on the torus and in the square", "[
   CHECK(r["output"]["border_fraction"].get<double>() == Approx(2.0 / 3));
   CHECK(format_evaluation(r).find("border_fraction") != std::string::npos);
 }
+
+TEST_CASE("evaluate reports disk overlap per class pair, in JSON and in the table", "[metrics]") {
+  PointSet ex;
+  ex.add_attribute("radius");
+  ex.add({0.2, 0.2}, 0, {0.05});
+  ex.add({0.7, 0.2}, 0, {0.05});
+  ex.add({0.2, 0.7}, 1, {0.05});
+  ex.add({0.7, 0.7}, 1, {0.05});
+  PointSet out = ex;  // the same 4 disks (no overlap) plus 2 that overlap class 0 and class 1
+  out.add({0.25, 0.2}, 0, {0.05});  // overlaps (0.2, 0.2): a 0-0 pair
+  out.add({0.7, 0.66}, 0, {0.05});  // overlaps (0.7, 0.7): a 0-1 pair
+  auto r = evaluate(ex, out);
+  REQUIRE(r.contains("overlap"));
+  const auto& o = r["overlap"]["output"];
+  REQUIRE(o.size() == 4);  // all, 0-0, 0-1, 1-1
+  CHECK(r["overlap"]["exemplar"][0]["pairs"] == 0);
+  CHECK(o[0]["pairs"] == 2);
+  CHECK(o[1]["pairs"] == 1);
+  CHECK(o[2]["pairs"] == 1);
+  CHECK(o[3]["pairs"] == 0);
+  const std::string t = format_evaluation(r);
+  CHECK(t.find("overlapping disks") != std::string::npos);
+  CHECK(t.find("  all classes                   0             2") != std::string::npos);
+  CHECK(t.find("  classes 0-1                   0             1") != std::string::npos);
+  CHECK(t.find("  classes 1-1                   0             0") != std::string::npos);
+}
