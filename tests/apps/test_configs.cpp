@@ -21,6 +21,7 @@
 #include "core/log.hpp"
 #include "core/procedural/pptbf.hpp"
 #include "core/procedural/pptbf_params.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
@@ -35,13 +36,6 @@ std::vector<fs::path> json_files(const fs::path& dir) {
     if (e.path().extension() == ".json") v.push_back(e.path());
   std::sort(v.begin(), v.end());
   return v;
-}
-
-fs::path scratch(const std::string& name) {
-  auto d = fs::temp_directory_path() / ("ppsynth_configs_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
 }
 
 size_t count_points(const fs::path& f) {
@@ -71,7 +65,7 @@ TEST_CASE("every config folder is one this test runs", "[apps][configs]") {
 
 TEST_CASE("every run config runs with --quick", "[apps][configs]") {
   QuietLogs quiet;
-  const fs::path out = scratch("runs");
+  const fs::path out = ppsynth::test::scratch_dir("configs_runs");
   for (const char* dir : {"runs", "methods"})
     for (auto& f : json_files(kConfigs / dir)) {
       INFO(f.string());
@@ -101,7 +95,7 @@ TEST_CASE("every run config runs with --quick", "[apps][configs]") {
 
 TEST_CASE("every paper config (configs/paper) reproduces with --quick", "[apps][configs][reproduce]") {
   QuietLogs quiet;
-  const fs::path out = scratch("paper");
+  const fs::path out = ppsynth::test::scratch_dir("configs_paper");
   const auto files = json_files(kConfigs / "paper");
   REQUIRE(files.size() >= 20);  // one config per row of method.md section 7 (and more)
   for (auto& f : files) {

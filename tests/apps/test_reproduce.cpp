@@ -13,9 +13,11 @@
 #include "apps/ppsynth/synthesis/run_synthesis.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
+#include "core/formats/text_table.hpp"
 #include "core/log.hpp"
 #include "core/metrics/evaluation.hpp"
 #include "core/paths.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
@@ -26,20 +28,6 @@ using namespace ppsynth::app;
 
 const std::string kLines = "shared:data/exemplars/gabor-paper/lines.txt";
 const std::string kLinesRef = "shared:data/reference/lines/output.txt";
-
-fs::path scratch(const std::string& name) {
-  auto d = fs::temp_directory_path() / ("ppsynth_reproduce_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 json lines_panel(const std::string& name) {
   return json{{"name", name}, {"run", {{"exemplar", kLines}, {"method", {{"type", "gabor"}}}}}};
@@ -117,7 +105,7 @@ TEST_CASE("figure configs: unknown keys and bad values are errors naming the key
   j["panels"][0]["maps"] = {{"sigma", -1}};
   CHECK_THAT(error_of(j), Catch::Contains("panels[0].maps.sigma"));
   // A file's errors name the file.
-  const fs::path d = scratch("badfile");
+  const fs::path d = ppsynth::test::scratch_dir("reproduce_badfile");
   std::ofstream(d / "bad.json") << minimal().dump().substr(0, 20);
   CHECK_THROWS_WITH(load_reproduce_config((d / "bad.json").string()), Catch::Contains("bad.json"));
   j = minimal();
@@ -154,7 +142,7 @@ TEST_CASE("method columns: registry names, pending methods, parameters and --set
 
 TEST_CASE("a reproduction writes a report whose numbers match an independent evaluation", "[apps][reproduce]") {
   QuietLogs quiet;
-  const fs::path d = scratch("report");
+  const fs::path d = ppsynth::test::scratch_dir("reproduce_report");
   json panel = lines_panel("lines");
   panel["reference"] = kLinesRef;
   panel["stages"] = true;
@@ -193,7 +181,7 @@ TEST_CASE("a reproduction writes a report whose numbers match an independent eva
                  "panels/lines/ours/output.txt", "panels/lines/pcf2017/output.txt", "panels/lines/ours/snapshots/stage01.png"})
     CHECK(fs::exists(d / "rep" / f));
   CHECK_FALSE(fs::exists(d / "rep.partial"));
-  const std::string html = slurp(d / "rep/index.html");
+  const std::string html = ppsynth::read_file_text(d / "rep/index.html");
   CHECK(html.find("a claim") != std::string::npos);
   CHECK(html.find("data:image/png;base64,") != std::string::npos);
   CHECK(html.find("later_method: not available") != std::string::npos);
@@ -204,15 +192,15 @@ TEST_CASE("a reproduction writes a report whose numbers match an independent eva
   int lines = 0;
   for (std::string l; std::getline(mcsv, l);) ++lines;
   CHECK(lines == 1 + 5);
-  const std::string cmp = slurp(d / "rep/cmp.csv");
+  const std::string cmp = ppsynth::read_file_text(d / "rep/cmp.csv");
   CHECK(cmp.find("PCF MSE MWT11") != std::string::npos);
   CHECK(cmp.find("lines (paper)") != std::string::npos);
-  const std::string rr = slurp(d / "rep/relative_radius.csv");
+  const std::string rr = ppsynth::read_file_text(d / "rep/relative_radius.csv");
   CHECK(rr.find("0.7300") != std::string::npos);
-  const std::string rt = slurp(d / "rep/runtime.csv");
+  const std::string rt = ppsynth::read_file_text(d / "rep/runtime.csv");
   CHECK(rt.find("s per iteration (ours)") != std::string::npos);
 
-  json rep = json::parse(slurp(d / "rep/report.json"));
+  json rep = json::parse(ppsynth::read_file_text(d / "rep/report.json"));
   CHECK(rep["quick"] == true);
   CHECK(rep["panels"][0]["columns"].size() == 5);
   CHECK(rep["panels"][0]["columns"][0]["metrics"]["all"]["pcf_mse"] == column(p, "ours").metrics["all"]["pcf_mse"]);
@@ -220,8 +208,8 @@ TEST_CASE("a reproduction writes a report whose numbers match an independent eva
   // Same config and seed: byte-identical outputs.
   o.out = (d / "rep2").string();
   run_reproduction(c, o);
-  CHECK(slurp(d / "rep/panels/lines/ours/output.txt") == slurp(d / "rep2/panels/lines/ours/output.txt"));
-  CHECK(slurp(d / "rep/panels/lines/pcf2017/output.txt") == slurp(d / "rep2/panels/lines/pcf2017/output.txt"));
+  CHECK(ppsynth::read_file_text(d / "rep/panels/lines/ours/output.txt") == ppsynth::read_file_text(d / "rep2/panels/lines/ours/output.txt"));
+  CHECK(ppsynth::read_file_text(d / "rep/panels/lines/pcf2017/output.txt") == ppsynth::read_file_text(d / "rep2/panels/lines/pcf2017/output.txt"));
 
   // --reuse: a finished run with the same resolved config is copied, not re-run; a run whose
   // config differs (another seed) is not taken, and a full run never stands in for a quick one.
@@ -230,9 +218,9 @@ TEST_CASE("a reproduction writes a report whose numbers match an independent eva
   {
     std::ofstream marker(d / "pool/lines_a/reused_marker");
   }
-  json other = json::parse(slurp(d / "rep/panels/lines/ours/config.json"));
+  json other = json::parse(ppsynth::read_file_text(d / "rep/panels/lines/ours/config.json"));
   other["seed"] = 7;
-  CHECK_FALSE(same_synthesis(other, json::parse(slurp(d / "pool/lines_a/config.json"))));
+  CHECK_FALSE(same_synthesis(other, json::parse(ppsynth::read_file_text(d / "pool/lines_a/config.json"))));
   o.out = (d / "rep3").string();
   o.reuse = {(d / "pool").string()};
   auto r3 = run_reproduction(c, o);
@@ -240,13 +228,13 @@ TEST_CASE("a reproduction writes a report whose numbers match an independent eva
   CHECK(column(r3.panels[0], "ours").source.find("reused from") != std::string::npos);
   CHECK(column(r3.panels[0], "ours").metrics["all"]["pcf_mse"] == column(p, "ours").metrics["all"]["pcf_mse"]);
   CHECK_FALSE(fs::exists(d / "rep3/panels/lines/pcf2017/reused_marker"));
-  CHECK(find_matching_run(json::parse(slurp(d / "pool/lines_a/config.json")), false, o.reuse).empty());
+  CHECK(find_matching_run(json::parse(ppsynth::read_file_text(d / "pool/lines_a/config.json")), false, o.reuse).empty());
   o.reuse = {};
 }
 
 TEST_CASE("generated exemplars and Gabor map panels", "[apps][reproduce]") {
   QuietLogs quiet;
-  const fs::path d = scratch("generated");
+  const fs::path d = ppsynth::test::scratch_dir("reproduce_generated");
   json gen = {{"name", "g"}, {"run", {{"method", {{"type", "gabor"}}}}},
               {"exemplar_generator", {{"generator", {{"type", "jittered_grid"}}}, {"n", 25}, {"seed", 3}}}};
   json maps = {{"name", "m"}, {"kind", "gabor_maps"}, {"run", {{"exemplar", kLines}}},
@@ -260,7 +248,7 @@ TEST_CASE("generated exemplars and Gabor map panels", "[apps][reproduce]") {
   auto written = ppsynth::read_points((d / "rep/panels/g/exemplar.txt").string());
   CHECK(written.size() == 25);
   // The run's config.json names the exemplar where it is now, not in the ".partial" folder.
-  const std::string cfg = slurp(d / "rep/panels/g/ours/config.json");
+  const std::string cfg = ppsynth::read_file_text(d / "rep/panels/g/ours/config.json");
   CHECK(cfg.find(".partial") == std::string::npos);
   CHECK(json::parse(cfg)["exemplar"] == fs::absolute(d / "rep/panels/g/exemplar.txt").string());
   CHECK(r.panels[1].columns.empty());
@@ -275,7 +263,7 @@ TEST_CASE("generated exemplars and Gabor map panels", "[apps][reproduce]") {
   o.out = (d / "rep_same").string();
   auto same = run_reproduction(c1, o);
   CHECK(same.panels[0].columns[0].source.find("reused from") != std::string::npos);
-  CHECK(slurp(d / "rep_same/panels/g/ours/output.txt") == slurp(d / "rep/panels/g/ours/output.txt"));
+  CHECK(ppsynth::read_file_text(d / "rep_same/panels/g/ours/output.txt") == ppsynth::read_file_text(d / "rep/panels/g/ours/output.txt"));
   json gen2 = gen;
   gen2["exemplar_generator"]["seed"] = 4;
   o.out = (d / "rep_other").string();
@@ -289,7 +277,7 @@ TEST_CASE("generated exemplars and Gabor map panels", "[apps][reproduce]") {
 
 TEST_CASE("a failing reproduction writes nothing and keeps the previous report", "[apps][reproduce]") {
   QuietLogs quiet;
-  const fs::path d = scratch("failing");
+  const fs::path d = ppsynth::test::scratch_dir("reproduce_failing");
   std::ofstream(d / "bad.txt") << "0.1 0.2\n0.3 nan\n";
   json panel = {{"name", "p"}, {"run", {{"exemplar", (d / "bad.txt").string()}}}};
   auto c = parse(minimal(json::array({panel})));  // the file exists: it fails when read
@@ -299,7 +287,7 @@ TEST_CASE("a failing reproduction writes nothing and keeps the previous report",
   o.quick = true;
   o.out = (d / "rep").string();
   CHECK_THROWS_AS(run_reproduction(c, o), InputError);
-  CHECK(slurp(d / "rep/index.html") == "previous");
+  CHECK(ppsynth::read_file_text(d / "rep/index.html") == "previous");
   CHECK_FALSE(fs::exists(d / "rep.partial"));
   // A bad --set is refused before anything is written.
   auto good = parse(minimal());
@@ -312,7 +300,7 @@ TEST_CASE("a failing reproduction writes nothing and keeps the previous report",
 
 TEST_CASE("--panels runs only the named panels and says which were left out", "[apps][reproduce]") {
   QuietLogs quiet;
-  const fs::path d = scratch("panels");
+  const fs::path d = ppsynth::test::scratch_dir("reproduce_panels");
   auto c = parse(minimal(json::array({lines_panel("a"), lines_panel("b")})));
   ReproduceOptions o;
   o.quick = true;
@@ -322,7 +310,7 @@ TEST_CASE("--panels runs only the named panels and says which were left out", "[
   REQUIRE(r.panels.size() == 1);
   CHECK(r.panels[0].name == "b");
   CHECK_FALSE(fs::exists(d / "rep/panels/a"));
-  CHECK(slurp(d / "rep/index.html").find("panel(s) a not run") != std::string::npos);
+  CHECK(ppsynth::read_file_text(d / "rep/index.html").find("panel(s) a not run") != std::string::npos);
   o.panels = {"z"};
   o.out = (d / "rep_bad").string();
   CHECK_THROWS_WITH(run_reproduction(c, o), Catch::Contains("'z'") && Catch::Contains("a, b"));

@@ -8,6 +8,8 @@
 #include <regex>
 #include <string>
 
+#include "tests/support/scratch_dir.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -30,13 +32,6 @@ Result script(const std::string& args) {
   return r;
 }
 
-fs::path scratch(const std::string& name) {
-  auto d = fs::temp_directory_path() / ("ppsynth_scripts_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
 // The table row of `first` ("1", "median", ...), or "" when there is none.
 std::string row(const std::string& table, const std::string& first) {
   std::smatch m;
@@ -46,7 +41,7 @@ std::string row(const std::string& table, const std::string& first) {
 }  // namespace
 
 TEST_CASE("seed_sweep.sh runs a config per seed and tabulates it against a reference", "[apps][scripts]") {
-  const auto d = scratch("sweep");
+  const auto d = ppsynth::test::scratch_dir("scripts_sweep");
   const std::string lines = std::string(PPSYNTH_SOURCE_DIR) + "/configs/runs/lines.json";
   const std::string runs = " --runs " + d.string() + " ";
 
@@ -77,7 +72,7 @@ TEST_CASE("seed_sweep.sh runs a config per seed and tabulates it against a refer
 }
 
 TEST_CASE("seed_sweep.sh refuses bad arguments before running anything", "[apps][scripts]") {
-  const auto d = scratch("sweep_bad");
+  const auto d = ppsynth::test::scratch_dir("scripts_sweep_bad");
   const std::string lines = std::string(PPSYNTH_SOURCE_DIR) + "/configs/runs/lines.json";
   const std::string runs = " --runs " + d.string() + " ";
   CHECK(script("seed_sweep.sh" + runs + lines + " 3-1").status == 2);

@@ -7,27 +7,16 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/formats/text_table.hpp"
+#include "tests/support/scratch_dir.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 int run(const std::string& args) {
   const std::string cmd = std::string(PPSYNTH_BINARY) + " " + args + " > /dev/null 2>&1";
   return WEXITSTATUS(std::system(cmd.c_str()));
-}
-
-fs::path scratch(const std::string& name) {
-  auto d = fs::temp_directory_path() / ("ppsynth_cli_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
 }
 
 const std::string kLines = std::string(PPSYNTH_SOURCE_DIR) + "/configs/runs/lines.json";
@@ -35,7 +24,7 @@ const std::string kLines = std::string(PPSYNTH_SOURCE_DIR) + "/configs/runs/line
 }  // namespace
 
 TEST_CASE("synthesize --quick writes a complete run directory", "[apps][synthesize]") {
-  auto d = scratch("run");
+  auto d = ppsynth::test::scratch_dir("cli_run");
   REQUIRE(run("synthesize " + kLines + " --quick -q -o " + (d / "a").string()) == 0);
   for (auto f : {"output.txt", "output.gabor.txt", "init.txt", "exemplar_vs_output.png", "loss.csv", "loss.png",
                  "config.json", "run.json", "metrics.json", "pcf.png", "snapshots/stage01.png", "snapshots/stage02.txt"})
@@ -49,13 +38,13 @@ TEST_CASE("synthesize --quick writes a complete run directory", "[apps][synthesi
   CHECK(points == 80);
   // Same config and seed: byte-identical output.
   REQUIRE(run("synthesize " + kLines + " --quick -q -o " + (d / "b").string()) == 0);
-  CHECK(slurp(d / "a" / "output.txt") == slurp(d / "b" / "output.txt"));
+  CHECK(ppsynth::read_file_text(d / "a" / "output.txt") == ppsynth::read_file_text(d / "b" / "output.txt"));
   REQUIRE(run("synthesize " + kLines + " --quick -q --seed 7 -o " + (d / "c").string()) == 0);
-  CHECK(slurp(d / "a" / "output.txt") != slurp(d / "c" / "output.txt"));
+  CHECK(ppsynth::read_file_text(d / "a" / "output.txt") != ppsynth::read_file_text(d / "c" / "output.txt"));
 }
 
 TEST_CASE("synthesize refuses bad input and writes nothing", "[apps][synthesize]") {
-  auto d = scratch("bad");
+  auto d = ppsynth::test::scratch_dir("cli_bad");
   CHECK(run("synthesize " + kLines + " --quick -o " + (d / "x").string() + " --set method.c3=1") == 2);
   CHECK(run("synthesize --exemplar " + (d / "missing.txt").string() + " --quick -o " + (d / "y").string()) == 2);
   std::ofstream(d / "bad.txt") << "0.1 0.2\n0.3 nan\n";

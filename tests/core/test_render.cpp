@@ -14,18 +14,12 @@
 #include "core/render/image_grid.hpp"
 #include "core/render/plot_curves.hpp"
 #include "core/render/plot_points.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 using namespace ppsynth;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path scratch_dir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("ppsynth_test_render_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
 
 std::string head_bytes(const fs::path& p, size_t n) {
   std::ifstream in(p, std::ios::binary);
@@ -56,7 +50,7 @@ bool is_white(const std::array<int, 3>& c) { return c[0] > 250 && c[1] > 250 && 
 }  // namespace
 
 TEST_CASE("plots are written as PNG, SVG and PDF by extension", "[render]") {
-  const auto dir = scratch_dir("formats");
+  const auto dir = ppsynth::test::scratch_dir("render_formats");
   const PointSet ps = random_two_class(200, 7);
   CurvePlot cp{"loss", "iteration", "loss", true, {{"total", {1, 2, 3, 4}, {10, 1, 0.1, 0.05}, false}}};
   GrayImage im{4, 3, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}, "ramp"};
@@ -94,7 +88,7 @@ TEST_CASE("plots are written as PNG, SVG and PDF by extension", "[render]") {
 }
 
 TEST_CASE("unknown extension throws naming the path and leaves no file", "[render]") {
-  const auto dir = scratch_dir("badext");
+  const auto dir = ppsynth::test::scratch_dir("render_badext");
   const std::string bad = (dir / "points.jpg").string();
   CHECK_THROWS_AS(plot_points(bad, random_two_class(10, 1)), InputError);
   CHECK_THROWS_WITH(plot_points(bad, random_two_class(10, 1)), Catch::Contains(bad));
@@ -108,7 +102,7 @@ TEST_CASE("unknown extension throws naming the path and leaves no file", "[rende
 }
 
 TEST_CASE("bad plot inputs are InputErrors", "[render]") {
-  const auto dir = scratch_dir("badinput");
+  const auto dir = ppsynth::test::scratch_dir("render_badinput");
   PointStyle st;
   st.color_attribute = "depth";
   CHECK_THROWS_WITH(plot_points((dir / "p.png").string(), random_two_class(5, 2), st), Catch::Contains("depth"));
@@ -120,7 +114,7 @@ TEST_CASE("bad plot inputs are InputErrors", "[render]") {
 }
 
 TEST_CASE("a point with a radius attribute is drawn as a disk at its true radius", "[render]") {
-  const auto dir = scratch_dir("disk");
+  const auto dir = ppsynth::test::scratch_dir("render_disk");
   const fs::path png = dir / "disk.png";
   PointSet ps;  // unit square, one disk of radius 0.25 at (0.5, 0.5)
   ps.add_attribute("radius");
@@ -190,7 +184,7 @@ TEST_CASE("a point with a radius attribute is drawn as a disk at its true radius
 TEST_CASE("auto marker size follows the point count", "[render]") {
   // An output with 4x the points at the same image size must have smaller markers: count
   // the coloured pixels of a single point drawn alone vs. one point of a dense set.
-  const auto dir = scratch_dir("autosize");
+  const auto dir = ppsynth::test::scratch_dir("render_autosize");
   auto ink = [&](const PointSet& ps) {
     const fs::path p = dir / "p.png";
     plot_points(p.string(), ps, PointStyle{}, 300);
@@ -217,7 +211,7 @@ TEST_CASE("auto marker size follows the point count", "[render]") {
 }
 
 TEST_CASE("ppsynth plot and plot-pcf write images; a bad extension fails cleanly", "[render]") {
-  const auto dir = scratch_dir("cli");
+  const auto dir = ppsynth::test::scratch_dir("render_cli");
   const fs::path pts = dir / "pts.txt", other = dir / "other.txt";
   {
     std::mt19937_64 rng(11);
@@ -246,7 +240,7 @@ TEST_CASE("ppsynth plot and plot-pcf write images; a bad extension fails cleanly
 }
 
 TEST_CASE("a blank cell (empty title, empty set) of a panel grid draws nothing", "[render]") {
-  const auto dir = scratch_dir("blank");
+  const auto dir = ppsynth::test::scratch_dir("render_blank");
   const fs::path png = dir / "grid.png";
   const int px = 200;
   auto blank_half_is_white = [&](const std::string& title) {
