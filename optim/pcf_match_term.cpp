@@ -5,8 +5,8 @@
 
 #include "core/error.hpp"
 #include "core/metrics/pcf.hpp"
-#include "optim/point_term.hpp"
 #include "models/point_tensor.hpp"
+#include "optim/point_term.hpp"
 
 namespace ppsynth {
 
@@ -88,10 +88,6 @@ torch::Tensor PcfMatchTerm::operator()(const torch::Tensor& moving, const torch:
   return total;
 }
 
-}  // namespace ppsynth
-
-namespace ppsynth {
-
 namespace {
 
 // The registered form: divided by its value at the class's first evaluation, so at a
@@ -99,10 +95,8 @@ namespace {
 // fades as the class's PCF approaches the exemplar's.
 class PcfMatchPointTerm : public PointTerm {
  public:
-  explicit PcfMatchPointTerm(const nlohmann::json& p) {
-    if (!p["cross"].is_boolean()) throw config_error("method.terms.pcf_match.cross", "expected true or false");
-    cross_ = p["cross"].get<bool>();
-  }
+  // The registry has checked every key's type against the defaults below.
+  explicit PcfMatchPointTerm(const nlohmann::json& p) : cross_(p["cross"].get<bool>()) {}
   void begin_class(const ClassStage& s) override {
     term_ = std::make_unique<PcfMatchTerm>(s.exemplar, s.output, s.moving, s.frozen, s.upscale, cross_);
     start_ = -1;

@@ -65,10 +65,6 @@ torch::Tensor SeparationTerm::operator()(const torch::Tensor& moving, const torc
   return p;
 }
 
-}  // namespace ppsynth
-
-namespace ppsynth {
-
 namespace {
 
 // The registered form: builds the stage's thresholds at each class stage.
