@@ -20,6 +20,8 @@ json read_json_file(const std::string& path) {
     return json::parse(in, nullptr, true, /*ignore_comments=*/true);
   } catch (const json::parse_error& e) {
     throw file_error(path, 0, std::string("invalid JSON: ") + e.what());
+  } catch (const json::out_of_range& e) {  // a number beyond double ("1e400"; fuzz finding)
+    throw file_error(path, 0, std::string("invalid JSON: ") + e.what());
   }
 }
 
@@ -124,6 +126,13 @@ void set_override(json& config, const std::string& assignment) {
   auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
     throw InputError("--set '" + assignment + "': expected key.path=value");
+  // Keys and string values end up in the resolved config.json: one that is not UTF-8 could
+  // not be written (json::dump throws type_error 316; fuzz finding).
+  try {
+    (void)json(assignment).dump();
+  } catch (const json::type_error&) {
+    throw InputError("--set: the assignment is not valid UTF-8");
+  }
   std::string key = assignment.substr(0, eq), text = assignment.substr(eq + 1);
   json value;
   try {

@@ -73,6 +73,8 @@ PointSet parse_json_points(const std::string& text, const std::string& source) {
   } catch (const json::parse_error& e) {
     if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw file_error(source, 0, "empty file: no points");
     throw file_error(source, line_of_offset(text, e.byte > 0 ? e.byte - 1 : 0), std::string("invalid JSON: ") + e.what());
+  } catch (const json::out_of_range& e) {  // a number beyond double ("1e400"; fuzz finding)
+    throw file_error(source, 0, std::string("invalid JSON: ") + e.what());
   }
   if (!doc.is_object()) throw file_error(source, 1, "expected a JSON object with a \"points\" array");
   for (auto it = doc.begin(); it != doc.end(); ++it)

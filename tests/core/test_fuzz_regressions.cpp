@@ -1,0 +1,49 @@
+// Inputs found by the libFuzzer targets (tests/fuzz, scripts/fuzz.sh), one test case each:
+// the input as the fuzzer found it (or its minimal form), and the correct outcome, an
+// InputError naming the file or key, or a correct parse. Each names its target and finding.
+#include <fstream>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "core/config/config.hpp"
+#include "core/error.hpp"
+#include "core/formats/json_format.hpp"
+#include "core/formats/point_io.hpp"
+#include "tests/support/scratch_dir.hpp"
+
+using namespace ppsynth;
+
+// fuzz_json_points, fuzz_parse_points: a number beyond double made nlohmann::json throw
+// out_of_range (error 406), not parse_error, and it escaped the reader uncaught.
+TEST_CASE("fuzz: a JSON point number beyond double is an InputError", "[fuzz][formats]") {
+  const std::string text = "{\"points\": [[1e400, 0.2, 0]]}";
+  CHECK_THROWS_AS(parse_json_points(text, "overflow.json"), InputError);
+  CHECK_THROWS_WITH(parse_points(text, "overflow.json"), Catch::Contains("overflow.json") &&
+                                                             Catch::Contains("1e400"));
+  CHECK_THROWS_AS(parse_points("{\"points\": [[0.5, 0.5, 0]], \"domain\": [0, 0, -1e999, 1]}", "d.json"),
+                  InputError);
+  // Large but finite numbers still parse (and are then judged by the reader).
+  CHECK(parse_json_points("{\"points\": [[0.5, 0.25, 0]], \"domain\": [0, 0, 1e300, 1]}", "big.json").size() == 1);
+}
+
+// fuzz_config: the same overflow in a config file escaped load_config.
+TEST_CASE("fuzz: a config number beyond double is an InputError", "[fuzz][config]") {
+  const auto dir = test::scratch_dir("fuzz_config_overflow");
+  const std::string path = (dir / "c.json").string();
+  std::ofstream(path) << "{\"method\": {\"type\": \"pcf2017\", \"iterations\": \"many\", \"bins\": 1e999}}";
+  CHECK_THROWS_WITH(load_config(path), Catch::Contains("c.json") && Catch::Contains("1e999"));
+  CHECK_THROWS_AS(load_config(path), InputError);
+}
+
+// fuzz_config: "--set name=<bytes that are not UTF-8>" was stored as a string; writing the
+// resolved config (json::dump, config.json of every run) then threw type_error 316.
+TEST_CASE("fuzz: a --set assignment that is not UTF-8 is an InputError", "[fuzz][config]") {
+  json config = {{"seed", 1}};
+  CHECK_THROWS_AS(set_override(config, "name=\xff\xfe"), InputError);
+  CHECK_THROWS_AS(set_override(config, "method.\xc3=1"), InputError);  // a truncated sequence in a key
+  CHECK(config == json{{"seed", 1}});
+  set_override(config, "name=caf\xc3\xa9");  // valid UTF-8 is kept and writes back
+  CHECK(config["name"] == "caf\xc3\xa9");
+  CHECK_NOTHROW(config.dump());
+}
