@@ -16,6 +16,8 @@ PACKAGES=(
   catch2                  # unit tests (v2)
   libcli11-dev            # command line
   libcairo2-dev           # PNG / SVG / PDF plots
+  clang-14 libclang-rt-14-dev  # libFuzzer and the sanitizer runtimes (scripts/fuzz.sh)
+  llvm-14                 # llvm-symbolizer: file:line in sanitizer reports
 )
 
 need=()

@@ -1,8 +1,12 @@
 #!/usr/bin/env bash
 # The test command (README, .ci/run): installs what is missing, builds, runs the one Catch2
-# binary under CTest.
+# binary under CTest, then replays and briefly runs the fuzz targets (scripts/fuzz.sh).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$here/scripts/setup.sh"
 cd "$here"
 ctest --test-dir build --output-on-failure
+# The point-file readers and the config loader under libFuzzer (clang, ASan + UBSan, its own
+# build dir build-fuzz): the seed corpus replayed, then each target fuzzed briefly
+# (PPSYNTH_FUZZ_SECONDS per target, default 15; 0 = replay only).
+"$here/scripts/fuzz.sh" --seconds "${PPSYNTH_FUZZ_SECONDS:-15}"

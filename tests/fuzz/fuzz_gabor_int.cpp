@@ -1,0 +1,23 @@
+// libFuzzer target: the published Gabor integer format (core/formats/gabor_int_format.hpp),
+// its detector, and the write/read round trip of what it accepts. Contract: fuzz_common.hpp.
+#include "core/formats/gabor_int_format.hpp"
+#include "tests/fuzz/fuzz_common.hpp"
+
+using namespace ppsynth;
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  fuzz::quiet_logging();
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  (void)looks_like_gabor_int(text);
+  // Two names: the stem decides a single attribute column's name ("disk" -> radius).
+  for (const char* source : {"fuzz.txt", "fuzz_disk.txt"}) {
+    PointSet ps;
+    if (fuzz::accepts([&] { ps = parse_gabor_int(text, source, ReadOptions{}); }))
+      fuzz::check_parsed(ps, Format::GaborInt, source);
+  }
+  return 0;
+}
