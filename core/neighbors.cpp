@@ -29,6 +29,27 @@ double wrap_into(double v, double lo, double w) {
   return lo + t;
 }
 
+// Periodic results: `idx` holds image indices (block * n + i) in increasing distance. Keeps
+// the first (nearest) image of each point, in the original order, as point indices. Cost
+// O(k log k) in the number of results: the former per-query table of n flags made every
+// query O(n), so n queries (nearest neighbours of every point) were O(n^2).
+void keep_nearest_images(std::vector<size_t>& idx, std::vector<double>& d2, size_t n) {
+  std::vector<size_t> order(idx.size());
+  for (size_t t = 0; t < idx.size(); ++t) {
+    idx[t] %= n;
+    order[t] = t;
+  }
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return idx[a] != idx[b] ? idx[a] < idx[b] : a < b; });
+  std::vector<char> keep(idx.size(), 0);
+  for (size_t u = 0; u < order.size(); ++u)
+    if (u == 0 || idx[order[u]] != idx[order[u - 1]]) keep[order[u]] = 1;
+  size_t w = 0;
+  for (size_t t = 0; t < idx.size(); ++t)
+    if (keep[t]) idx[w] = idx[t], d2[w] = d2[t], ++w;
+  idx.resize(w);
+  d2.resize(w);
+}
+
 }  // namespace
 
 struct NeighborIndex::Impl {
@@ -86,24 +107,22 @@ std::vector<size_t> NeighborIndex::knn(Vec2 q, size_t k, std::vector<double>* di
   const double qp[2] = {q.x, q.y};
   const size_t total = m.cloud.pts.size();
   // Periodic: ask for more images until k distinct points are found (at most 9k needed).
+  std::vector<size_t> idx;
+  std::vector<double> d2;
   for (size_t want = k;; want = std::min(total, want * 2)) {
-    std::vector<size_t> idx(want);
-    std::vector<double> d2(want);
+    idx.resize(want);
+    d2.resize(want);
     const size_t got = m.tree->knnSearch(qp, want, idx.data(), d2.data());
-    out.clear();
-    std::vector<double> dd;
-    std::vector<char> seen(m.periodic ? m.n : 0, 0);
-    for (size_t t = 0; t < got && out.size() < k; ++t) {
-      size_t i = idx[t] % m.n;
-      if (m.periodic) {
-        if (seen[i]) continue;
-        seen[i] = 1;
+    idx.resize(got);
+    d2.resize(got);
+    if (m.periodic) keep_nearest_images(idx, d2, m.n);
+    if (idx.size() >= k || want == total) {
+      idx.resize(std::min(idx.size(), k));
+      out.assign(idx.begin(), idx.end());
+      if (dist) {
+        dist->resize(out.size());
+        for (size_t t = 0; t < out.size(); ++t) (*dist)[t] = std::sqrt(d2[t]);
       }
-      out.push_back(i);
-      dd.push_back(std::sqrt(d2[t]));
-    }
-    if (out.size() == k || want == total) {
-      if (dist) *dist = std::move(dd);
       return out;
     }
   }
@@ -122,23 +141,21 @@ std::vector<size_t> NeighborIndex::radius(Vec2 q, double r, std::vector<double>*
   const Impl& m = *impl_;
   std::vector<size_t> out;
   if (dist) dist->clear();
-  if (m.n == 0 || !(r >= 0)) return out;
+  if (m.n == 0 || !(r >= 0) || std::isnan(q.x) || std::isnan(q.y)) return out;
   q = m.wrap(q);
   const double qp[2] = {q.x, q.y};
   std::vector<std::pair<size_t, double>> found;
   // Squared radius; nudged so points at exactly r are included.
   m.tree->radiusSearch(qp, r * r * (1 + 1e-12), found, nanoflann::SearchParams(32, 0, true));
-  std::vector<char> seen(m.periodic ? m.n : 0, 0);
-  for (auto& [id, d2] : found) {
-    size_t i = id % m.n;
-    if (m.periodic) {
-      if (seen[i]) continue;
-      seen[i] = 1;
-    }
-    out.push_back(i);
-    if (dist) dist->push_back(std::sqrt(d2));
+  std::vector<size_t> idx(found.size());
+  std::vector<double> d2(found.size());
+  for (size_t t = 0; t < found.size(); ++t) idx[t] = found[t].first, d2[t] = found[t].second;
+  if (m.periodic) keep_nearest_images(idx, d2, m.n);
+  if (dist) {
+    dist->resize(d2.size());
+    for (size_t t = 0; t < d2.size(); ++t) (*dist)[t] = std::sqrt(d2[t]);
   }
-  return out;
+  return idx;
 }
 
 size_t NeighborIndex::nearest_other(size_t i, double* dist) const {

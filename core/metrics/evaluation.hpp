@@ -17,7 +17,16 @@
 //   "overlap": [ { "ci", "cj", "pairs", "pair_fraction", "point_fraction" } ] (when both
 //              sets have a "radius" attribute; output and exemplar as "output"/"exemplar")
 //   "spectrum": { "frequency", "exemplar", "output" } radially averaged power (optional)
-//   "options": the PCF options used.
+//   "options": the PCF options used (and wasserstein_exact_pairs).
+// Wasserstein per row: "wasserstein_method" "exact" | "subsample". Beyond the exact limit
+// (EvalOptions::wasserstein_max_pairs, |exemplar| x |patch| per quadrant; wasserstein.hpp)
+// "wasserstein" is null and the row carries "wasserstein_estimate" (subsample estimate) and
+// "wasserstein_sample" [exemplar points, patch points]; "wasserstein_note" says it in words and
+// the table prints the estimate as "~value" with a note.
+// More than kMaxPairClasses (64) classes: "cross" is empty and "cross_skipped" says why.
+// Cost (measured in docs/performance.md, "Evaluation on large inputs"): O(N log N) for the
+// nearest-neighbour statistics, Chamfer and the PCFs (k-d tree queries), the exact
+// Wasserstein O(n^2 m) up to the limit. Inputs of 50,000 points or more log each stage.
 // PCF curves are included unless options.include_curves is false ("r" in r_max units,
 // "output" = mean of the four quadrant patches' curves).
 #include <string>
@@ -25,6 +34,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/metrics/pcf.hpp"
+#include "core/metrics/wasserstein.hpp"
 #include "core/point_set.hpp"
 
 namespace ppsynth {
@@ -35,6 +45,7 @@ struct EvalOptions {
   bool spectrum = false;      // radially averaged spectra of both sets (O(N F^2))
   int spectrum_frequency = 32;
   bool periodic_overlap = false;
+  size_t wasserstein_max_pairs = kWassersteinExactPairs;  // exact assignment up to this many pairs
 };
 
 nlohmann::json evaluate(const PointSet& exemplar, const PointSet& output,

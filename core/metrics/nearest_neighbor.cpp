@@ -24,6 +24,16 @@ double packing_radius(size_t n, double area) {
   return std::sqrt(area / (2.0 * std::sqrt(3.0) * static_cast<double>(n)));
 }
 
+NnStats nn_stats(const PointSet& ps, bool periodic) {
+  auto d = nn_distances(ps, periodic, "nn_stats");
+  NnStats st;
+  double s = 0;
+  for (double v : d) s += v;
+  st.mean = s / d.size();
+  st.min = *std::min_element(d.begin(), d.end());
+  return st;
+}
+
 double mean_nn_distance(const PointSet& ps, bool periodic) {
   auto d = nn_distances(ps, periodic, "mean_nn_distance");
   double s = 0;

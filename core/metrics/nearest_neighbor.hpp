@@ -9,9 +9,17 @@
 // (hexagonal packing; on the unit torus r_max = sqrt(1 / (2 sqrt(3) N))). Dimensionless:
 // 1 for a perfect hexagonal lattice, ~0.75 for good blue noise, ~0 for white noise.
 // Fewer than 2 points throw InputError.
+// Cost: one k-d tree k-NN query per point, O(N log N) (torus: 9 images in the tree).
 #include "core/point_set.hpp"
 
 namespace ppsynth {
+
+// Smallest and mean nearest-neighbour distance in one pass (what min_nn_distance and
+// mean_nn_distance return).
+struct NnStats {
+  double min = 0, mean = 0;
+};
+NnStats nn_stats(const PointSet& ps, bool periodic = false);
 
 double mean_nn_distance(const PointSet& ps, bool periodic = false);
 double min_nn_distance(const PointSet& ps, bool periodic = false);

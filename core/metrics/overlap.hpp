@@ -7,7 +7,12 @@
 //                      n_ci * n_cj across classes)
 //   point_fraction   : fraction of the points of those classes overlapping at least one
 //                      disk of the pair's other class (within a class: any other disk)
-// A point set without a "radius" attribute throws InputError.
+// A point set without a "radius" attribute, or with a negative or NaN radius, throws
+// InputError (naming the point). Cost: O(N log N) plus the pairs within reach (each pair is
+// searched from its larger disk, within twice its radius); disks larger than the points'
+// bounding box (e.g. radius 1e300) overlap everything and are counted, not searched.
+// More than `max_pair_classes` classes: only the first entry (all classes together) is
+// returned (the K (K + 1) / 2 class pairs would not fit a table).
 #include <vector>
 
 #include "core/point_set.hpp"
@@ -22,6 +27,8 @@ struct OverlapCount {
 };
 
 // First entry: all classes together; then every class pair ci <= cj.
-std::vector<OverlapCount> disk_overlaps(const PointSet& ps, bool periodic = false);
+inline constexpr int kMaxPairClasses = 64;
+std::vector<OverlapCount> disk_overlaps(const PointSet& ps, bool periodic = false,
+                                        int max_pair_classes = kMaxPairClasses);
 
 }  // namespace ppsynth

@@ -1,7 +1,9 @@
 #include "core/metrics/wasserstein.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "core/error.hpp"
 
@@ -63,10 +65,11 @@ std::vector<size_t> optimal_assignment(const std::vector<double>& cost, size_t r
   return assignment;
 }
 
-double wasserstein_distance(const PointSet& a, const PointSet& b) {
-  if (a.empty() || b.empty()) throw InputError("wasserstein_distance: empty point set");
-  const PointSet& small = a.size() <= b.size() ? a : b;
-  const PointSet& large = a.size() <= b.size() ? b : a;
+namespace {
+
+double exact_mean_distance(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+  const std::vector<Vec2>& small = a.size() <= b.size() ? a : b;
+  const std::vector<Vec2>& large = a.size() <= b.size() ? b : a;
   const size_t n = small.size(), m = large.size();
   std::vector<double> cost(n * m);
   for (size_t i = 0; i < n; ++i)
@@ -76,6 +79,67 @@ double wasserstein_distance(const PointSet& a, const PointSet& b) {
   double s = 0;
   for (size_t i = 0; i < n; ++i) s += cost[i * m + match[i]];
   return s / n;
+}
+
+// k of the n positions, uniformly without replacement (partial Fisher-Yates), in index order.
+std::vector<Vec2> sample(const std::vector<Vec2>& pts, size_t k, std::mt19937_64& rng) {
+  std::vector<size_t> idx(pts.size());
+  for (size_t i = 0; i < idx.size(); ++i) idx[i] = i;
+  for (size_t i = 0; i < k; ++i) {
+    std::uniform_int_distribution<size_t> pick(i, idx.size() - 1);
+    std::swap(idx[i], idx[pick(rng)]);
+  }
+  idx.resize(k);
+  std::sort(idx.begin(), idx.end());
+  std::vector<Vec2> out;
+  out.reserve(k);
+  for (size_t i : idx) out.push_back(pts[i]);
+  return out;
+}
+
+void check_sets(const PointSet& a, const PointSet& b, size_t max_pairs) {
+  if (a.empty() || b.empty()) throw InputError("wasserstein_distance: empty point set");
+  if (max_pairs < 1) throw InputError("wasserstein_distance: the pair limit must be >= 1");
+}
+
+}  // namespace
+
+double wasserstein_distance(const PointSet& a, const PointSet& b, size_t max_pairs) {
+  check_sets(a, b, max_pairs);
+  if (static_cast<double>(a.size()) * b.size() > static_cast<double>(max_pairs))
+    throw InputError("wasserstein_distance: the exact assignment of " + std::to_string(a.size()) + " x " +
+                     std::to_string(b.size()) + " points exceeds the limit of " + std::to_string(max_pairs) +
+                     " pairs (O(n^2 m) time, n m memory); use wasserstein_estimate for a subsample estimate");
+  return exact_mean_distance(a.positions(), b.positions());
+}
+
+WassersteinResult wasserstein_estimate(const PointSet& a, const PointSet& b, size_t max_pairs, uint64_t seed) {
+  check_sets(a, b, max_pairs);
+  WassersteinResult r;
+  const size_t na = a.size(), nb = b.size();
+  if (static_cast<double>(na) * nb <= static_cast<double>(max_pairs)) {
+    r.value = exact_mean_distance(a.positions(), b.positions());
+    r.sample_a = na;
+    r.sample_b = nb;
+    return r;
+  }
+  // Largest samples with the size ratio of the sets: sa * sb <= max_pairs, sa / sb ~ na / nb.
+  const double ratio = static_cast<double>(na) / nb;
+  size_t sa = static_cast<size_t>(std::floor(std::sqrt(max_pairs * ratio)));
+  size_t sb = static_cast<size_t>(std::floor(std::sqrt(max_pairs / ratio)));
+  sa = std::clamp<size_t>(sa, 1, na);
+  sb = std::clamp<size_t>(sb, 1, nb);
+  // One side may be small enough to keep whole: give the other side what is left.
+  if (sa == na) sb = std::clamp<size_t>(max_pairs / sa, 1, nb);
+  if (sb == nb) sa = std::clamp<size_t>(max_pairs / sb, 1, na);
+  std::mt19937_64 rng(seed);
+  const std::vector<Vec2> pa = sample(a.positions(), sa, rng);
+  const std::vector<Vec2> pb = sample(b.positions(), sb, rng);
+  r.value = exact_mean_distance(pa, pb);
+  r.exact = false;
+  r.sample_a = sa;
+  r.sample_b = sb;
+  return r;
 }
 
 }  // namespace ppsynth
