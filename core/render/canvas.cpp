@@ -30,11 +30,20 @@ void check(cairo_status_t st, const std::string& path, const char* what) {
 
 }  // namespace
 
+bool image_size_ok(double width, double height) {
+  return width > 0 && height > 0 && width <= kMaxImageSide && height <= kMaxImageSide &&
+         width * height <= kMaxImagePixels;
+}
+
 void render_to_file(const std::string& path, int width, int height,
                     const std::function<void(cairo_t*)>& draw) {
   if (width <= 0 || height <= 0)
     throw file_error(path, 0, "image size must be positive (got " + std::to_string(width) + "x" +
                                   std::to_string(height) + ")");
+  if (!image_size_ok(width, height))
+    throw file_error(path, 0, "image of " + std::to_string(width) + " x " + std::to_string(height) +
+                                  " px is beyond the limit of " + std::to_string(kMaxImageSide) + " px a side and " +
+                                  std::to_string(static_cast<long>(kMaxImagePixels / 1e6)) + " megapixels");
   const ImageKind kind = image_kind_for(path);  // before any file is touched
   write_via_temp(path, [&](const std::string& tmp) {
     cairo_surface_t* surface = nullptr;

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/error.hpp"
+#include "core/log.hpp"
 #include "core/render/canvas.hpp"
 #include "core/render/palette.hpp"
 #include "core/render/plot_frame.hpp"
@@ -27,7 +28,20 @@ void check_series(const CurvePlot& plot, const std::string& path) {
                        " x values but " + std::to_string(s.y.size()) + " y values");
 }
 
-bool usable(double x, double y, bool log_y) { return std::isfinite(x) && std::isfinite(y) && (!log_y || y > 0); }
+// Values beyond +-1e150 are drawn as gaps like NaN: their differences would overflow the
+// axis arithmetic and hand cairo non-finite coordinates.
+constexpr double kMaxAbs = 1e150;
+bool usable(double x, double y, bool log_y) {
+  return std::isfinite(x) && std::isfinite(y) && std::abs(x) <= kMaxAbs && std::abs(y) <= kMaxAbs && (!log_y || y > 0);
+}
+
+// An empty or degenerate range [v, v] (also at 1e20, where v +- 0.5 == v) gets a width.
+void widen(double& lo, double& hi) {
+  if (hi - lo > std::abs(lo) * 1e-12 && hi - lo > 0) return;
+  const double w = std::max(0.5, std::abs(lo) * 1e-6);
+  lo -= w;
+  hi += w;
+}
 
 // Draws one plot inside the box (bx, by, bw, bh).
 void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double bw, double bh) {
@@ -41,7 +55,7 @@ void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double 
       }
   const bool has_data = xlo <= xhi;
   if (!has_data) xlo = 0, xhi = 1, ylo = plot.log_y ? 0.1 : 0, yhi = 1;
-  if (xhi == xlo) xlo -= 0.5, xhi += 0.5;
+  widen(xlo, xhi);
   // Curves that start just above 0 (PCF radii from 0.01 r_max) get an axis from 0.
   if (has_data && xlo > 0 && xlo < 0.05 * (xhi - xlo)) xlo = 0;
   std::vector<double> yt;
@@ -58,15 +72,17 @@ void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double 
     ylo = std::pow(10.0, l0), yhi = std::pow(10.0, l1);
     yt = log_ticks(ylo, yhi);
   } else {
-    if (yhi == ylo) ylo -= 0.5, yhi += 0.5;
+    widen(ylo, yhi);
     // Expand to the enclosing tick steps so the curve never touches the frame.
     yt = nice_ticks(ylo, yhi, 5);
     const double step = yt.size() >= 2 ? yt[1] - yt[0] : (yhi - ylo);
     ylo = std::floor(ylo / step + 1e-9) * step;
     yhi = std::ceil(yhi / step - 1e-9) * step;
     if (yhi - ylo < 1e-12) yhi = ylo + step;
+    widen(ylo, yhi);
     yt = nice_ticks(ylo, yhi, 5);
   }
+  widen(xlo, xhi);
   const std::vector<double> xt = nice_ticks(xlo, xhi, 6);
 
   // --- layout ---
@@ -179,16 +195,97 @@ void plot_curves(const std::string& path, const CurvePlot& plot, int width_px, i
                          [&](cairo_t* cr) { draw_plot(cr, plot, 0, 0, width_px, height_px); });
 }
 
+namespace {
+constexpr double kMinGridScale = 0.6;
+constexpr int kGridHeader = 30;
+// A grid of many plots stays a figure one can open: 16 megapixels (64 MB as a raster).
+constexpr double kGridMaxPixels = 16.0e6;
+
+bool fits(double w, double h) { return render::image_size_ok(w, h) && w * h <= kGridMaxPixels; }
+}  // namespace
+
+CurveGridLayout curve_grid_layout(size_t n, int columns, int cell_w, int cell_h) {
+  CurveGridLayout l;
+  if (cell_w < 1 || cell_h < 1) return l;  // plot_curve_grid refuses such cells
+  n = std::max<size_t>(n, 1);
+  // As asked.
+  {
+    const size_t cols = columns <= 0 ? n : std::min<size_t>(static_cast<size_t>(columns), n);
+    const size_t rows = (n + cols - 1) / cols;
+    if (fits(static_cast<double>(cols) * cell_w, static_cast<double>(rows) * cell_h)) {
+      l.columns = static_cast<int>(cols), l.rows = static_cast<int>(rows), l.shown = n;
+      l.width = l.columns * cell_w, l.height = l.rows * cell_h;
+      return l;
+    }
+  }
+  // Nearly square, cells shrinking to kMinGridScale; then the first plots that fit.
+  for (int step = 0;; ++step) {
+    const double scale = std::max(kMinGridScale, 1.0 - 0.05 * step);
+    const double w = cell_w * scale, h = cell_h * scale;
+    const bool last = scale <= kMinGridScale;
+    const double header = last ? kGridHeader : 0;
+    const size_t max_cols = static_cast<size_t>(std::max(1.0, std::floor(render::kMaxImageSide / w)));
+    const size_t max_rows = static_cast<size_t>(std::max(1.0, std::floor((render::kMaxImageSide - header) / h)));
+    // Capacity: at most max_cols x max_rows cells and kMaxImagePixels.
+    size_t cap = 0;
+    size_t best_cols = 1;
+    for (size_t cols = 1; cols <= max_cols; ++cols) {
+      const double area_rows = std::floor((kGridMaxPixels / (cols * w) - header) / h);
+      const size_t rows = std::min(max_rows, static_cast<size_t>(std::max(0.0, area_rows)));
+      if (cols * rows > cap) cap = cols * rows, best_cols = cols;
+    }
+    if (n <= cap || last) {
+      const size_t shown = std::min(n, std::max<size_t>(cap, 1));
+      // Nearly square image for the plots shown, within the limits.
+      size_t cols = static_cast<size_t>(std::ceil(std::sqrt(shown * h / w)));
+      cols = std::clamp<size_t>(cols, 1, max_cols);
+      auto rows_for = [&](size_t c) { return (shown + c - 1) / c; };
+      while (cols < max_cols && !fits(cols * w, rows_for(cols) * h + (shown < n ? header : 0))) ++cols;
+      if (!fits(cols * w, rows_for(cols) * h + (shown < n ? header : 0))) cols = best_cols;
+      l.columns = static_cast<int>(cols);
+      l.rows = static_cast<int>(rows_for(cols));
+      l.scale = scale;
+      l.shown = shown;
+      l.header = shown < n ? kGridHeader : 0;
+      l.width = static_cast<int>(std::ceil(cols * w));
+      l.height = static_cast<int>(std::ceil(l.rows * h)) + l.header;
+      return l;
+    }
+  }
+}
+
+bool curve_grid_fits(size_t n, int columns, int cell_w, int cell_h) {
+  return curve_grid_layout(n, columns, cell_w, cell_h).shown >= std::max<size_t>(n, 1);
+}
+
 void plot_curve_grid(const std::string& path, const std::vector<CurvePlot>& plots, int columns, int cell_w,
                      int cell_h) {
   render::image_kind_for(path);
   if (plots.empty()) throw InputError("plot " + path + ": no plots in the grid");
+  if (cell_w < 40 || cell_h < 40 || cell_w > render::kMaxImageSide || cell_h > render::kMaxImageSide)
+    throw InputError("plot " + path + ": grid cells must be 40.." + std::to_string(render::kMaxImageSide) +
+                     " px (got " + std::to_string(cell_w) + "x" + std::to_string(cell_h) + ")");
   for (const auto& p : plots) check_series(p, path);
-  const int n = static_cast<int>(plots.size());
-  const int cols = columns <= 0 ? n : std::min(columns, n);
-  const int rows = (n + cols - 1) / cols;
-  render::render_to_file(path, cols * cell_w, rows * cell_h, [&](cairo_t* cr) {
-    for (int i = 0; i < n; ++i) draw_plot(cr, plots[i], (i % cols) * cell_w, (i / cols) * cell_h, cell_w, cell_h);
+  const CurveGridLayout l = curve_grid_layout(plots.size(), columns, cell_w, cell_h);
+  if (l.shown < plots.size())
+    spdlog::warn("plot {}: {} plots do not fit one image; drawing the first {}", path, plots.size(), l.shown);
+  render::render_to_file(path, l.width, l.height, [&](cairo_t* cr) {
+    if (l.header > 0) {
+      std::string note = "showing the first " + std::to_string(l.shown) + " of " + std::to_string(plots.size()) +
+                         " plots; " + std::to_string(plots.size() - l.shown) + " left out: " +
+                         plots[l.shown].title;
+      for (size_t i = l.shown + 1; i < plots.size() && i < l.shown + 3; ++i) note += ", " + plots[i].title;
+      if (plots.size() - l.shown > 3) note += ", ...";
+      set_color(cr, kText);
+      draw_text(cr, note, kPad, l.header / 2.0, 13, HAlign::Left, VAlign::Middle, true);
+    }
+    for (size_t i = 0; i < l.shown; ++i) {
+      cairo_save(cr);
+      cairo_translate(cr, (i % l.columns) * cell_w * l.scale, l.header + (i / l.columns) * cell_h * l.scale);
+      cairo_scale(cr, l.scale, l.scale);
+      draw_plot(cr, plots[i], 0, 0, cell_w, cell_h);
+      cairo_restore(cr);
+    }
   });
 }
 

@@ -23,21 +23,39 @@ std::vector<double> nice_ticks(double lo, double hi, int target) {
     return out;
   }
   const double raw = (hi - lo) / std::max(1, target);
+  if (!std::isfinite(raw) || !(raw > 0)) {  // [-1e308, 1e308]: the width overflows
+    out.push_back(lo);
+    out.push_back(hi);
+    return out;
+  }
   const double mag = std::pow(10.0, std::floor(std::log10(raw)));
   double step = mag;
   for (double m : {1.0, 2.0, 2.5, 5.0, 10.0}) {
     step = m * mag;
     if (step >= raw) break;
   }
+  if (!std::isfinite(step) || !(step > 0)) {
+    out.push_back(lo);
+    return out;
+  }
   const double eps = step * 1e-9;
-  for (double t = std::ceil((lo - eps) / step) * step; t <= hi + eps; t += step)
+  // t_k = first + k step (not t += step: below the precision of lo, e.g. [1e20, 1e20 + 1 ulp],
+  // t += step leaves t unchanged and the loop never ended); at most kMaxTicks, each one new.
+  const double first = std::ceil((lo - eps) / step) * step;
+  constexpr int kMaxTicks = 64;
+  for (int k = 0; k < kMaxTicks; ++k) {
+    const double t = first + k * step;
+    if (!(t <= hi + eps)) break;
+    if (!out.empty() && !(t > out.back())) continue;
     out.push_back(std::fabs(t) < eps ? 0.0 : t);
+  }
   return out;
 }
 
 std::vector<double> log_ticks(double lo, double hi) {
   std::vector<double> out;
   if (!(lo > 0) || !(hi > lo)) return out;
+  if (!std::isfinite(lo) || !std::isfinite(hi)) return out;
   const int k0 = static_cast<int>(std::floor(std::log10(lo))), k1 = static_cast<int>(std::ceil(std::log10(hi)));
   const bool fine = (k1 - k0) < 3;
   const int stride = std::max(1, (k1 - k0) / 6);  // at most ~7 decade labels

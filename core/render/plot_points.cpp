@@ -46,7 +46,9 @@ bool uses_disks(const PointSet& ps, const PointStyle& st) {
 
 // Side lengths in px of the frame for a domain fitted in a square of side `side`.
 void frame_size(const Domain& d, double side, double& w, double& h) {
-  const double aspect = d.width() > 0 && d.height() > 0 ? d.height() / d.width() : 1.0;
+  double aspect = d.width() > 0 && d.height() > 0 ? d.height() / d.width() : 1.0;
+  if (!std::isfinite(aspect) || aspect <= 0) aspect = 1.0;
+  aspect = std::clamp(aspect, 1e-3, 1e3);  // a 1e-300-high strip still gets a visible frame
   if (aspect <= 1) {
     w = side;
     h = side * aspect;
@@ -64,11 +66,89 @@ double auto_radius(size_t n, double w_px, double h_px) {
   return std::clamp(0.2 * spacing, 0.6, 8.0);
 }
 
+// Radii (px) up to kArcPx go to cairo_arc as they are (cairo's fixed-point coordinates end
+// at +-8e6 px); up to kPolylinePx the visible part of the rim is a polyline computed here;
+// beyond, the rim is a straight edge (off the arc by diagonal^2 / (2 r) < 1e-4 px).
+constexpr double kArcPx = 2e6, kPolylinePx = 1e12;
+
+// A disk (light fill, outline) of centre (cx, cy) and radius r px seen through the frame
+// (fx, fy, fw, fh). Only geometry near the frame reaches cairo: a disk of radius 1e30 px
+// made cairo flatten an arc of ~1e31 segments (it never returned), and cairo's fixed-point
+// coordinates end at +-8e6 px. Non-finite centres are skipped; NaN or negative radii are
+// drawn as the smallest disk (0.5 px); a disk containing the frame fills it.
+void draw_disk_clipped(cairo_t* cr, double cx, double cy, double r, double fx, double fy, double fw, double fh,
+                       const Rgb& c) {
+  if (!std::isfinite(cx) || !std::isfinite(cy)) return;
+  if (!(r >= 0.5)) r = 0.5;  // NaN, negative, tiny
+  const double lw = std::isfinite(r) ? std::clamp(r * 0.08, 0.5, 1.2) : 1.2;
+  const double dx = std::max({fx - cx, 0.0, cx - (fx + fw)}), dy = std::max({fy - cy, 0.0, cy - (fy + fh)});
+  const double nearest = std::hypot(dx, dy);
+  const double farthest = std::hypot(std::max(std::abs(cx - fx), std::abs(cx - fx - fw)),
+                                     std::max(std::abs(cy - fy), std::abs(cy - fy - fh)));
+  if (nearest > r + lw) return;  // wholly outside the frame
+  cairo_save(cr);
+  cairo_new_path(cr);
+  if (r > farthest + lw) {  // the frame lies inside the disk: all of it is tinted
+    cairo_rectangle(cr, fx, fy, fw, fh);
+    set_color(cr, c, 0.35);
+    cairo_fill(cr);
+  } else if (r <= kArcPx) {
+    cairo_arc(cr, cx, cy, r, 0, 2 * M_PI);
+    set_color(cr, c, 0.35);
+    cairo_fill_preserve(cr);
+    set_color(cr, c, 0.95);
+    cairo_set_line_width(cr, lw);
+    cairo_stroke(cr);
+  } else {
+    // The rim crosses the frame from a centre far away. Only the part of the rim inside the
+    // circle of radius R around the frame's centre m is drawn; the fill is closed by two
+    // points 2D inwards (towards the centre) from the ends of that arc.
+    const double mx = fx + fw / 2, my = fy + fh / 2;
+    const double R = std::hypot(fw, fh) / 2 + 4 * lw, D = 2 * R;
+    const double L = std::hypot(cx - mx, cy - my);
+    const double ux = (mx - cx) / L, uy = (my - cy) / L;  // from the centre towards m
+    std::vector<std::pair<double, double>> rim;  // points relative to m
+    if (r <= kPolylinePx) {
+      // Angle between u and the rim points on that circle: cos a = 1 - (R^2 - (L - r)^2) / (2 r L).
+      const double ca = std::clamp(1 - (R * R - (L - r) * (L - r)) / (2 * r * L), -1.0, 1.0);
+      const double a = std::acos(ca), phi = std::atan2(uy, ux);
+      const int segs = 256;
+      for (int k = 0; k <= segs; ++k) {
+        const double t = phi - a + 2 * a * k / segs;
+        // centre + r (cos t, sin t) - m, without forming the far-away centre's coordinates:
+        // = (r cos t - L ux, r sin t - L uy), with L = r + (L - r) to keep the digits.
+        const double e = L - r;
+        rim.push_back({r * (std::cos(t) - ux) - e * ux, r * (std::sin(t) - uy) - e * uy});
+      }
+    } else {
+      const double s = std::clamp(L - r, -D, D);  // centre-to-m distance minus r: m to the rim
+      const double vx = -uy, vy = ux;
+      rim.push_back({-ux * s + vx * D, -uy * s + vy * D});
+      rim.push_back({-ux * s - vx * D, -uy * s - vy * D});
+    }
+    cairo_move_to(cr, mx + rim.front().first, my + rim.front().second);
+    for (size_t k = 1; k < rim.size(); ++k) cairo_line_to(cr, mx + rim[k].first, my + rim[k].second);
+    cairo_line_to(cr, mx + rim.back().first - ux * 2 * D, my + rim.back().second - uy * 2 * D);
+    cairo_line_to(cr, mx + rim.front().first - ux * 2 * D, my + rim.front().second - uy * 2 * D);
+    cairo_close_path(cr);
+    set_color(cr, c, 0.35);
+    cairo_fill(cr);
+    cairo_move_to(cr, mx + rim.front().first, my + rim.front().second);
+    for (size_t k = 1; k < rim.size(); ++k) cairo_line_to(cr, mx + rim[k].first, my + rim[k].second);
+    set_color(cr, c, 0.95);
+    cairo_set_line_width(cr, lw);
+    cairo_stroke(cr);
+  }
+  cairo_restore(cr);
+}
+
 // Draws the frame, the ticks and the points of `ps` with the frame's top-left at (fx, fy).
 void draw_points_in_frame(cairo_t* cr, const PointSet& ps, const PointStyle& st, double fx, double fy,
                           double fw, double fh, const Range& color_range) {
   const Domain& d = ps.domain();
-  const double sx = fw / (d.width() > 0 ? d.width() : 1), sy = fh / (d.height() > 0 ? d.height() : 1);
+  double sx = fw / (d.width() > 0 ? d.width() : 1), sy = fh / (d.height() > 0 ? d.height() : 1);
+  if (!std::isfinite(sx) || sx <= 0) sx = 1;
+  if (!std::isfinite(sy) || sy <= 0) sy = 1;
   auto X = [&](double x) { return fx + (x - d.x0) * sx; };
   auto Y = [&](double y) { return fy + fh - (y - d.y0) * sy; };  // y up
 
@@ -117,20 +197,18 @@ void draw_points_in_frame(cairo_t* cr, const PointSet& ps, const PointStyle& st,
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
     const Rgb c = color_a >= 0 ? viridis(color_range.norm(ps.attr(i, color_a))) : class_color(ps.cls(i));
     if (radius_a >= 0) {
-      const double r = std::max(0.0, ps.attr(i, radius_a)) * std::sqrt(sx * sy);
-      cairo_new_path(cr);
-      cairo_arc(cr, X(p.x), Y(p.y), std::max(r, 0.5), 0, 2 * M_PI);
-      set_color(cr, c, 0.35);
-      cairo_fill_preserve(cr);
-      set_color(cr, c, 0.95);
-      cairo_set_line_width(cr, std::clamp(r * 0.08, 0.5, 1.2));
-      cairo_stroke(cr);
+      const double r = ps.attr(i, radius_a) * std::sqrt(sx * sy);
+      draw_disk_clipped(cr, X(p.x), Y(p.y), r, fx, fy, fw, fh, c);
       continue;
     }
     double r = base;
     if (size_a >= 0) r = base * (0.5 + 1.5 * size_range.norm(ps.attr(i, size_a)));
+    if (!std::isfinite(r) || r <= 0) r = base;
+    const double cx = X(p.x), cy = Y(p.y);
+    if (!std::isfinite(cx) || !std::isfinite(cy) || cx < fx - r || cx > fx + fw + r || cy < fy - r || cy > fy + fh + r)
+      continue;  // outside the frame (and its clip)
     cairo_new_path(cr);
-    cairo_arc(cr, X(p.x), Y(p.y), r, 0, 2 * M_PI);
+    cairo_arc(cr, cx, cy, r, 0, 2 * M_PI);
     set_color(cr, c);
     cairo_fill(cr);
   }
@@ -236,6 +314,13 @@ void plot_panels(const std::string& path, const std::vector<std::pair<std::strin
   const double cbar_h = style.color_attribute.empty() ? 0 : kColorbarH;
   const double height = rows * cell_h + leg_h + cbar_h + kMargin;
 
+  if (!render::image_size_ok(std::ceil(width), std::ceil(height)))
+    throw InputError("plot " + path + ": " + std::to_string(n) + " panels of " + std::to_string(panel_px) + " px in " +
+                     std::to_string(cols) + " columns make a " + std::to_string(static_cast<long>(std::ceil(width))) +
+                     " x " + std::to_string(static_cast<long>(std::ceil(height))) + " px image, beyond the limit of " +
+                     std::to_string(render::kMaxImageSide) + " px a side and " +
+                     std::to_string(static_cast<long>(render::kMaxImagePixels / 1e6)) +
+                     " megapixels: use --columns or a smaller --size");
   render::render_to_file(path, static_cast<int>(std::ceil(width)), static_cast<int>(std::ceil(height)), [&](cairo_t* cr) {
     for (int i = 0; i < n; ++i) {
       if (blank(panels[i])) continue;

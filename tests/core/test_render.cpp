@@ -7,12 +7,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <limits>
 #include <random>
 #include <string>
 
 #include "core/error.hpp"
 #include "core/render/image_grid.hpp"
+#include "core/render/canvas.hpp"
 #include "core/render/plot_curves.hpp"
+#include "core/render/plot_frame.hpp"
 #include "core/render/plot_points.hpp"
 #include "tests/support/scratch_dir.hpp"
 
@@ -263,4 +267,105 @@ TEST_CASE("a blank cell (empty title, empty set) of a panel grid draws nothing",
   PointStyle by_depth;
   by_depth.color_attribute = "depth";
   CHECK_NOTHROW(plot_panels(png.string(), {{"a", coloured}, {"", PointSet()}}, by_depth, px, 2));
+}
+
+// --- issue 16: rendering limits ----------------------------------------------------------
+
+TEST_CASE("disks of radius 1e30, 1e300, inf or < 0 are drawn clipped, promptly", "[render][limits]") {
+  // A huge disk used to make cairo flatten an arc of 1e32 px (it never returned).
+  const auto dir = ppsynth::test::scratch_dir("render_huge_disk");
+  const fs::path png = dir / "huge.png";
+  for (double r : {1e30, 1e300, std::numeric_limits<double>::infinity()}) {
+    INFO("radius " << r);
+    PointSet ps;
+    ps.add_attribute("radius");
+    ps.add({0.5, 0.5}, 0, {r});
+    ps.add({0.2, 0.8}, 0, {0.01});
+    plot_points(png.string(), ps, PointStyle{}, 80);
+    cairo_surface_t* s = cairo_image_surface_create_from_png(png.string().c_str());
+    REQUIRE(cairo_surface_status(s) == CAIRO_STATUS_SUCCESS);
+    // The disk covers the whole frame: its centre pixel is tinted, not white.
+    const int w = cairo_image_surface_get_width(s), h = cairo_image_surface_get_height(s);
+    CHECK_FALSE(is_white(pixel(s, w / 2 + 8, h / 2)));
+    cairo_surface_destroy(s);
+  }
+  // A disk far outside the frame whose rim crosses it, NaN and negative radii, in a vector file.
+  PointSet odd;
+  odd.add_attribute("radius");
+  odd.add({0.5, 0.5}, 0, {std::nan("")});
+  odd.add({0.4, 0.4}, 0, {-3.0});
+  odd.add({0.6, 0.6}, 1, {1e-300});
+  PointSet far(Domain{0, 0, 1, 1});
+  far.add_attribute("radius");
+  far.add({1e20, 0.5}, 0, {1e20 - 0.5});  // outside the domain: rim through x = 0.5
+  CHECK_NOTHROW(plot_points((dir / "odd.pdf").string(), odd, PointStyle{}, 80));
+  CHECK_NOTHROW(plot_points((dir / "far.png").string(), far, PointStyle{}, 80));
+  CHECK_NOTHROW(plot_panels((dir / "both.svg").string(), {{"a", odd}, {"b", far}}, PointStyle{}, 80));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("tick positions terminate for ranges below the precision of their values", "[render][limits]") {
+  // [1e20, 1e20 + one ulp] with 5 ticks: a step of 5000 does not move 1e20; the loop never ended.
+  const double lo = 1e20, hi = std::nextafter(1e20, 1e21);
+  const auto t = render::nice_ticks(lo, hi, 5);
+  CHECK(t.size() <= 64);
+  CHECK(render::nice_ticks(0, 1e-320, 5).size() <= 64);
+  CHECK(render::nice_ticks(-1e308, 1e308, 5).size() <= 64);
+  const auto dir = ppsynth::test::scratch_dir("render_ticks");
+  CurvePlot cp{"extreme", "x", "y", false, {{"s", {lo, hi, 1e300}, {-1e308, 1e308, 0}, false}}};
+  CHECK_NOTHROW(plot_curves((dir / "c.png").string(), cp, 200, 150));
+  cp.log_y = true;
+  cp.series[0].y = {1e-320, 1e308, 1};
+  CHECK_NOTHROW(plot_curves((dir / "l.png").string(), cp, 200, 150));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a PCF grid of 30 classes (465 pairs) renders within cairo's limits", "[render][limits]") {
+  // 1 + 30 classes + 435 cross pairs = 466 panels: 156 rows of 260 px at 3 columns, beyond
+  // cairo's 32767 px; it failed after a whole synthesis. Now the grid is laid out to fit.
+  const auto dir = ppsynth::test::scratch_dir("render_big_grid");
+  std::vector<double> r(100), g(100);
+  for (int k = 0; k < 100; ++k) r[k] = 0.01 + 2.49 * k / 99, g[k] = 1 - std::exp(-r[k] * r[k]);
+  std::vector<CurvePlot> plots;
+  for (int i = 0; i < 466; ++i)
+    plots.push_back({"cross " + std::to_string(i), "r / r_max", "g(r)", false,
+                     {{"exemplar", r, g, true}, {"output", r, g, false}}});
+  const fs::path png = dir / "pcf.png";
+  CHECK(curve_grid_fits(466, 3, 360, 260));
+  CHECK_NOTHROW(plot_curve_grid(png.string(), plots, 3));
+  cairo_surface_t* s = cairo_image_surface_create_from_png(png.string().c_str());
+  REQUIRE(cairo_surface_status(s) == CAIRO_STATUS_SUCCESS);
+  CHECK(cairo_image_surface_get_width(s) <= render::kMaxImageSide);
+  CHECK(cairo_image_surface_get_height(s) <= render::kMaxImageSide);
+  cairo_surface_destroy(s);
+  // Any count: the layout says up front what is shown; beyond capacity the first panels are
+  // drawn with a title saying how many were left out.
+  for (size_t n : {size_t(1), size_t(466), size_t(5000), size_t(1000000)}) {
+    const CurveGridLayout l = curve_grid_layout(n, 3, 360, 260);
+    INFO("n " << n);
+    CHECK(l.shown <= n);
+    CHECK(l.shown >= 1);
+    CHECK(l.width <= render::kMaxImageSide);
+    CHECK(l.height <= render::kMaxImageSide);
+    CHECK(static_cast<double>(l.width) * l.height <= render::kMaxImagePixels);
+    CHECK(curve_grid_fits(n, 3, 360, 260) == (l.shown == n));
+  }
+  CHECK_FALSE(curve_grid_fits(1000000, 3, 360, 260));
+  std::vector<CurvePlot> many(3000, plots[0]);
+  const fs::path svg = dir / "many.svg";
+  CHECK_NOTHROW(plot_curve_grid(svg.string(), many, 3, 360, 260));
+  std::ifstream in(svg);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(text.size() > 1000);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("an image beyond the size limit is an InputError before any allocation", "[render][limits]") {
+  const auto dir = ppsynth::test::scratch_dir("render_too_big");
+  CurvePlot cp{"t", "x", "y", false, {{"s", {0, 1}, {0, 1}, false}}};
+  CHECK_THROWS_WITH(plot_curves((dir / "c.png").string(), cp, 30000, 30000), Catch::Contains("limit"));
+  std::vector<std::pair<std::string, PointSet>> panels(60, {"p", random_two_class(10, 1)});
+  CHECK_THROWS_WITH(plot_panels((dir / "p.png").string(), panels, PointStyle{}, 8000, 0), Catch::Contains("--columns"));
+  CHECK(fs::is_empty(dir));
+  fs::remove_all(dir);
 }

@@ -38,8 +38,9 @@ CurvePlot pcf_plot(const std::string& title, const PointSet& ex, const PointSet&
 
 int run(const PlotPcfArgs& a) {
   if (a.bins < 2 || a.bins > 10000) throw InputError("--bins must be in 2..10000");
-  if (!(a.r_max_factor > 0)) throw InputError("--r-max-factor must be > 0");
-  if (!(a.sigma_factor > 0)) throw InputError("--sigma-factor must be > 0");
+  // Radii reach r_max_factor r_max (+ 4 sigma): large factors put every pair within reach.
+  if (!(a.r_max_factor > 0) || a.r_max_factor > 100) throw InputError("--r-max-factor must be in (0, 100]");
+  if (!(a.sigma_factor > 0) || a.sigma_factor > 10) throw InputError("--sigma-factor must be in (0, 10]");
   ReadOptions ro;
   if (!a.format.empty()) ro.format = parse_format(a.format);
   const PointSet ex = read_points(a.exemplar, ro), out = read_points(a.output, ro);
@@ -58,10 +59,22 @@ int run(const PlotPcfArgs& a) {
     if (ex.num_classes() != out.num_classes())
       throw InputError("exemplar has " + std::to_string(ex.num_classes()) + " classes but output has " +
                        std::to_string(out.num_classes()));
+    // The grid shows what fits one image (render/plot_curves.hpp); only those PCFs are
+    // computed, from one pass over each set (not one per class).
+    const int columns = std::min(3, k + 1);
+    const CurveGridLayout layout = curve_grid_layout(static_cast<size_t>(k) + 1, columns, 420, 300);
+    const int shown_classes = static_cast<int>(std::min<size_t>(k, layout.shown - 1));
+    std::vector<std::vector<size_t>> ex_idx(k), out_idx(k);
+    for (size_t i = 0; i < ex.size(); ++i) ex_idx[ex.cls(i)].push_back(i);
+    for (size_t i = 0; i < out.size(); ++i) out_idx[out.cls(i)].push_back(i);
     std::vector<CurvePlot> plots{pcf_plot(title + " (all classes)", ex, out, opt)};
-    for (int c = 0; c < k; ++c)
-      plots.push_back(pcf_plot("class " + std::to_string(ex.class_label(c)), ex.subset_class(c), out.subset_class(c), opt));
-    plot_curve_grid(a.image, plots, std::min<int>(3, static_cast<int>(plots.size())), 420, 300);
+    for (int c = 0; c < shown_classes; ++c)
+      plots.push_back(pcf_plot("class " + std::to_string(ex.class_label(c)), ex.subset(ex_idx[c]), out.subset(out_idx[c]), opt));
+    if (shown_classes < k) {
+      plots[0].title += " (" + std::to_string(shown_classes) + " of " + std::to_string(k) + " classes shown)";
+      spdlog::warn("plot-pcf: {} classes do not fit one image; the first {} are drawn", k, shown_classes);
+    }
+    plot_curve_grid(a.image, plots, columns, 420, 300);
   }
   spdlog::info("wrote {}", a.image);
   return 0;
