@@ -49,6 +49,23 @@ std::vector<PointSet> split_by_class(const PointSet& ps, int K) {
   return out;
 }
 
+// The metrics square distances (k-d tree, PCF) and map each set onto the unit square: a
+// domain side outside 1e-100..1e100 overflows or underflows them (a 1e300-wide domain lost
+// every neighbour, a 1e-310-wide one turned positions into NaN and hung the assignment).
+void check_domain(const PointSet& ps, const char* which) {
+  const Domain& d = ps.domain();
+  for (double side : {d.width(), d.height()})
+    if (!(side >= 1e-100 && side <= 1e100)) {
+      std::ostringstream s;
+      s << "evaluate: the " << which << "'s domain [" << d.x0 << "," << d.x1 << "]x[" << d.y0 << "," << d.y1
+        << "] has a side of " << side << "; the metrics need sides in 1e-100..1e100 (rescale the coordinates)";
+      throw InputError(s.str());
+    }
+  for (size_t i = 0; i < ps.size(); ++i)
+    if (!std::isfinite(ps[i].x) || !std::isfinite(ps[i].y))
+      throw InputError(std::string("evaluate: ") + which + " point " + std::to_string(i) + " has a non-finite coordinate");
+}
+
 json set_summary(const PointSet& ps) {
   json j;
   j["count"] = ps.size();
@@ -67,8 +84,11 @@ json set_summary(const PointSet& ps) {
     j["d_min"] = j["d_min_square"] = j["mean_nn"] = j["relative_radius"] = nullptr;
   }
   json per = json::array();
-  for (const PointSet& c : split_by_class(ps, ps.num_classes()))
-    per.push_back(c.size() >= 2 ? json(relative_radius(c)) : json(nullptr));
+  if (ps.num_classes() == 1)
+    per.push_back(j["relative_radius"]);  // the one class is the whole set: no second pass
+  else
+    for (const PointSet& c : split_by_class(ps, ps.num_classes()))
+      per.push_back(c.size() >= 2 ? json(relative_radius(c)) : json(nullptr));
   j["relative_radius_per_class"] = per;
   return j;
 }
@@ -120,6 +140,8 @@ json overlap_json(const PointSet& ps, bool periodic) {
 json evaluate(const PointSet& exemplar, const PointSet& output, const EvalOptions& opt) {
   if (exemplar.empty()) throw InputError("evaluate: the exemplar is empty");
   if (output.empty()) throw InputError("evaluate: the output is empty");
+  check_domain(exemplar, "exemplar");
+  check_domain(output, "output");
   const Progress progress(exemplar.size() + output.size() >= kProgressPoints);
   progress("{} exemplar and {} output points: nearest neighbours", exemplar.size(), output.size());
   json r;

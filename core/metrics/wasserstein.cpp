@@ -15,6 +15,12 @@ namespace ppsynth {
 std::vector<size_t> optimal_assignment(const std::vector<double>& cost, size_t rows, size_t cols) {
   if (rows > cols) throw InputError("optimal_assignment: more rows than columns");
   if (cost.size() != rows * cols) throw InputError("optimal_assignment: cost matrix has the wrong size");
+  // A NaN or infinite cost never lowers `delta` below infinity: the augmenting loop below
+  // would run forever (it did, for points mapped from a 1e-310-wide domain).
+  for (size_t k = 0; k < cost.size(); ++k)
+    if (!std::isfinite(cost[k]))
+      throw InputError("optimal_assignment: cost (" + std::to_string(k / std::max<size_t>(cols, 1)) + ", " +
+                       std::to_string(k % std::max<size_t>(cols, 1)) + ") is not finite");
   const double INF = std::numeric_limits<double>::infinity();
   std::vector<double> u(rows + 1, 0), v(cols + 1, 0);
   std::vector<size_t> p(cols + 1, 0), way(cols + 1, 0);

@@ -321,3 +321,21 @@ TEST_CASE("evaluate on 8,000 vs 32,000 points returns promptly with a labelled W
   CHECK(t.find("~") != std::string::npos);
   CHECK(t.find("subsample") != std::string::npos);
 }
+
+TEST_CASE("evaluate refuses domains whose squared distances overflow or underflow", "[metrics][scaling]") {
+  // A 1e-310-wide domain mapped onto the unit square gave NaN positions and the assignment
+  // loop never ended; a 1e300-wide one lost every neighbour ("no other point found").
+  for (double side : {1e-310, 1e300}) {
+    INFO("side " << side);
+    PointSet ps(Domain{0, 0, side, side});
+    ps.add({0, 0});
+    ps.add({side, side});
+    ps.add({side / 2, side / 10});
+    CHECK_THROWS_WITH(evaluate(ps, ps), Catch::Contains("rescale the coordinates"));
+  }
+  // NaN costs are refused by the assignment itself instead of looping.
+  CHECK_THROWS_AS(optimal_assignment({0.0, std::nan(""), 1.0, 2.0}, 2, 2), InputError);
+  PointSet a;
+  a.add({std::nan(""), 0.5});
+  CHECK_THROWS_AS(wasserstein_distance(a, a), InputError);
+}
