@@ -24,6 +24,9 @@ Columns columns_from_header(const std::vector<std::string>& tokens, const std::s
   c.line = line;
   for (size_t i = 2; i < tokens.size(); ++i) {
     if (tokens[i] == "x" || tokens[i] == "y") throw file_error(source, line, "column '" + tokens[i] + "' repeated");
+    // The writer cannot write such a name back (a fuzz finding: "# x y dep#h" read, not written).
+    if (tokens[i].find('#') != std::string::npos)
+      throw file_error(source, line, "column name '" + tokens[i] + "' contains '#'");
     for (size_t j = 2; j < i; ++j)
       if (tokens[j] == tokens[i]) throw file_error(source, line, "column '" + tokens[i] + "' repeated");
     if (tokens[i] == "class") c.class_col = i;

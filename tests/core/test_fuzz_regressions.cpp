@@ -47,3 +47,18 @@ TEST_CASE("fuzz: a --set assignment that is not UTF-8 is an InputError", "[fuzz]
   CHECK(config["name"] == "caf\xc3\xa9");
   CHECK_NOTHROW(config.dump());
 }
+
+// fuzz_plain_text (round trip): the reader took "# x y scale dep#h" and named an attribute
+// "dep#h", which the plain text writer refuses; the reader now refuses it, naming the line.
+TEST_CASE("fuzz: a plain text column name with '#' is an InputError", "[fuzz][formats]") {
+  const std::string text =
+      "# domain 0 0 2 1 periodic\n# x y scale dep#h (free remark)\n0.1 0.2 0.3 0.4\n1.9 0.9 0. 50.6\n";
+  CHECK_THROWS_WITH(parse_points(text, "hash.txt"), Catch::Contains("hash.txt:2") && Catch::Contains("dep#h"));
+  // The same file with a plain name reads, and writes back.
+  const std::string ok =
+      "# domain 0 0 2 1 periodic\n# x y scale depth (free remark)\n0.1 0.2 0.3 0.4\n1.9 0.9 0. 50.6\n";
+  const PointSet ps = parse_points(ok, "ok.txt");
+  REQUIRE(ps.size() == 2);
+  CHECK(ps.attribute_names() == std::vector<std::string>{"scale", "depth"});
+  CHECK(parse_points(format_points(ps, Format::Plain), "back.txt").size() == 2);
+}
