@@ -41,7 +41,8 @@ fi
 if [ -z "$targets" ]; then
   targets=$(ls tests/fuzz/corpus)
 fi
-if [ -z "$scratch" ]; then scratch=$(mktemp -d /tmp/ppsynth_fuzz.XXXXXX); fi
+own_scratch=0
+if [ -z "$scratch" ]; then scratch=$(mktemp -d /tmp/ppsynth_fuzz.XXXXXX); own_scratch=1; fi
 mkdir -p "$scratch"
 
 # Leaks are findings (LeakSanitizer runs at the end of each input); UB aborts (built with
@@ -88,5 +89,5 @@ if [ ${#failed[@]} -gt 0 ]; then
   find "$scratch/artifacts" -type f >&2
   exit 1
 fi
-echo "[fuzz] no findings (scratch: $scratch)"
-rm -rf "$scratch/corpus"
+echo "[fuzz] no findings"
+if [ "$own_scratch" = 1 ]; then rm -rf "$scratch"; fi
