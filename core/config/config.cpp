@@ -26,7 +26,9 @@ json read_json_file(const std::string& path) {
 }
 
 json load_chain(const std::string& path, std::set<std::string>& seen) {
-  std::string canon = fs::weakly_canonical(path).string();
+  std::error_code ec;  // e.g. a "parent" name too long for the file system (fuzz finding)
+  std::string canon = fs::weakly_canonical(path, ec).string();
+  if (ec) throw file_error(path, 0, "cannot resolve the config path: " + ec.message());
   if (!seen.insert(canon).second) throw file_error(path, 0, "config parent cycle");
   json j = read_json_file(path);
   if (!j.is_object()) throw file_error(path, 0, "a config must be a JSON object");

@@ -62,3 +62,13 @@ TEST_CASE("fuzz: a plain text column name with '#' is an InputError", "[fuzz][fo
   CHECK(ps.attribute_names() == std::vector<std::string>{"scale", "depth"});
   CHECK(parse_points(format_points(ps, Format::Plain), "back.txt").size() == 2);
 }
+
+// fuzz_config: a "parent" whose name is longer than the file system allows made
+// std::filesystem::weakly_canonical throw filesystem_error (ENAMETOOLONG) out of load_config.
+TEST_CASE("fuzz: a config parent name too long for the file system is an InputError", "[fuzz][config]") {
+  const auto dir = test::scratch_dir("fuzz_config_long_parent");
+  const std::string path = (dir / "c.json").string();
+  std::ofstream(path) << "{\"parent\": \"tttttttttttttqqqq~" << std::string(400, 'q') << "\"}";
+  CHECK_THROWS_AS(load_config(path), InputError);
+  CHECK_THROWS_WITH(load_config(path), Catch::Contains("qqqq"));
+}
