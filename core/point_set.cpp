@@ -114,6 +114,19 @@ std::vector<double> PointSet::flat_xy() const {
   return v;
 }
 
+std::string attribute_value_problem(const std::string& name, double value) {
+  std::ostringstream s;
+  if (!std::isfinite(value)) {
+    s << "attribute '" << name << "' is not finite";
+    return s.str();
+  }
+  if (name == kRadiusAttribute && !(value > 0)) {
+    s << "radius " << value << " is not > 0 (a disk radius must be positive)";
+    return s.str();
+  }
+  return "";
+}
+
 void validate(const PointSet& ps, const std::string& source) {
   if (ps.empty()) throw file_error(source, 0, "no points");
   for (size_t i = 0; i < ps.size(); ++i) {
@@ -127,10 +140,10 @@ void validate(const PointSet& ps, const std::string& source) {
         << ps.domain().y1 << "]";
       throw file_error(source, 0, s.str());
     }
-    for (size_t a = 0; a < ps.num_attributes(); ++a)
-      if (!std::isfinite(ps.attr(i, a)))
-        throw file_error(source, 0, "point " + std::to_string(i) + " attribute '" +
-                                        ps.attribute_names()[a] + "' is not finite");
+    for (size_t a = 0; a < ps.num_attributes(); ++a) {
+      const std::string problem = attribute_value_problem(ps.attribute_names()[a], ps.attr(i, a));
+      if (!problem.empty()) throw file_error(source, 0, "point " + std::to_string(i) + ": " + problem);
+    }
   }
   auto counts = ps.class_counts();
   for (size_t k = 0; k < counts.size(); ++k)

@@ -89,8 +89,18 @@ class PointSet {
   std::vector<std::vector<double>> attrs_;  // column-major: attrs_[a][i]
 };
 
-// Checks what synthesis needs: finite coordinates inside the domain, at least one point per
-// class id in 0..K-1. Throws InputError naming `source` and the first offending point.
+// The attribute column that holds disk radii (domain units): a point set with it is a disk
+// pattern (plots draw disks, metrics count overlaps).
+inline constexpr const char* kRadiusAttribute = "radius";
+
+// Why `value` cannot be a value of the attribute column `name`, or "" when it can: every
+// attribute value is finite, and a radius (kRadiusAttribute) is > 0. Readers call it for
+// each value so that their error names the file line; validate() calls it for every point.
+std::string attribute_value_problem(const std::string& name, double value);
+
+// Checks what synthesis needs: finite coordinates inside the domain, attribute values that
+// attribute_value_problem accepts, at least one point per class id in 0..K-1. Throws
+// InputError naming `source` and the first offending point.
 void validate(const PointSet& ps, const std::string& source);
 
 // Pairs of coincident points (distance below `eps`), reported by readers.
