@@ -3,8 +3,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <sstream>
 #include <set>
 
+#include "core/config/json_text.hpp"
 #include "core/error.hpp"
 
 namespace fs = std::filesystem;
@@ -14,15 +17,16 @@ namespace ppsynth {
 namespace {
 
 json read_json_file(const std::string& path) {
-  std::ifstream in(path);
+  std::error_code ec;
+  // A directory opens as a stream on Linux, then fails mid-read (was "internal error").
+  if (fs::is_directory(path, ec)) throw file_error(path, 0, "is a directory, not a config file");
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw file_error(path, 0, "cannot open config");
-  try {
-    return json::parse(in, nullptr, true, /*ignore_comments=*/true);
-  } catch (const json::parse_error& e) {
-    throw file_error(path, 0, std::string("invalid JSON: ") + e.what());
-  } catch (const json::out_of_range& e) {  // a number beyond double ("1e400"; fuzz finding)
-    throw file_error(path, 0, std::string("invalid JSON: ") + e.what());
-  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw file_error(path, 0, "read error");
+  // BOM, nesting depth, numbers beyond double and syntax errors, each with its line.
+  return parse_json_text(text.str(), path, /*allow_comments=*/true);
 }
 
 json load_chain(const std::string& path, std::set<std::string>& seen) {
@@ -33,7 +37,8 @@ json load_chain(const std::string& path, std::set<std::string>& seen) {
   json j = read_json_file(path);
   if (!j.is_object()) throw file_error(path, 0, "a config must be a JSON object");
   if (j.contains("parent")) {
-    if (!j["parent"].is_string()) throw config_error("parent", "expected a path string");
+    if (!j["parent"].is_string() || j["parent"].get<std::string>().empty())
+      throw file_error(path, 0, "config key 'parent': expected the path of a config file");
     fs::path parent = fs::path(path).parent_path() / j["parent"].get<std::string>();
     json base = load_chain(parent.string(), seen);
     j.erase("parent");
@@ -136,11 +141,23 @@ void set_override(json& config, const std::string& assignment) {
     throw InputError("--set: the assignment is not valid UTF-8");
   }
   std::string key = assignment.substr(0, eq), text = assignment.substr(eq + 1);
+  // A value that is JSON goes through the checks of a config file (nesting, numbers beyond
+  // double: "1e400" was kept as a string); text that is not JSON is a string.
   json value;
+  bool is_json = true;
+  std::string failure;
   try {
     value = json::parse(text);
-  } catch (...) {
+  } catch (const json::parse_error&) {
     value = text;
+    is_json = false;
+  } catch (const json::exception& e) {  // out_of_range 406: a number beyond double
+    failure = e.what();
+  }
+  if (is_json) {
+    if (const auto flaw = find_json_text_flaw(text, /*allow_comments=*/false))
+      throw config_error(key, "--set value: " + flaw->message);
+    if (!failure.empty()) throw config_error(key, "--set value: " + failure);
   }
   json* node = &config;
   size_t start = 0;
@@ -177,8 +194,20 @@ double get_number(const json& j, const std::string& key, const std::string& key_
 }
 
 int get_int(const json& j, const std::string& key, const std::string& key_path) {
-  double v = get_number(j, key, key_path);
-  if (v != std::floor(v)) throw config_error(join(key_path, key), "expected an integer");
+  const double v = get_number(j, key, key_path);
+  constexpr long long lo = std::numeric_limits<int>::min(), hi = std::numeric_limits<int>::max();
+  const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  if (v != std::floor(v)) throw config_error(join(key_path, key), "expected an integer in " + range);
+  // Compare exact integers where the JSON holds them (a double cannot hold every int64).
+  const json& x = j[key];
+  const bool in_range = x.is_number_unsigned() ? x.get<unsigned long long>() <= static_cast<unsigned long long>(hi)
+                        : x.is_number_integer() ? (x.get<long long>() >= lo && x.get<long long>() <= hi)
+                                                : (v >= static_cast<double>(lo) && v <= static_cast<double>(hi));
+  if (!in_range) {
+    std::ostringstream s;
+    s << "integer " << x.dump() << " is out of range: expected an integer in " << range;
+    throw config_error(join(key_path, key), s.str());
+  }
   return static_cast<int>(v);
 }
 

@@ -13,7 +13,10 @@ namespace ppsynth {
 
 using json = nlohmann::json;
 
-// Reads a JSON config file and resolves its "parent" chain (cycles are errors).
+// Reads a JSON config file and resolves its "parent" chain (cycles are errors). Comments and
+// a UTF-8 byte-order mark are accepted; nesting deeper than kMaxJsonDepth, numbers beyond
+// double and syntax errors are InputErrors naming the file and line (json_text.hpp); a
+// directory, a missing file or an empty "parent" name the file.
 json load_config(const std::string& path);
 
 // Deep merge: `over` wins; objects merge recursively (except a component spec whose "type"
@@ -28,10 +31,12 @@ json merge(const json& base, const json& over);
 json apply_defaults(const json& defaults, const json& user, const std::string& key_path);
 
 // Applies one "--set a.b.c=value" override. The value is parsed as JSON when it parses
-// ("3", "true", "[0,1]"), else taken as a string. Array elements: "losses.1.weight=2".
+// ("3", "true", "[0,1]"), else taken as a string. Array elements: "losses.1.weight=2". A JSON
+// value goes through the checks of a config file (nesting depth, numbers beyond double).
 void set_override(json& config, const std::string& assignment);
 
-// Typed getters that name the key on error.
+// Typed getters that name the key on error. get_int refuses a fraction and a value outside
+// the int range, naming the range.
 double get_number(const json& j, const std::string& key, const std::string& key_path);
 int get_int(const json& j, const std::string& key, const std::string& key_path);
 std::string get_string(const json& j, const std::string& key, const std::string& key_path);
