@@ -48,10 +48,10 @@ PointSet parse_gabor_int(const std::string& text, const std::string& source, con
   const bool header = is_header(values[0]);
   if (header) {
     for (size_t i = 1; i < values[0].size(); ++i) {
-      const long long id = values[0][i];
+      const int id = checked_int(values[0][i], "class id", source, rows[0].line);
       if (std::find(labels.begin(), labels.end(), id) != labels.end())
         throw file_error(source, rows[0].line, "class id " + std::to_string(id) + " repeated in the header");
-      labels.push_back(static_cast<int>(id));
+      labels.push_back(id);
     }
     first = 1;
   }
@@ -67,6 +67,8 @@ PointSet parse_gabor_int(const std::string& text, const std::string& source, con
                                                  std::to_string(first_line) + "), found " +
                                                  std::to_string(values[r].size()));
 
+  // CLASS values beyond 32 bits would be truncated into another label.
+  for (size_t r = first; r < rows.size(); ++r) (void)checked_int(values[r][0], "class id", source, rows[r].line);
   if (!header) {  // labels = the distinct CLASS values, ascending
     for (size_t r = first; r < rows.size(); ++r) labels.push_back(static_cast<int>(values[r][0]));
     std::sort(labels.begin(), labels.end());
@@ -81,7 +83,13 @@ PointSet parse_gabor_int(const std::string& text, const std::string& source, con
                                              std::to_string(nattr) + " attribute column(s)");
 
   PointSet ps{Domain{}};
-  for (const auto& n : names) ps.add_attribute(n);
+  for (const auto& n : names) {
+    try {
+      ps.add_attribute(n);
+    } catch (const std::invalid_argument& e) {  // a name given twice in ReadOptions
+      throw file_error(source, 0, e.what());
+    }
+  }
   ps.set_class_labels(labels);
   ps.reserve(rows.size() - first);
   std::vector<double> attrs(nattr);
@@ -99,7 +107,11 @@ PointSet parse_gabor_int(const std::string& text, const std::string& source, con
     if (!ps.domain().contains(p, 0.0))
       throw file_error(source, rows[r].line, "point (" + std::to_string(v[1]) + ", " + std::to_string(v[2]) +
                                                  ") lies outside the unit square (0..10000)");
-    for (size_t a = 0; a < nattr; ++a) attrs[a] = v[3 + a] / kGaborIntScale;
+    for (size_t a = 0; a < nattr; ++a) {
+      attrs[a] = v[3 + a] / kGaborIntScale;
+      const std::string problem = attribute_value_problem(names[a], attrs[a]);
+      if (!problem.empty()) throw file_error(source, rows[r].line, "column " + std::to_string(4 + a) + ": " + problem);
+    }
     ps.add(p, static_cast<int>(it - labels.begin()), attrs);
   }
   return ps;

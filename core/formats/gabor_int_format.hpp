@@ -9,7 +9,8 @@
 // square; attributes use the same integer scale (value * 10000). Reading divides by 10000,
 // so coordinates are exact multiples of 1e-4 and the domain is [0,1]^2.
 // Classes: with a header, class k is the k-th header id (a CLASS not in the header is an
-// error); without one, the distinct CLASS values sorted ascending. Labels are kept in
+// error); without one, the distinct CLASS values sorted ascending. Ids must fit 32 bits (the
+// PointSet stores int labels); an attribute named "radius" must be > 0. Labels are kept in
 // PointSet::class_labels so the writer restores them.
 // There are no comments in this format, so attribute names come from a rule
 // (gabor_attribute_names) or from ReadOptions::attribute_names.
@@ -39,8 +40,10 @@ PointSet parse_gabor_int(const std::string& text, const std::string& source, con
 // 1000*(k+1). The header is written when K > 1.
 std::string print_gabor_int(const PointSet& ps);
 
-// True when `text` has the Gabor shape: integer fields only, an optional "K id..." header,
-// rows of >= 3 fields whose CLASS is a positive multiple of 1000 and X, Y in 0..10000.
+// True when every line of `text` has the Gabor shape: integer fields only, an optional
+// "K id..." header, rows of >= 3 fields whose CLASS is a positive multiple of 1000 and X, Y in
+// 0..10000. (Detection, point_io.hpp, scores the first lines instead, so that one damaged
+// line does not send the file to another reader.)
 bool looks_like_gabor_int(const std::string& text);
 
 }  // namespace ppsynth

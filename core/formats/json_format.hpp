@@ -13,9 +13,10 @@
 // Each point is [x, y, class, attributes in "attributes" order]; class is the dense id
 // 0..K-1 (< the number of class_labels when given). Unknown keys are errors. Doubles are
 // written with nlohmann::json's round-trip formatting, one point a line.
-// Errors: syntax errors name the file line (from the parser's byte offset); errors in a
-// well-formed document name the element ("points[12]") and, since the writer puts one
-// point a line, the line of that point when it can be found.
+// Errors: syntax errors, nesting deeper than kMaxJsonDepth and numbers beyond double name the
+// file line (core/config/json_text.hpp); errors in a well-formed document name the element
+// ("points[12]", "class_labels[1]") and the line of that element (the writer puts one point
+// a line) or of its key. Class labels must fit 32 bits; a "radius" attribute must be > 0.
 #include <string>
 
 #include "core/point_set.hpp"

@@ -1,6 +1,7 @@
 #include "core/formats/plain_text_format.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <sstream>
 
@@ -63,12 +64,14 @@ PointSet parse_plain_text(const std::string& text, const std::string& source) {
         domain.periodic = tok.size() == 6;
         if (!(domain.x1 > domain.x0) || !(domain.y1 > domain.y0))
           throw file_error(source, line, "domain must have x1 > x0 and y1 > y0");
+        if (!std::isfinite(domain.width()) || !std::isfinite(domain.height()))
+          throw file_error(source, line, "domain width or height is beyond the range of a double");
       } else if (tok[0] == "class_labels") {
         if (started) throw file_error(source, line, "'# class_labels' must precede the first point");
         if (tok.size() < 2) throw file_error(source, line, "'# class_labels' lists no label");
         labels.clear();
         for (size_t i = 1; i < tok.size(); ++i) {
-          const int l = static_cast<int>(parse_integer_field(tok[i], source, line));
+          const int l = checked_int(parse_integer_field(tok[i], source, line), "class label", source, line);
           if (std::find(labels.begin(), labels.end(), l) != labels.end())
             throw file_error(source, line, "class label " + tok[i] + " repeated");
           labels.push_back(l);
@@ -127,6 +130,8 @@ PointSet parse_plain_text(const std::string& text, const std::string& source) {
         cls = static_cast<int>(c);
       } else {
         attrs.push_back(parse_real_field(f, source, line));
+        const std::string problem = attribute_value_problem(cols->names[i], attrs.back());
+        if (!problem.empty()) throw file_error(source, line, problem);
       }
     }
     if (!domain.contains(p, 0.0)) {

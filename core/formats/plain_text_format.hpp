@@ -13,7 +13,8 @@
 // integer; with class_labels it must be < the number of labels); every other name is an
 // attribute. Without a column header, 2 columns are `x y` and 3 are `x y class`; other
 // counts need the header. Every row must have the header's (or the first row's) column
-// count; a point outside the domain is an error. The writer prints %.17g, so doubles read
+// count; a point outside the domain is an error. Class labels must fit 32 bits; a "radius"
+// column must be > 0. The writer prints %.17g, so doubles read
 // back bit-exactly; it writes the class column when K > 1 or class labels are set.
 #include <string>
 

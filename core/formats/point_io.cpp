@@ -1,6 +1,9 @@
 #include "core/formats/point_io.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -33,38 +36,223 @@ void report_coincident(const PointSet& ps, const std::string& path) {
   spdlog::warn("{}: {} pair(s) of coincident points (0-based point indices): {}", path, pairs.size(), s.str());
 }
 
+// --- structural detection ---------------------------------------------------------------
+
+// Data lines looked at: enough to see the structure, few enough to stay cheap on 10^6 points.
+constexpr size_t kSampleRows = 64;
+
+struct Field {
+  bool is_int = false, is_real = false;
+  long long i = 0;
+  double d = 0;
+};
+
+Field classify(const std::string& f) {
+  Field r;
+  const char* b = f.data();
+  const char* e = b + f.size();
+  if (b != e && *b == '+') ++b;
+  {
+    auto [p, ec] = std::from_chars(b, e, r.i);
+    r.is_int = ec == std::errc() && p == e;
+  }
+  auto [p, ec] = std::from_chars(b, e, r.d);
+  r.is_real = ec == std::errc() && p == e && std::isfinite(r.d);
+  if (r.is_int) r.is_real = true, r.d = static_cast<double>(r.i);
+  return r;
+}
+
+std::vector<Field> classify_row(const TextRow& row) {
+  std::vector<Field> v;
+  v.reserve(row.fields.size());
+  for (const auto& f : row.fields) v.push_back(classify(f));
+  return v;
+}
+
+bool all_int(const std::vector<Field>& v) {
+  return std::all_of(v.begin(), v.end(), [](const Field& f) { return f.is_int; });
+}
+bool all_real(const std::vector<Field>& v) {
+  return std::all_of(v.begin(), v.end(), [](const Field& f) { return f.is_real; });
+}
+
+// "K id_1 ... id_K" with K < 1000 (a CLASS is >= 1000): the Gabor header.
+bool gabor_header(const std::vector<Field>& v) {
+  return v.size() >= 2 && all_int(v) && v[0].i >= 1 && v[0].i < 1000 &&
+         v[0].i == static_cast<long long>(v.size()) - 1;
+}
+
+// `CLASS X Y [ATTR..]`: integers, CLASS in the header (or, without one, a positive multiple
+// of 1000), X and Y in 0..10000.
+bool gabor_row(const std::vector<Field>& v, const std::vector<long long>* header_ids) {
+  if (v.size() < 3 || !all_int(v)) return false;
+  const long long c = v[0].i;
+  const bool class_ok = header_ids ? std::find(header_ids->begin(), header_ids->end(), c) != header_ids->end()
+                                   : c > 0 && c % 1000 == 0;
+  return class_ok && v[1].i >= 0 && v[1].i <= 10000 && v[2].i >= 0 && v[2].i <= 10000;
+}
+
+// `x y c2 c3 [c4..]`: numbers, c2 a whole number.
+bool point_synthesis_row(const std::vector<Field>& v) {
+  return v.size() >= 4 && all_real(v) && v[2].d == std::floor(v[2].d);
+}
+
+// Plain text without a header: `x y` or `x y class` in the unit square.
+bool plain_row(const std::vector<Field>& v) {
+  if ((v.size() != 2 && v.size() != 3) || !all_real(v)) return false;
+  if (v[0].d < 0 || v[0].d > 1 || v[1].d < 0 || v[1].d > 1) return false;
+  return v.size() == 2 || (v[2].is_int && v[2].i >= 0);
+}
+
+std::string describe(Format f) {
+  switch (f) {
+    case Format::GaborInt: return "the published integer format (gabor)";
+    case Format::PointSynthesis: return "the Point-Synthesis format (point-synthesis)";
+    case Format::Plain: return "plain text (plain)";
+    case Format::Json: return "JSON (json)";
+    case Format::Auto: break;
+  }
+  return "auto";
+}
+
+// "read as <format>[, <why>]" + what the reader said + how to choose another format.
+// `message` is the reader's "source:line: what" (or "source: what").
+InputError decorated(const std::string& message, const std::string& source, const Detection* d, Format f) {
+  std::string where = source, what = message;
+  if (message.compare(0, source.size() + 1, source + ":") == 0) {
+    what = message.substr(source.size() + 1);
+    size_t k = 0;
+    while (k < what.size() && std::isdigit(static_cast<unsigned char>(what[k]))) ++k;
+    if (k > 0 && what.compare(k, 2, ": ") == 0) {
+      where += ":" + what.substr(0, k);
+      what = what.substr(k + 2);
+    } else if (!what.empty() && what[0] == ' ') {
+      what.erase(0, 1);
+    }
+  }
+  std::string out = where + ": read as " + describe(f);
+  if (d && d->guessed) out += ", a guess (" + d->reason + ")";
+  out += ": " + what;
+  if (d && !d->also_fits.empty()) {
+    std::string names, flags;
+    for (size_t i = 0; i < d->also_fits.size(); ++i) {
+      const std::string name = format_name(d->also_fits[i]);
+      names += (i ? " and " : "") + describe(d->also_fits[i]);
+      flags += (i ? " or " : "") + std::string("--format ") + name + " (in a run config: \"format\": \"" + name + "\")";
+    }
+    out += "; its first lines also fit " + names + ": if the file is in that format, pass " + flags;
+  } else if (d && d->guessed) {
+    out += "; if the file is in another format, pass --format NAME (gabor, point-synthesis, plain or json; in a "
+           "run config: \"format\")";
+  }
+  return InputError(out);
+}
+
+// Parses with the format `f` (detected as `d`, or given when d is null), the reader's
+// errors decorated with the format; validates when asked.
+PointSet parse_as(const std::string& text, const std::string& source, const ReadOptions& opts, Format f,
+                  const Detection* d, bool validate_too) {
+  try {
+    PointSet ps;
+    switch (f) {
+      case Format::GaborInt: ps = parse_gabor_int(text, source, opts); break;
+      case Format::PointSynthesis: ps = parse_point_synthesis(text, source, opts); break;
+      case Format::Plain: ps = parse_plain_text(text, source); break;
+      case Format::Json: ps = parse_json_points(text, source); break;
+      case Format::Auto: throw std::logic_error("parse_as: no format");
+    }
+    if (validate_too) validate(ps, source);
+    return ps;
+  } catch (const InputError& e) {
+    throw decorated(e.what(), source, d, f);
+  }
+}
+
+PointSet parse_text(std::string text, const std::string& source, const ReadOptions& opts, bool validate_too) {
+  strip_utf8_bom(text);
+  if (opts.format != Format::Auto) return parse_as(text, source, opts, opts.format, nullptr, validate_too);
+  const Detection d = detect_format_details(text, source);
+  spdlog::debug("{}: detected {} ({})", source, format_name(d.format), d.reason);
+  return parse_as(text, source, opts, d.format, &d, validate_too);
+}
+
 }  // namespace
 
-Format detect_format_of_text(const std::string& text, const std::string& source) {
-  if (lower_extension(source) == ".json") return Format::Json;
+Detection detect_format_details(const std::string& text, const std::string& source) {
+  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) return detect_format_details(text.substr(3), source);
+  Detection d;
   const auto b = text.find_first_not_of(" \t\r\n\f\v");
+  if (lower_extension(source) == ".json") {
+    d.format = Format::Json;
+    d.reason = "by its .json extension";
+    return d;
+  }
   if (b == std::string::npos) throw file_error(source, 0, "empty file: no points");
-  if (text[b] == '{') return Format::Json;
-  if (text[b] == '#') return Format::Plain;
-  if (looks_like_gabor_int(text)) return Format::GaborInt;
-  const auto rows = split_rows(text);
-  if (!rows.empty() && rows.front().fields.size() >= 4) return Format::PointSynthesis;
-  return Format::Plain;
+  if (text[b] == '{') {
+    d.format = Format::Json;
+    d.reason = "it starts with '{'";
+    return d;
+  }
+  if (text[b] == '#') {
+    d.format = Format::Plain;
+    d.reason = "it starts with a '#' comment";
+    return d;
+  }
+
+  // Count how many of the first data lines fit each line-oriented format.
+  const std::vector<TextRow> rows = split_rows(text, kSampleRows + 1);
+  std::vector<std::vector<Field>> v;
+  for (const auto& r : rows) v.push_back(classify_row(r));
+  const bool header = gabor_header(v[0]);
+  std::vector<long long> ids;
+  if (header)
+    for (size_t i = 1; i < v[0].size(); ++i) ids.push_back(v[0][i].i);
+  const size_t n = std::min(v.size(), kSampleRows), g0 = header ? 1 : 0, ng = std::min(v.size() - g0, kSampleRows);
+  size_t g = 0, s = 0, p = 0;
+  for (size_t r = g0; r < g0 + ng; ++r) g += gabor_row(v[r], header ? &ids : nullptr);
+  for (size_t r = 0; r < n; ++r) s += point_synthesis_row(v[r]), p += plain_row(v[r]);
+
+  // Most lines fitting decides; Gabor first (its lines are Point-Synthesis lines too when
+  // they have >= 4 fields), then Point-Synthesis, then plain (2-3 fields: disjoint).
+  const bool g_most = g > 0 && 2 * g >= ng, s_most = 2 * s > n, p_most = 2 * p > n;
+  auto count = [&](size_t k, size_t of) { return std::to_string(k) + " of the first " + std::to_string(of) + " lines fit"; };
+  if (g_most) {
+    d.format = Format::GaborInt;
+    d.reason = count(g, ng) + (header ? ", after a 'K id...' header" : "");
+    if (s_most && !header) d.also_fits.push_back(Format::PointSynthesis);
+  } else if (s_most) {
+    d.format = Format::PointSynthesis;
+    d.reason = count(s, n);
+  } else if (p_most) {
+    d.format = Format::Plain;
+    d.reason = count(p, n);
+  } else {
+    // No format fits most lines: the one that fits the most, else by the field count of the
+    // first line (as a '# x y ...' header would have said).
+    d.guessed = true;
+    if (g > 0 && g >= s && g >= p) d.format = Format::GaborInt, d.reason = count(g, ng);
+    else if (s > 0 && s >= p) d.format = Format::PointSynthesis, d.reason = count(s, n);
+    else if (p > 0) d.format = Format::Plain, d.reason = count(p, n);
+    else {
+      d.format = header ? Format::GaborInt : rows[0].fields.size() >= 4 ? Format::PointSynthesis : Format::Plain;
+      d.reason = "no line fits a known format; chosen by the field count of line " + std::to_string(rows[0].line);
+    }
+  }
+  return d;
+}
+
+Format detect_format_of_text(const std::string& text, const std::string& source) {
+  return detect_format_details(text, source).format;
 }
 
 Format detect_format(const std::string& path) { return detect_format_of_text(read_file_text(path), path); }
 
 PointSet parse_points(const std::string& text, const std::string& source, const ReadOptions& opts) {
-  const Format f = opts.format == Format::Auto ? detect_format_of_text(text, source) : opts.format;
-  switch (f) {
-    case Format::GaborInt: return parse_gabor_int(text, source, opts);
-    case Format::PointSynthesis: return parse_point_synthesis(text, source, opts);
-    case Format::Plain: return parse_plain_text(text, source);
-    case Format::Json: return parse_json_points(text, source);
-    case Format::Auto: break;
-  }
-  throw InputError("parse_points: unreachable format");
+  return parse_text(text, source, opts, /*validate_too=*/false);
 }
 
 PointSet read_points(const std::string& path, const ReadOptions& opts) {
-  const std::string text = read_file_text(path);
-  PointSet ps = parse_points(text, path, opts);
-  validate(ps, path);
+  PointSet ps = parse_text(read_file_text(path), path, opts, /*validate_too=*/true);
   report_coincident(ps, path);
   spdlog::debug("read {}: {} points, {} classes, {} attributes", path, ps.size(), ps.num_classes(),
                 ps.num_attributes());

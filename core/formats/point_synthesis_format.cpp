@@ -1,6 +1,7 @@
 #include "core/formats/point_synthesis_format.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <sstream>
 
@@ -28,7 +29,7 @@ PointSet parse_point_synthesis(const std::string& text, const std::string& sourc
       throw file_error(source, line, "expected " + std::to_string(ncol) + " fields (as on line " +
                                          std::to_string(rows[0].line) + "), found " + std::to_string(f.size()));
     pos[r] = {parse_real_field(f[0], source, line), parse_real_field(f[1], source, line)};
-    cat[r] = parse_integral_real_field(f[2], source, line);
+    cat[r] = checked_int(parse_integral_real_field(f[2], source, line), "category id", source, line);
     for (size_t a = 3; a < ncol; ++a) attrs[r][a - 3] = parse_real_field(f[a], source, line);
   }
 
@@ -41,6 +42,8 @@ PointSet parse_point_synthesis(const std::string& text, const std::string& sourc
   const double w = x1 - x0, h = y1 - y0;
   if (!(w > 0) || !(h > 0))
     throw file_error(source, 0, "all points share one x or one y value; cannot rescale to the unit square");
+  if (!std::isfinite(w) || !std::isfinite(h))
+    throw file_error(source, 0, "the points' extent is beyond the range of a double; cannot rescale to the unit square");
   double sx = w, sy = h;
   Domain domain{};
   if (opts.scaling == AxisScaling::Uniform) {
@@ -63,8 +66,20 @@ PointSet parse_point_synthesis(const std::string& text, const std::string& sourc
     throw file_error(source, rows[0].line, std::to_string(names.size()) + " attribute name(s) given for " +
                                                std::to_string(ncol - 3) + " attribute column(s)");
 
+  for (size_t r = 0; r < rows.size(); ++r)  // a "radius" column (named by ReadOptions) must be > 0
+    for (size_t a = 0; a < names.size(); ++a) {
+      const std::string problem = attribute_value_problem(names[a], attrs[r][a]);
+      if (!problem.empty()) throw file_error(source, rows[r].line, problem);
+    }
+
   PointSet ps(domain);
-  for (const auto& n : names) ps.add_attribute(n);
+  for (const auto& n : names) {
+    try {
+      ps.add_attribute(n);
+    } catch (const std::invalid_argument& e) {  // a name given twice in ReadOptions
+      throw file_error(source, 0, e.what());
+    }
+  }
   ps.set_class_labels(labels);
   ps.reserve(rows.size());
   for (size_t r = 0; r < rows.size(); ++r) {

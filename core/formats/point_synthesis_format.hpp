@@ -9,7 +9,7 @@
 // format_options.hpp). Degenerate extents (all x or all y equal) are an error.
 // c2 is the class: an integer category id; a constant column (including all 0) is one
 // class, otherwise the distinct values, ascending, become classes 0..K-1 and are kept as
-// class labels. Every further column is an attribute named "c3", "c4", ... (kept as read).
+// class labels (they must fit 32 bits). Every further column is an attribute named "c3", "c4", ... (kept as read).
 // Coincident points occur in the shipped files; read_points reports them, nothing rejects.
 #include <string>
 

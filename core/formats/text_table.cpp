@@ -1,8 +1,11 @@
 #include "core/formats/text_table.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <limits>
 #include <fstream>
 #include <sstream>
 
@@ -11,6 +14,9 @@
 namespace ppsynth {
 
 std::string read_file_text(const std::string& path) {
+  std::error_code ec;
+  // A directory opens as a stream on Linux and reads as empty or fails mid-read.
+  if (std::filesystem::is_directory(path, ec)) throw file_error(path, 0, "is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw file_error(path, 0, "cannot open (missing or unreadable file)");
   std::ostringstream s;
@@ -19,12 +25,20 @@ std::string read_file_text(const std::string& path) {
   return s.str();
 }
 
-std::vector<TextRow> split_rows(const std::string& text) {
+bool strip_utf8_bom(std::string& text) {
+  if (text.compare(0, 3, "\xEF\xBB\xBF") != 0) return false;
+  text.erase(0, 3);
+  return true;
+}
+
+std::vector<TextRow> split_rows(const std::string& text, size_t max_rows) {
   std::vector<TextRow> rows;
-  std::istringstream in(text);
   std::string raw;
   long n = 0;
-  while (std::getline(in, raw)) {
+  for (size_t pos = 0; rows.size() < max_rows && pos < text.size();) {  // as std::getline
+    const size_t eol = std::min(text.find('\n', pos), text.size());
+    raw.assign(text, pos, eol - pos);
+    pos = eol + 1;
     ++n;
     const auto b = raw.find_first_not_of(" \t\r\f\v");
     if (b == std::string::npos) continue;
@@ -76,6 +90,14 @@ long long parse_integral_real_field(const std::string& field, const std::string&
   if (v != std::floor(v) || std::abs(v) > 9.0e15)
     throw file_error(source, line, "'" + field + "' is not an integer category id");
   return static_cast<long long>(v);
+}
+
+int checked_int(long long value, const std::string& what, const std::string& source, long line) {
+  constexpr long long lo = std::numeric_limits<int>::min(), hi = std::numeric_limits<int>::max();
+  if (value < lo || value > hi)
+    throw file_error(source, line, what + " " + std::to_string(value) + " is out of range (it must lie in " +
+                                       std::to_string(lo) + ".." + std::to_string(hi) + ")");
+  return static_cast<int>(value);
 }
 
 std::string format_real(double v) {

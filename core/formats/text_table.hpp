@@ -15,11 +15,17 @@ struct TextRow {
   bool is_comment() const { return !text.empty() && text[0] == '#'; }
 };
 
-// The whole file as a string; InputError "path: cannot open" when it cannot be read.
+// The whole file as a string, byte for byte; InputError "path: cannot open" when it cannot
+// be read, "path: is a directory" for a directory.
 std::string read_file_text(const std::string& path);
 
-// Non-blank lines of `text`, numbered from 1 (blank lines are skipped but counted).
-std::vector<TextRow> split_rows(const std::string& text);
+// Removes a UTF-8 byte-order mark (EF BB BF) at the start of `text`; true when there was one.
+// Point and config readers accept one (editors on Windows write it); elsewhere it is a flaw.
+bool strip_utf8_bom(std::string& text);
+
+// Non-blank lines of `text`, numbered from 1 (blank lines are skipped but counted); at most
+// `max_rows` of them (detection looks at the first lines only).
+std::vector<TextRow> split_rows(const std::string& text, size_t max_rows = static_cast<size_t>(-1));
 
 // Strict field parsers: the whole field must be a number. Non-numeric text, NaN and
 // infinities throw file_error(source, line, ...) naming the field.
@@ -27,6 +33,10 @@ double parse_real_field(const std::string& field, const std::string& source, lon
 long long parse_integer_field(const std::string& field, const std::string& source, long line);
 // A real that must hold an integer value (e.g. "3" or "3.0"); Point-Synthesis categories.
 long long parse_integral_real_field(const std::string& field, const std::string& source, long line);
+
+// `value` as the int a PointSet stores for a class label or id; values beyond 32 bits throw
+// file_error(source, line, "<what> <value> is out of range ...") instead of being truncated.
+int checked_int(long long value, const std::string& what, const std::string& source, long line);
 
 // Shortest-safe text for a double that reads back to the same bits ("%.17g").
 std::string format_real(double v);
