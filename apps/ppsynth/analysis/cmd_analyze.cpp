@@ -31,7 +31,7 @@ using namespace ppsynth;
 using namespace ppsynth::pcf2017;
 
 struct AnalyzeArgs {
-  std::string input, outdir;
+  std::string input, outdir, format = "auto";
   int map_size = 64;            // intensity map resolution (pixels per side)
   int queries = 4;              // local PCFs on a queries x queries grid
   double sigma_rmax = 3.0;      // intensity kernel width, units of r_max
@@ -54,7 +54,9 @@ int run(const AnalyzeArgs& a) {
   if (a.map_size < 2 || a.map_size > 2048) throw InputError("--map-size must be in 2..2048");
   if (a.queries < 1 || a.queries > 16) throw InputError("--queries must be in 1..16");
   if (!(a.sigma_rmax > 0)) throw InputError("--sigma-rmax must be > 0");
-  PointSet ps = read_points(a.input);
+  ReadOptions ro;
+  ro.format = parse_format(a.format);
+  PointSet ps = read_points(a.input, ro);
   validate(ps, a.input);
   if (ps.size() < 4) throw InputError(a.input + ": analysis needs at least 4 points");
   if (a.periodic) {
@@ -157,6 +159,8 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   auto a = std::make_shared<AnalyzeArgs>();
   app.add_option("file", a->input, "point pattern file")->required();
   app.add_option("-o,--out", a->outdir, "output folder")->required();
+  app.add_option("--format", a->format, "input format: auto (detect), gabor, point-synthesis, plain, json")
+      ->capture_default_str();
   app.add_option("--map-size", a->map_size, "intensity map resolution (pixels per side)");
   app.add_option("--queries", a->queries, "local PCFs on a Q x Q grid of positions");
   app.add_option("--sigma-rmax", a->sigma_rmax, "intensity kernel width in units of r_max");

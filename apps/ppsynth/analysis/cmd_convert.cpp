@@ -21,7 +21,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   auto a = std::make_shared<ConvertArgs>();
   app.add_option("input", a->input, "point file to read")->required();
   app.add_option("output", a->output, "point file to write")->required();
-  app.add_option("--from", a->from, "input format: auto (detect), gabor, point-synthesis, plain, json")
+  app.add_option("--from,--format", a->from, "input format: auto (detect), gabor, point-synthesis, plain, json")
       ->capture_default_str();
   app.add_option("--to", a->to,
                  "output format: auto (.json -> json, else plain), gabor, point-synthesis, plain, json")

@@ -17,7 +17,7 @@
 namespace {
 
 struct Args {
-  std::string exemplar, output, out_file;
+  std::string exemplar, output, out_file, format = "auto";
   bool json = false, no_curves = false, spectrum = false, periodic = false;
   int bins = 100;
   double r_max = 0;
@@ -28,6 +28,8 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   auto a = std::make_shared<Args>();
   app.add_option("--exemplar", a->exemplar, "exemplar point file (\"shared:...\" allowed)")->required();
   app.add_option("--output", a->output, "synthesised point file to evaluate")->required();
+  app.add_option("--format", a->format, "input format of both files: auto (detect), gabor, point-synthesis, plain, json")
+      ->capture_default_str();
   app.add_flag("--json", a->json, "print the full result as JSON instead of a table");
   app.add_option("--out", a->out_file, "also write the JSON result to this file (atomically)");
   app.add_flag("--no-curves", a->no_curves, "leave the PCF curves out of the JSON");
@@ -45,8 +47,10 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     if (!(a->r_max >= 0) || a->r_max > 1) throw ppsynth::InputError("--r-max must be in (0, 1] (0 = from the exemplar's count)");
     if (a->wasserstein_pairs < 1 || a->wasserstein_pairs > 400000000)
       throw ppsynth::InputError("--wasserstein-exact-limit must be in 1..400000000 pairs (a 3.2 GB cost matrix)");
-    ppsynth::PointSet ex = ppsynth::read_points(ppsynth::resolve_data_path(a->exemplar));
-    ppsynth::PointSet out = ppsynth::read_points(ppsynth::resolve_data_path(a->output));
+    ppsynth::ReadOptions ro;
+    ro.format = ppsynth::parse_format(a->format);
+    ppsynth::PointSet ex = ppsynth::read_points(ppsynth::resolve_data_path(a->exemplar), ro);
+    ppsynth::PointSet out = ppsynth::read_points(ppsynth::resolve_data_path(a->output), ro);
     ppsynth::EvalOptions opt;
     opt.include_curves = !a->no_curves;
     opt.spectrum = a->spectrum;
