@@ -7,25 +7,69 @@
 
 #include "core/error.hpp"
 
+namespace fs = std::filesystem;
+
 namespace ppsynth {
 
-std::string temp_name_for(const std::string& path) {
-  // Keep the extension last so writers that look at it (cairo) still see it.
-  std::filesystem::path p(path);
-  return (p.parent_path() / (p.stem().string() + ".tmp-" + std::to_string(::getpid()) + p.extension().string()))
-      .string();
+namespace {
+
+// Where to write for `path`, and whether through a temp file (see the header).
+struct Target {
+  std::string path;
+  bool via_temp = true;
+};
+
+Target output_target(const std::string& path) {
+  std::error_code ec;
+  fs::path p(path);
+  for (int hops = 0; hops < 40; ++hops) {
+    const auto st = fs::symlink_status(p, ec);
+    switch (st.type()) {
+      case fs::file_type::not_found:
+      case fs::file_type::regular:
+        return {p.string(), true};
+      case fs::file_type::symlink: {
+        const fs::path to = fs::read_symlink(p, ec);
+        if (ec) throw file_error(path, 0, "cannot read the symbolic link: " + ec.message());
+        p = to.is_absolute() ? to : p.parent_path() / to;
+        continue;
+      }
+      case fs::file_type::directory:
+        throw file_error(path, 0, "is a directory; name a file to write");
+      default:  // character or block device, FIFO, socket
+        return {p.string(), false};
+    }
+  }
+  throw file_error(path, 0, "too many levels of symbolic links");
 }
 
-AtomicFile::AtomicFile(std::string path, std::ios::openmode mode)
-    : path_(std::move(path)), tmp_(temp_name_for(path_)) {
-  out_.open(tmp_, mode | std::ios::out | std::ios::trunc);
+// Keep the extension last so writers that look at it (cairo) still see it.
+std::string temp_name_for(const std::string& path) {
+  fs::path p(path);
+  return (p.parent_path() / (p.stem().string() + ".tmp-" + std::to_string(::getpid()) + p.extension().string())).string();
+}
+
+void rename_into_place(const std::string& tmp, const std::string& path, const std::string& shown) {
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw file_error(shown, 0, "cannot rename the temporary file into place");
+  }
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(std::string path, std::ios::openmode mode) : path_(std::move(path)) {
+  const Target t = output_target(path_);
+  tmp_ = t.via_temp ? temp_name_for(t.path) : "";
+  out_.open(t.via_temp ? tmp_ : t.path, mode | std::ios::out | (t.via_temp ? std::ios::trunc : std::ios::openmode{}));
   if (!out_) throw file_error(path_, 0, "cannot open for writing");
+  if (t.via_temp && t.path != path_) path_ = t.path;  // a symbolic link: its target is replaced
 }
 
 AtomicFile::~AtomicFile() {
   if (!committed_) {
     out_.close();
-    std::remove(tmp_.c_str());
+    if (!tmp_.empty()) std::remove(tmp_.c_str());
   }
 }
 
@@ -33,10 +77,8 @@ void AtomicFile::commit() {
   out_.flush();
   if (!out_) throw file_error(path_, 0, "write failed");
   out_.close();
-  if (std::rename(tmp_.c_str(), path_.c_str()) != 0) {
-    std::remove(tmp_.c_str());
-    throw file_error(path_, 0, "cannot rename temporary file into place");
-  }
+  if (out_.fail()) throw file_error(path_, 0, "write failed");
+  if (!tmp_.empty()) rename_into_place(tmp_, path_, path_);
   committed_ = true;
 }
 
@@ -47,17 +89,19 @@ void write_text_atomic(const std::string& path, const std::string& text) {
 }
 
 void write_via_temp(const std::string& path, const std::function<void(const std::string&)>& writer) {
-  const std::string tmp = temp_name_for(path);
+  const Target t = output_target(path);
+  if (!t.via_temp) {
+    writer(t.path);
+    return;
+  }
+  const std::string tmp = temp_name_for(t.path);
   try {
     writer(tmp);
   } catch (...) {
     std::remove(tmp.c_str());
     throw;
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw file_error(path, 0, "cannot rename temporary file into place");
-  }
+  rename_into_place(tmp, t.path, path);
 }
 
 }  // namespace ppsynth

@@ -1,6 +1,11 @@
 #pragma once
-// Outputs are never half-written: write to "<path>.tmp-<pid>" in the same folder, then
-// rename over the target (atomic on POSIX). An exception before commit() removes the temp.
+// Outputs are never half-written: a regular file (or an absent one) is written to
+// "<stem>.tmp-<pid><ext>" in the same folder, then renamed over the target (atomic on POSIX);
+// an exception before commit() removes the temp. Other targets are never replaced:
+//   a symbolic link     -> the file it points to is written that way (the link stays)
+//   a device, a FIFO    -> written directly (`convert a.txt /dev/stdout`); a failed write
+//                          (/dev/full) is an error naming the path
+//   a directory         -> refused
 #include <fstream>
 #include <functional>
 #include <string>
@@ -15,20 +20,17 @@ class AtomicFile {
   AtomicFile& operator=(const AtomicFile&) = delete;
 
   std::ostream& stream() { return out_; }
-  const std::string& temp_path() const { return tmp_; }
   void commit();  // flush, close, rename; throws InputError if the write failed
 
  private:
-  std::string path_, tmp_;
+  std::string path_, tmp_;  // tmp_ empty: written directly
   std::ofstream out_;
   bool committed_ = false;
 };
 
 // Writes `text` to `path` atomically.
 void write_text_atomic(const std::string& path, const std::string& text);
-// Calls `writer(temp_path)` for writers that need a file name (cairo), then renames.
+// Calls `writer(file_name)` for writers that need a file name (cairo), then renames.
 void write_via_temp(const std::string& path, const std::function<void(const std::string&)>& writer);
-// Temp name used by both.
-std::string temp_name_for(const std::string& path);
 
 }  // namespace ppsynth

@@ -3,9 +3,10 @@
 // feature nets, losses, optimisers, initialisers, synthesis methods, generators, commands).
 //
 // A part registers itself at the end of its own .cpp with PPSYNTH_REGISTER, giving its
-// config name, its default parameters (JSON; the only place those defaults live) and a
-// one-line description. Creating it from config merges the user's parameters over the
-// defaults and refuses unknown keys and wrong types, naming the key path.
+// config name, its default parameters (JSON; the only place those defaults live), the
+// allowed range of each numeric one (core/config/param_bounds.hpp) and a one-line
+// description. Creating it from config merges the user's parameters over the defaults and
+// refuses unknown keys, wrong types and values out of range, naming the key path.
 #include <functional>
 #include <map>
 #include <memory>
@@ -16,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/config/config.hpp"
+#include "core/config/param_bounds.hpp"
 #include "core/error.hpp"
 
 namespace ppsynth {
@@ -27,6 +29,7 @@ class Registry {
   struct Entry {
     Factory make;
     nlohmann::json defaults;  // every parameter with its default value
+    nlohmann::json bounds;    // the range of every numeric parameter, nested like `defaults`
     std::string description;
   };
 
@@ -67,6 +70,7 @@ class Registry {
     nlohmann::json params = spec;
     params.erase("type");
     nlohmann::json merged = apply_defaults(e.defaults, params, key_path);
+    check_bounds(merged, e.bounds, key_path);
     if (resolved) {
       *resolved = merged;
       (*resolved)["type"] = type;
@@ -76,7 +80,8 @@ class Registry {
   // Every registered part with its defaults (for `ppsynth config --defaults`).
   nlohmann::json describe() const {
     nlohmann::json j = nlohmann::json::object();
-    for (auto& [n, e] : entries_) j[n] = {{"description", e.description}, {"defaults", e.defaults}};
+    for (auto& [n, e] : entries_)
+      j[n] = {{"description", e.description}, {"defaults", e.defaults}, {"bounds", e.bounds}};
     return j;
   }
 
@@ -88,9 +93,9 @@ class Registry {
 
 #define PPSYNTH_CONCAT_INNER(a, b) a##b
 #define PPSYNTH_CONCAT(a, b) PPSYNTH_CONCAT_INNER(a, b)
-// PPSYNTH_REGISTER(RegistryType, "name", defaults_json, "description", factory_lambda)
-#define PPSYNTH_REGISTER(REG, NAME, DEFAULTS, DESC, ...)                                 \
+// PPSYNTH_REGISTER(RegistryType, "name", defaults_json, bounds_json, "description", factory_lambda)
+#define PPSYNTH_REGISTER(REG, NAME, DEFAULTS, BOUNDS, DESC, ...)                         \
   namespace {                                                                             \
   [[maybe_unused]] const bool PPSYNTH_CONCAT(ppsynth_registered_, __LINE__) =             \
-      REG::instance().add(NAME, REG::Entry{__VA_ARGS__, DEFAULTS, DESC});                 \
+      REG::instance().add(NAME, REG::Entry{__VA_ARGS__, DEFAULTS, BOUNDS, DESC});         \
   }

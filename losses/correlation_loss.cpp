@@ -30,6 +30,7 @@ torch::Tensor CorrelationLoss::forward(const Features& out) {
 
 PPSYNTH_REGISTER(ppsynth::LossRegistry, "correlation",
                  (ppsynth::json{{"layers", {2}}, {"weight", 1.0}, {"gradient", "exact"}}),
+                 (ppsynth::json{{"layers", "int [0, 15]"}, {"weight", "[0, inf)"}}),
                  "deep-correlation loss (global structure); gradient: exact | published",
                  [](const ppsynth::json& p) -> std::unique_ptr<ppsynth::FeatureLoss> {
                    const std::string g = p["gradient"].get<std::string>();

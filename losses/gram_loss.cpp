@@ -59,6 +59,7 @@ torch::Tensor GramLoss::forward(const Features& out) {
 }  // namespace ppsynth
 
 PPSYNTH_REGISTER(ppsynth::LossRegistry, "gram", (ppsynth::json{{"layers", {0, 1, 2}}, {"weight", 0.08}}),
+                 (ppsynth::json{{"layers", "int [0, 15]"}, {"weight", "[0, inf)"}}),
                  "Gram-matrix loss over the listed layers (local structure)",
                  [](const ppsynth::json& p) -> std::unique_ptr<ppsynth::FeatureLoss> {
                    return std::make_unique<ppsynth::GramLoss>(ppsynth::loss_layers(p, "gram"));

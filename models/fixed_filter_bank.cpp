@@ -79,6 +79,7 @@ torch::Tensor filter_bank(const std::string& name, int K) {
 
 PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "fixed_bank",
                  (ppsynth::json{{"bank", "all"}, {"kernel_size", 7}, {"depth", 3}, {"instance_norm", true}, {"relu", true}}),
+                 (ppsynth::json{{"kernel_size", "int [1, 63]"}, {"depth", "int [1, 16]"}}),
                  "fixed filter banks (Fig. 10): gaussian | sobel | derivative | all",
                  [](const ppsynth::json& p, int in_channels, uint64_t) -> std::unique_ptr<ppsynth::FeatureNet> {
                    auto bank = ppsynth::filter_bank(p["bank"].get<std::string>(), ppsynth::get_int(p, "kernel_size", "feature_net"));

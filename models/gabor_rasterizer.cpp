@@ -29,17 +29,22 @@ std::unique_ptr<Rasterizer> make(const json& p, const RasterizerArgs& a, bool sp
   // ask the torus to copy the exemplar's border fade (clumps); periodic exemplar maps too
   // treat the exemplar as a tile, so both sides have no border (docs/method.md "Border parking").
   o.periodic = get_bool(p, a.output ? "periodic_output" : "periodic_exemplar", "rasterizer");
-  if (o.base_frequency < 0) throw config_error("rasterizer.base_frequency", "must be >= 0");
   return std::make_unique<GaborRasterizer>(o);
 }
+
+// Both rasterizers' parameters, declared once (the frequency's default is the maps' own).
+json gabor_rasterizer_defaults() {
+  return json{{"base_frequency", GaborMapsOptions{}.base_frequency}, {"periodic_output", false}, {"periodic_exemplar", false}};
+}
+json gabor_rasterizer_bounds() { return json{{"base_frequency", "(0, inf)"}}; }
 
 }  // namespace
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::RasterizerRegistry, "gabor", (ppsynth::json{{"base_frequency", 1.5}, {"periodic_output", false}, {"periodic_exemplar", false}}),
+PPSYNTH_REGISTER(ppsynth::RasterizerRegistry, "gabor", ppsynth::gabor_rasterizer_defaults(), ppsynth::gabor_rasterizer_bounds(),
                  "Gabor maps: 1 spatial + 9 frequency maps per attribute (paper Eq. 5)",
                  [](const ppsynth::json& p, ppsynth::RasterizerArgs a) { return ppsynth::make(p, a, false); })
-PPSYNTH_REGISTER(ppsynth::RasterizerRegistry, "spatial", (ppsynth::json{{"base_frequency", 1.5}, {"periodic_output", false}, {"periodic_exemplar", false}}),
+PPSYNTH_REGISTER(ppsynth::RasterizerRegistry, "spatial", ppsynth::gabor_rasterizer_defaults(), ppsynth::gabor_rasterizer_bounds(),
                  "spatial maps only (gamma = 0; Fig. 11, irregular-convolution features)",
                  [](const ppsynth::json& p, ppsynth::RasterizerArgs a) { return ppsynth::make(p, a, true); })
 PPSYNTH_DEFAULTS_KIND("rasterizer", ppsynth::RasterizerRegistry)

@@ -16,6 +16,7 @@ class IdentityNet : public FeatureNet {
 }  // namespace ppsynth
 
 PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "identity", (ppsynth::json{{"depth", 3}}),
+                 (ppsynth::json{{"depth", "int [1, 16]"}}),
                  "no filters: the maps themselves at every layer (Fig. 12b)",
                  [](const ppsynth::json& p, int, uint64_t) -> std::unique_ptr<ppsynth::FeatureNet> {
                    return std::make_unique<ppsynth::IdentityNet>(ppsynth::get_int(p, "depth", "feature_net"));

@@ -113,6 +113,7 @@ Features RandomFilterNet::forward(const torch::Tensor& maps) {
 PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "random",
                  (ppsynth::json{{"channels", 120}, {"kernel_size", 7}, {"depth", 3},
                                 {"instance_norm", true}, {"relu", true}, {"precision", "float32"}}),
+                 (ppsynth::json{{"channels", "int [1, 4096]"}, {"kernel_size", "int [1, 63]"}, {"depth", "int [1, 16]"}}),
                  "the paper's random-filter network (Glorot-uniform, frozen)",
                  [](const ppsynth::json& p, int in_channels, uint64_t seed) -> std::unique_ptr<ppsynth::FeatureNet> {
                    ppsynth::RandomFilterNetOptions o;

@@ -1,7 +1,9 @@
 #include "optim/gabor_pipeline.hpp"
 
 #include <algorithm>
+#include <cmath>
 
+#include "core/memory_budget.hpp"
 #include "core/metrics/nearest_neighbor.hpp"
 #include "models/feature_grid.hpp"
 #include "optim/sigma_schedule.hpp"
@@ -38,6 +40,23 @@ json gabor_defaults() {
       {"terms", json::object()},
       // --quick: every knob that sets the cost, shrunk (tests and smoke runs).
       {"quick", {{"res", 24}, {"channels", 8}, {"max_iterations", 4}, {"num_sigmas", 2}}},
+  };
+}
+
+json gabor_bounds() {
+  return json{
+      {"c1", "(0, inf)"},
+      {"c2", "(0, inf)"},
+      {"num_sigmas", "int [1, 64]"},
+      {"grid", {{"res", "int [0, 8192]"}, {"min_res", "int [8, 8192]"}, {"max_res", "int [8, 8192]"}}},
+      {"k", "int [1, 1000000]"},
+      {"max_iterations", "int [1, 1000000000]"},
+      // check_every 0 would divide by zero; a window of 0 compares a loss with itself
+      {"convergence", {{"window", "int [1, 1000000000]"}, {"check_every", "int [1, 1000000000]"}, {"threshold", "[0, inf)"}}},
+      {"class_order", "int [0, 1000000]"},
+      {"class_own_weight", "[0, inf)"},
+      {"quick", {{"res", "int [8, 8192]"}, {"channels", "int [1, 4096]"}, {"max_iterations", "int [1, 1000000000]"},
+                 {"num_sigmas", "int [1, 64]"}}},
   };
 }
 
@@ -96,6 +115,16 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, in
   s.jitter = p["jitter"].get<bool>();
   s.class_own_weight = get_number(p, "class_own_weight", "method");
   if (!(s.class_own_weight >= 0)) throw config_error("method.class_own_weight", "must be >= 0");
+  {  // one iteration keeps the output grid's maps and every layer's activations and gradients
+    const double cells = std::pow(static_cast<double>(s.upscale) * s.res, 2);
+    auto number_or = [&](const char* key, double fallback) {  // the net's own registry checks the types later
+      return s.feature_net.contains(key) && s.feature_net[key].is_number() ? s.feature_net[key].get<double>() : fallback;
+    };
+    const double in_ch = 10.0 * (1 + s.attr_cols.size()), net_ch = number_or("channels", 120), layers = number_or("depth", 3);
+    check_memory(cells * 4.0 * (3 * in_ch + 6 * net_ch * layers + s.k * in_ch),
+                 "an output grid of " + std::to_string(s.upscale * s.res) + " x " + std::to_string(s.upscale * s.res) +
+                     " (method.grid.res " + std::to_string(s.res) + " x upscale " + std::to_string(s.upscale) + ")");
+  }
   s.rule = ConvergenceRule{get_int(p["convergence"], "window", "method.convergence"),
                            get_int(p["convergence"], "check_every", "method.convergence"),
                            get_number(p["convergence"], "threshold", "method.convergence")};

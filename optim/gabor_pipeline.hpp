@@ -21,6 +21,8 @@ namespace ppsynth {
 
 // The "gabor" method's defaults (the published code's settings, method.md §2-5).
 json gabor_defaults();
+// The range of each numeric default (core/config/param_bounds.hpp), checked on creation.
+json gabor_bounds();
 
 struct GaborSettings {
   double mean_nn_distance = 0;  // d of the exemplar (all classes)

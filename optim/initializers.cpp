@@ -48,6 +48,7 @@ class GeneratorInit : public Initializer {
 }  // namespace ppsynth
 
 PPSYNTH_REGISTER(ppsynth::InitializerRegistry, "best_candidate", (ppsynth::json{{"m", 10.0}, {"margin", 0.01}}),
+                 (ppsynth::json{{"m", "(0, 10000]"}, {"margin", "[0, 0.5)"}}),
                  "toroidal best-candidate Poisson disk in [margin, 1-margin]^2 (the paper's)",
                  [](const ppsynth::json& p) -> std::unique_ptr<ppsynth::Initializer> {
                    ppsynth::BestCandidateOptions o;
@@ -58,11 +59,13 @@ PPSYNTH_REGISTER(ppsynth::InitializerRegistry, "best_candidate", (ppsynth::json{
                    return std::make_unique<ppsynth::BestCandidateInit>(o);
                  })
 PPSYNTH_REGISTER(ppsynth::InitializerRegistry, "uniform", (ppsynth::json{{"margin", 0.01}}),
+                 (ppsynth::json{{"margin", "[0, 0.5)"}}),
                  "uniform random positions (the supplement: random initialisation works too)",
                  [](const ppsynth::json& p) -> std::unique_ptr<ppsynth::Initializer> {
                    return std::make_unique<ppsynth::UniformInit>(ppsynth::get_number(p, "margin", "method.init"));
                  })
 PPSYNTH_REGISTER(ppsynth::InitializerRegistry, "generator", (ppsynth::json{{"generator", {{"type", "jittered_grid"}}}}),
+                 ppsynth::json::object(),
                  "any registered point generator",
                  [](const ppsynth::json& p) -> std::unique_ptr<ppsynth::Initializer> {
                    return std::make_unique<ppsynth::GeneratorInit>(p["generator"]);

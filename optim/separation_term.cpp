@@ -90,6 +90,7 @@ class SeparationPointTerm : public PointTerm {
 }  // namespace ppsynth
 
 PPSYNTH_REGISTER(ppsynth::PointTermRegistry, "separation", (nlohmann::json{{"weight", 0.0}, {"fraction", 0.9}}),
+                 (nlohmann::json{{"weight", "[0, inf)"}, {"fraction", "[0, inf)"}}),
                  "soft minimum distance: fraction x the exemplar's closest pair per class pair / u (at least r_i + r_j)",
                  [](const nlohmann::json& p) -> std::unique_ptr<ppsynth::PointTerm> {
                    return std::make_unique<ppsynth::SeparationPointTerm>(p);

@@ -1,7 +1,9 @@
 // `ppsynth`: the command-line front of the framework. Subcommands register themselves
 // (apps/ppsynth/analysis/*.cpp, apps/ppsynth/synthesis/*.cpp); this file only parses the
 // global flags, dispatches, and turns errors into messages and exit codes.
+#include <filesystem>
 #include <iostream>
+#include <new>
 #include <thread>
 #include <limits>
 #include <string>
@@ -75,18 +77,31 @@ int main(int argc, char** argv) {
   }
   configure_logging(verbose - quiet);
   keep_freed_memory();
-#ifdef PPSYNTH_WITH_TORCH
-  // Debian's LibTorch starts with one intra-op thread: use every core (PPSYNTH_THREADS overrides).
-  const char* env_threads = std::getenv("PPSYNTH_THREADS");
-  const int threads = env_threads ? std::atoi(env_threads) : static_cast<int>(std::thread::hardware_concurrency());
-  if (threads > 0) torch::set_num_threads(threads);
-#endif
   for (auto& [name, sub] : subs) {
     if (!sub->parsed()) continue;
     try {
+#ifdef PPSYNTH_WITH_TORCH
+      // Debian's LibTorch starts with one intra-op thread: use every core (PPSYNTH_THREADS
+      // overrides; run.json records the count, since results depend on it in the last bits).
+      int threads = static_cast<int>(std::thread::hardware_concurrency());
+      if (const char* env = std::getenv("PPSYNTH_THREADS")) {
+        char* end = nullptr;
+        const long v = std::strtol(env, &end, 10);
+        if (end == env || *end != '\0' || v < 1 || v > 1024)
+          throw InputError(std::string("PPSYNTH_THREADS='") + env + "': expected a whole number from 1 to 1024");
+        threads = static_cast<int>(v);
+      }
+      if (threads > 0) torch::set_num_threads(threads);
+#endif
       return runs[name]();
     } catch (const InputError& e) {
       std::cerr << "ppsynth " << name << ": " << e.what() << "\n";
+      return 2;
+    } catch (const std::filesystem::filesystem_error& e) {  // a path the user gave: its message names it
+      std::cerr << "ppsynth " << name << ": " << e.what() << "\n";
+      return 2;
+    } catch (const std::bad_alloc&) {  // sizes are checked up front (core/memory_budget.hpp); this is what slips through
+      std::cerr << "ppsynth " << name << ": ran out of memory; reduce the point count, grid resolution or upscaling\n";
       return 2;
     } catch (const std::exception& e) {
       std::cerr << "ppsynth " << name << ": internal error: " << e.what() << "\n";

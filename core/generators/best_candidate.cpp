@@ -56,6 +56,7 @@ struct BestCandidateGen : PointGenerator {
 
 PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "best_candidate",
                  (nlohmann::json{{"m", 10.0}, {"margin", 0.01}}),
+                 (nlohmann::json{{"m", "(0, 10000]"}, {"margin", "[0, 0.5)"}}),
                  "Mitchell best-candidate (toroidal distances, m * count candidates; margin 0.01 = "
                  "the published initialisation's [0.01, 0.99]^2)",
                  [](const nlohmann::json& p) {

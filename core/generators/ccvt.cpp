@@ -9,6 +9,7 @@
 #include "core/generators/sampling_util.hpp"
 #include "core/generators/lattices.hpp"
 #include "core/generators/uniform.hpp"
+#include "core/memory_budget.hpp"
 #include "core/log.hpp"
 #include "core/neighbors.hpp"
 
@@ -57,6 +58,9 @@ PointSet ccvt_points(size_t n, uint64_t seed, Domain d, const CcvtOptions& opt) 
   if (opt.points_per_site < 1) throw config_error("ccvt.points_per_site", "must be >= 1");
   if (opt.max_iterations < 0) throw config_error("ccvt.max_iterations", "must be >= 0");
   if (opt.neighbor_sites < 1) throw config_error("ccvt.neighbor_sites", "must be >= 1");
+  // n x points_per_site samples (a PointSet row and an owner index each)
+  check_memory(static_cast<double>(n) * opt.points_per_site * 120.0,
+               "ccvt with " + std::to_string(n) + " sites x points_per_site " + std::to_string(opt.points_per_site));
   std::mt19937_64 rng(seed);
   PointSet sites = uniform_points(n, rng(), d);
   if (n < 2) return sites;
@@ -137,6 +141,7 @@ struct CcvtGen : PointGenerator {
 
 PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "ccvt",
                  (nlohmann::json{{"points_per_site", 1024}, {"max_iterations", 300}, {"neighbor_sites", 6}}),
+                 (nlohmann::json{{"points_per_site", "int [1, 1000000]"}, {"max_iterations", "int [0, inf)"}, {"neighbor_sites", "int [1, 1000]"}}),
                  "capacity-constrained Voronoi tessellation (Balzer et al. 2009), discrete, toroidal",
                  [](const nlohmann::json& p) {
                    auto g = std::make_unique<ppsynth::CcvtGen>();

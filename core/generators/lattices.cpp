@@ -125,15 +125,18 @@ struct HexGen : PointGenerator {
 }  // namespace ppsynth
 
 PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "jittered_grid", (nlohmann::json{{"jitter", 1.0}}),
+                 (nlohmann::json{{"jitter", "[0, 1]"}}),
                  "one uniform point per grid cell (jitter 1 = whole cell)", [](const nlohmann::json& p) {
                    auto g = std::make_unique<ppsynth::JitteredGen>();
                    g->jitter = p["jitter"].get<double>();
                    return g;
                  })
 PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "regular_grid", nlohmann::json::object(),
+                 nlohmann::json::object(),
                  "cell centres of a regular grid",
                  [](const nlohmann::json&) { return std::make_unique<ppsynth::RegularGen>(); })
 PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "hexagonal_lattice", (nlohmann::json{{"random_offset", false}}),
+                 nlohmann::json::object(),
                  "hexagonal (triangular) lattice with torus-compatible spacing; point count close to n",
                  [](const nlohmann::json& p) {
                    auto g = std::make_unique<ppsynth::HexGen>();

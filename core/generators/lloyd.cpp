@@ -59,6 +59,7 @@ struct LloydGen : PointGenerator {
 
 PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "lloyd",
                  (nlohmann::json{{"iterations", 10}, {"samples_per_point", 64}}),
+                 (nlohmann::json{{"iterations", "int [0, 100000]"}, {"samples_per_point", "int [1, 100000]"}}),
                  "toroidal Lloyd relaxation of uniform points (sampled Voronoi cells)",
                  [](const nlohmann::json& p) {
                    auto g = std::make_unique<ppsynth::LloydGen>();

@@ -61,6 +61,7 @@ struct MaternGen : PointGenerator {
 
 PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "matern_cluster",
                  (nlohmann::json{{"parent_intensity", 0.0}, {"mean_children", 8.0}, {"radius", 0.05}}),
+                 (nlohmann::json{{"parent_intensity", "[0, inf)"}, {"mean_children", "(0, inf)"}, {"radius", "(0, 0.5]"}}),
                  "Matern cluster process conditioned on n points (parent_intensity 0 = n / mean_children)",
                  [](const nlohmann::json& p) {
                    auto g = std::make_unique<ppsynth::MaternGen>();

@@ -27,5 +27,6 @@ struct UniformGen : PointGenerator {
 }  // namespace ppsynth
 
 PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "uniform", nlohmann::json::object(),
+                 nlohmann::json::object(),
                  "uniform random points (white noise)",
                  [](const nlohmann::json&) { return std::make_unique<ppsynth::UniformGen>(); })

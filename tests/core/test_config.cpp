@@ -58,7 +58,7 @@ struct Seven : Thing {
 using ThingRegistry = Registry<Thing>;
 }  // namespace
 
-PPSYNTH_REGISTER(ThingRegistry, "seven", (json{{"v", 7}}), "test part",
+PPSYNTH_REGISTER(ThingRegistry, "seven", (json{{"v", 7}}), (json{{"v", "int [0, 100]"}}), "test part",
                  [](const json& p) { return std::make_unique<Seven>(p["v"].get<int>()); })
 
 TEST_CASE("registry creates by name with defaults and refuses duplicates", "[config]") {

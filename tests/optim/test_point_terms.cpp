@@ -33,6 +33,7 @@ double mean_distance_to_centre(const PointSet& ps) {
 }  // namespace
 
 PPSYNTH_REGISTER(ppsynth::PointTermRegistry, "test_pull_to_centre", (nlohmann::json{{"weight", 0.0}}),
+                 (nlohmann::json{{"weight", "[0, inf)"}}),
                  "test only: pulls points to the centre",
                  [](const nlohmann::json& p) -> std::unique_ptr<ppsynth::PointTerm> {
                    return std::make_unique<PullToCentre>(p);

@@ -16,7 +16,7 @@ namespace {
 struct Opts {
   std::vector<std::string> names, sets, reuse, panels;
   std::string out;
-  bool quick = false, list = false, check = false;
+  bool quick = false, list = false, check = false, force = false;
 };
 
 ppsynth::app::RunFn setup(CLI::App& app) {
@@ -25,7 +25,8 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_flag("--list", o->list, "list the configs in configs/paper");
   app.add_flag("--check", o->check, "validate the named configs (all of configs/paper if none) without running");
   app.add_flag("--quick", o->quick, "small grids, few iterations, few filters (smoke test)");
-  app.add_option("-o,--out", o->out, "report directory (default reports/NAME)");
+  app.add_option("-o,--out", o->out, "report directory (default reports/NAME); must be new or empty");
+  app.add_flag("--force", o->force, "replace the report directory if it holds a report of ppsynth");
   app.add_option("--reuse", o->reuse,
                  "reuse finished run directories (DIR or its subdirectories, e.g. runs/) whose resolved config equals a column's");
   app.add_option("--panels", o->panels, "run only these panels (the report says which were left out)");
@@ -59,6 +60,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     app::ReproduceOptions ro;
     ro.quick = o->quick;
     ro.out = o->out;
+    ro.force = o->force;
     ro.overrides = o->sets;
     ro.reuse = o->reuse;
     ro.panels = o->panels;

@@ -45,12 +45,6 @@ json without_curves(json j) {
   return j;
 }
 
-std::string replace_all(std::string s, const std::string& from, const std::string& to) {
-  if (from.empty()) return s;
-  for (size_t pos = 0; (pos = s.find(from, pos)) != std::string::npos; pos += to.size()) s.replace(pos, from.size(), to);
-  return s;
-}
-
 void add_wide_table(HtmlReport& rep, const ReportTable& t, const std::string& files_note) {
   rep.add_paragraph(t.caption + files_note);
   rep.add_html("<div style=\"overflow-x:auto\">");
@@ -103,11 +97,8 @@ std::string command_line(const ReproduceConfig& c, const ReproduceOptions& o) {
 
 }  // namespace
 
-void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, const std::string& dir,
-                            const ReproduceOptions& o) {
-  const std::string abs_partial = fs::absolute(dir).string(), abs_final = fs::absolute(r.dir).string();
-  auto shown = [&](const std::string& text) { return replace_all(text, abs_partial, abs_final); };
-
+void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, const ReproduceOptions& o) {
+  const std::string& dir = r.dir;
   HtmlReport rep(c.title);
   if (!c.claim.empty()) rep.add_html("<blockquote style=\"border-left:4px solid #1f77b4;margin:1rem 0;padding:.2rem 1rem;color:#333\"><b>Paper's claim.</b> " +
                                      html_escape(c.claim) + "</blockquote>\n");
@@ -136,7 +127,7 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
   std::vector<std::vector<std::string>> subst;
   for (auto& p : r.panels) {
     const PanelSpec& s = writer_panel_spec(c, p.name);
-    subst.push_back({s.name, s.title, shown(p.exemplar_source) + " (" + std::to_string(p.exemplar.size()) + " points, " +
+    subst.push_back({s.name, s.title, p.exemplar_source + " (" + std::to_string(p.exemplar.size()) + " points, " +
                                           std::to_string(p.exemplar.num_classes()) + (p.exemplar.num_classes() == 1 ? " class)" : " classes)"),
                      s.note});
   }
@@ -169,7 +160,7 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
     const PanelSpec& s = writer_panel_spec(c, p.name);
     rep.add_heading(s.name + ": " + s.title);
     if (!s.note.empty()) rep.add_paragraph(s.note);
-    rep.add_key_values({{"exemplar", shown(p.exemplar_source)},
+    rep.add_key_values({{"exemplar", p.exemplar_source},
                         {"exemplar points / classes / attributes", std::to_string(p.exemplar.size()) + " / " +
                                                                        std::to_string(p.exemplar.num_classes()) + " / " +
                                                                        std::to_string(p.exemplar.num_attributes())},
@@ -177,10 +168,10 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
     for (auto& [img, caption] : p.images) rep.add_image(dir + "/" + img, caption);
     if (!s.paper.empty()) rep.add_code_block(s.paper.dump(2), "published numbers for this panel");
 
-    json pj = {{"name", s.name}, {"title", s.title}, {"note", s.note}, {"exemplar", shown(p.exemplar_source)},
+    json pj = {{"name", s.name}, {"title", s.title}, {"note", s.note}, {"exemplar", p.exemplar_source},
                {"exemplar_points", p.exemplar.size()}, {"seconds", p.seconds}, {"columns", json::array()}};
     for (auto& col : p.columns) {
-      json cj = {{"column", col.column}, {"status", col.status}, {"source", shown(col.source)}, {"run_dir", col.run_dir},
+      json cj = {{"column", col.column}, {"status", col.status}, {"source", col.source}, {"run_dir", col.run_dir},
                  {"points", col.output.size()}, {"seconds", col.seconds}, {"synthesis_seconds", col.synthesis_seconds},
                  {"iterations", col.iterations}, {"metrics", without_curves(col.metrics)}};
       pj["columns"].push_back(cj);
@@ -219,7 +210,7 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
                           format_cell(st.value("final_loss", json(nullptr)), 6), format_cell(st.value("seconds", json(nullptr)), 2)});
         rep.add_table({"stage", "sigma", "iterations", "final loss", "seconds"}, rows, "per stage");
       }
-      rep.add_code_block(shown(col.config.dump(2)), "resolved run config (" + col.column + ")");
+      rep.add_code_block(col.config.dump(2), "resolved run config (" + col.column + ")");
     }
     report["panels"].push_back(pj);
   }
@@ -227,7 +218,7 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
   rep.add_heading("Configuration");
   rep.add_code_block(c.raw.dump(2), "the figure config after parent resolution (" + (c.source.empty() ? std::string("in memory") : c.source) + ")");
   rep.write(dir + "/index.html");
-  write_text_atomic(dir + "/report.json", shown(report.dump(2)) + "\n");
+  write_text_atomic(dir + "/report.json", report.dump(2) + "\n");
 }
 
 }  // namespace ppsynth::app

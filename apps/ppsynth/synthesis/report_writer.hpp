@@ -17,9 +17,7 @@
 
 namespace ppsynth::app {
 
-// `dir`: where the files go now (the ".partial" directory during a run; paths inside it are
-// shown relative to the final result.dir).
-void write_reproduce_report(const ReproduceConfig& config, const ReproduceResult& result, const std::string& dir,
-                            const ReproduceOptions& options);
+// Into result.dir: index.html, report.json, the tables as CSV and Markdown.
+void write_reproduce_report(const ReproduceConfig& config, const ReproduceResult& result, const ReproduceOptions& options);
 
 }  // namespace ppsynth::app

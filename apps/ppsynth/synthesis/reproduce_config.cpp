@@ -7,8 +7,11 @@
 #include "apps/ppsynth/synthesis/run_config.hpp"
 #include "core/config/config.hpp"
 #include "core/error.hpp"
+#include "core/run_directory.hpp"
 #include "core/generators/generator.hpp"
 #include "core/paths.hpp"
+#include "models/rasterizer.hpp"
+#include "optim/gabor_pipeline.hpp"
 #include "optim/method.hpp"
 
 namespace fs = std::filesystem;
@@ -36,8 +39,10 @@ json generator_defaults() {
 
 json maps_defaults() {
   // Fig. 3: frequency maps at sigma = 0.078 (gamma = 1), spatial maps at several sigmas (gamma = 0).
-  return json{{"sigma", 0.078}, {"sigmas", {0.02, 0.04, 0.078, 0.12}}, {"res", 128},
-              {"quick_res", 32}, {"k", 30},  {"base_frequency", 1.5}};
+  // k and the base frequency are the synthesis's own (declared by the gabor method and rasterizer).
+  return json{{"sigma", 0.078}, {"sigmas", {0.02, 0.04, 0.078, 0.12}}, {"res", 128}, {"quick_res", 32},
+              {"k", gabor_defaults()["k"]},
+              {"base_frequency", RasterizerRegistry::instance().entry("gabor").defaults["base_frequency"]}};
 }
 
 json table_defaults() {
@@ -47,11 +52,6 @@ json table_defaults() {
 const std::set<std::string> kTableTypes = {"comparison", "relative_radius", "runtime"};
 
 std::string at(const std::string& path, size_t i) { return path + "[" + std::to_string(i) + "]"; }
-
-bool file_safe(const std::string& s) {
-  if (s.empty()) return false;
-  return std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; });
-}
 
 std::vector<std::string> string_list(const json& j, const std::string& kp) {
   if (!j.is_array()) throw config_error(kp, "expected a list of strings");
@@ -103,7 +103,7 @@ PanelSpec parse_panel(const json& pj, const ReproduceConfig& c, const std::strin
   json p = apply_defaults(panel_defaults(), pj, kp);
   PanelSpec s;
   s.name = p["name"];
-  if (!file_safe(s.name)) throw config_error(kp + ".name", "expected a short name of letters, digits, '_' or '-'");
+  if (!is_safe_name(s.name)) throw config_error(kp + ".name", "expected a short name of letters, digits, '_' or '-'");
   s.title = p["title"].get<std::string>().empty() ? s.name : p["title"].get<std::string>();
   s.note = p["note"];
   s.kind = p["kind"];
@@ -197,7 +197,7 @@ ReproduceConfig parse_reproduce_config(const json& config, const std::string& so
     c.source = source;
     c.name = f["name"];
     if (c.name.empty() && !source.empty()) c.name = fs::path(source).stem().string();
-    if (!file_safe(c.name)) throw config_error("name", "expected a short name of letters, digits, '_' or '-'");
+    if (!is_safe_name(c.name)) throw config_error("name", "expected a short name of letters, digits, '_' or '-'");
     c.title = f["title"].get<std::string>().empty() ? c.name : f["title"].get<std::string>();
     c.claim = f["claim"];
     c.paper_ref = f["paper_ref"];
@@ -231,7 +231,7 @@ ReproduceConfig parse_reproduce_config(const json& config, const std::string& so
       ts.type = t["type"];
       if (!kTableTypes.count(ts.type)) throw config_error(kp + ".type", "expected comparison, relative_radius or runtime, got \"" + ts.type + "\"");
       ts.name = t["name"].get<std::string>().empty() ? ts.type : t["name"].get<std::string>();
-      if (!file_safe(ts.name)) throw config_error(kp + ".name", "expected letters, digits, '_' or '-' (it names the CSV file)");
+      if (!is_safe_name(ts.name)) throw config_error(kp + ".name", "expected letters, digits, '_' or '-' (it names the CSV file)");
       if (!tnames.insert(ts.name).second || ts.name == "metrics") throw config_error(kp + ".name", "duplicate or reserved table name '" + ts.name + "'");
       ts.caption = t["caption"];
       if (!t["methods"].is_null()) {
@@ -270,7 +270,7 @@ json column_run_config(const ReproduceConfig& c, const PanelSpec& p, const std::
     if (c.method_params.contains(column)) m = merge(m, c.method_params[column]);
     run["method"] = m;
   }
-  run["name"] = c.name + "/" + p.name + "/" + column;
+  run["name"] = c.name + "-" + p.name + "-" + column;  // a label, and a plain name like every run name
   for (const auto& o : overrides) {
     if (column != "ours" && o.rfind("method.", 0) == 0) continue;  // method keys belong to ours
     set_override(run, o);

@@ -18,6 +18,7 @@
 #include "core/log.hpp"
 #include "core/metrics/evaluation.hpp"
 #include "core/paths.hpp"
+#include "core/run_directory.hpp"
 #include "core/render/plot_curves.hpp"
 #include "core/render/plot_points.hpp"
 
@@ -74,7 +75,7 @@ void read_run_json(ColumnResult& c, const std::string& run_dir) {
 }
 
 ColumnResult synthesise(const ReproduceConfig& c, const PanelSpec& p, const std::string& column, const ReproduceOptions& o,
-                        const std::string& generated_exemplar, const std::string& partial, PanelResult& pr,
+                        const std::string& generated_exemplar, const std::string& report_dir, PanelResult& pr,
                         PointSet& ours_init, std::string& ours_init_source) {
   json run = column_run_config(c, p, column, o.overrides);
   if (!generated_exemplar.empty()) {
@@ -92,11 +93,14 @@ ColumnResult synthesise(const ReproduceConfig& c, const PanelSpec& p, const std:
   const std::string reused = o.reuse.empty() ? "" : find_matching_run(resolved, o.quick, o.reuse);
   if (!reused.empty()) {
     spdlog::info("[{}/{}] '{}': reusing the finished run {}", c.name, p.name, column, reused);
-    fs::create_directories(fs::path(partial + "/" + rel).parent_path());
-    fs::copy(reused, partial + "/" + rel, fs::copy_options::recursive);
-    out = load_run(partial + "/" + rel);
+    fs::create_directories(fs::path(report_dir + "/" + rel).parent_path());
+    fs::copy(reused, report_dir + "/" + rel, fs::copy_options::recursive);
+    out = load_run(report_dir + "/" + rel);
   } else {
-    out = run_synthesis(resolved, partial + "/" + rel, o.quick);
+    RunRequest req;
+    req.dir = report_dir + "/" + rel;
+    req.quick = o.quick;
+    out = run_synthesis(resolved, req);
   }
   ColumnResult r;
   r.column = column;
@@ -117,10 +121,10 @@ ColumnResult synthesise(const ReproduceConfig& c, const PanelSpec& p, const std:
   return r;
 }
 
-void run_panel(const ReproduceConfig& c, const PanelSpec& p, const ReproduceOptions& o, const std::string& partial, PanelResult& pr) {
+void run_panel(const ReproduceConfig& c, const PanelSpec& p, const ReproduceOptions& o, const std::string& report_dir, PanelResult& pr) {
   const auto t0 = Clock::now();
   pr.name = p.name;
-  const std::string panel_dir = partial + "/panels/" + p.name;
+  const std::string panel_dir = report_dir + "/panels/" + p.name;
   fs::create_directories(panel_dir);
   std::string generated;
   if (!p.generator.is_null()) {
@@ -160,7 +164,7 @@ void run_panel(const ReproduceConfig& c, const PanelSpec& p, const ReproduceOpti
       continue;
     }
     spdlog::info("[{}/{}] running '{}'", c.name, p.name, m);
-    done[m] = synthesise(c, p, m, o, generated, partial, pr, ours_init, ours_init_source);
+    done[m] = synthesise(c, p, m, o, generated, report_dir, pr, ours_init, ours_init_source);
   }
   if (pr.exemplar.empty()) {  // only init/reference columns: still need the exemplar
     json run = column_run_config(c, p, "ours", o.overrides);
@@ -202,24 +206,6 @@ void run_panel(const ReproduceConfig& c, const PanelSpec& p, const ReproduceOpti
   if (fs::exists(panel_dir + "/pcf_compare.png"))
     pr.images.push_back({"panels/" + p.name + "/pcf_compare.png", p.title + ": PCF of the exemplar and of each output"});
   pr.seconds = since(t0);
-}
-
-// Generated exemplars are written inside "<out>.partial"; after the rename the run
-// directories' config.json must name the final place.
-void fix_partial_paths(const std::string& partial, const std::string& dir, const ReproduceResult& res) {
-  const std::string from = fs::absolute(partial).string(), to = fs::absolute(dir).string();
-  for (const auto& p : res.panels)
-    for (const auto& c : p.columns) {
-      if (c.run_dir.empty()) continue;
-      const std::string f = dir + "/" + c.run_dir + "/config.json";
-      std::ifstream in(f);
-      if (!in) continue;
-      std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-      in.close();
-      bool changed = false;
-      for (size_t pos; (pos = text.find(from)) != std::string::npos; changed = true) text.replace(pos, from.size(), to);
-      if (changed) write_text_atomic(f, text);
-    }
 }
 
 }  // namespace
@@ -274,26 +260,25 @@ ReproduceResult run_reproduction(const ReproduceConfig& config, const ReproduceO
   }
   ReproduceResult res;
   res.quick = o.quick;
-  res.dir = o.out.empty() ? "reports/" + c.name : o.out;
-  while (res.dir.size() > 1 && res.dir.back() == '/') res.dir.pop_back();
-  const std::string partial = res.dir + ".partial";
-  fs::remove_all(partial);
-  fs::create_directories(partial + "/panels");
+  RunDirOptions dir_options;
+  dir_options.kind = "report";
+  dir_options.force = o.force;
+  RunDirectory dir = RunDirectory::open(o.out.empty() ? "reports/" + c.name : o.out, dir_options);
+  res.dir = dir.path();
   try {
+    fs::create_directories(res.dir + "/panels");
     for (const auto& p : c.panels) {
       res.panels.emplace_back();
-      run_panel(c, p, o, partial, res.panels.back());
+      run_panel(c, p, o, res.dir, res.panels.back());
       spdlog::info("[{}] panel {} done in {:.1f} s", c.name, p.name, res.panels.back().seconds);
     }
     res.seconds = since(t0);
-    write_reproduce_report(c, res, partial, o);
+    write_reproduce_report(c, res, o);
+    dir.mark_complete();
   } catch (...) {
-    fs::remove_all(partial);
+    dir.discard();  // a failed report leaves nothing of its own behind
     throw;
   }
-  fs::remove_all(res.dir);
-  fs::rename(partial, res.dir);
-  fix_partial_paths(partial, res.dir, res);
   spdlog::info("[{}] wrote {}/index.html ({:.1f} s)", c.name, res.dir, res.seconds);
   return res;
 }

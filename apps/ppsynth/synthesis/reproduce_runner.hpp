@@ -27,6 +27,7 @@ namespace ppsynth::app {
 struct ReproduceOptions {
   bool quick = false;
   std::string out;                     // default: reports/<name>
+  bool force = false;                  // replace a ppsynth report directory already at `out`
   std::vector<std::string> overrides;  // "--set key=value" for every panel's runs
   // Finished run directories to reuse (find_matching_run): a synthesised column whose resolved
   // config equals one of theirs is copied into the report instead of being run again.

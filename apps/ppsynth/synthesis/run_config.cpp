@@ -2,9 +2,11 @@
 
 #include "core/config/config.hpp"
 #include "core/config/defaults_catalog.hpp"
+#include "core/config/param_bounds.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/paths.hpp"
+#include "core/run_directory.hpp"
 #include "optim/method.hpp"
 
 namespace ppsynth::app {
@@ -23,6 +25,7 @@ json run_defaults() {
       {"method", {{"type", "gabor"}}},
       {"snapshots", true},       // plot the output after every stage (paper Fig. 4)
       {"evaluate", true},        // run the metrics on the output
+      {"checkpoint_seconds", 60.0},  // wall time between checkpoints (and at every stage boundary)
   };
 }
 
@@ -30,11 +33,14 @@ json resolve_run_config(json config, const std::vector<std::string>& overrides) 
   for (auto& o : overrides) set_override(config, o);
   json r = apply_defaults(run_defaults(), config, "");
   if (!r["seed"].is_number_integer() || r["seed"].get<long long>() < 0) throw config_error("seed", "expected an integer >= 0");
-  if (get_int(r, "upscale", "") < 1) throw config_error("upscale", "must be an integer >= 1");
+  check_bounds(r, json{{"upscale", "int [1, 64]"}, {"checkpoint_seconds", "(0, inf)"}}, "");  // u: u^2 copies of the exemplar
   json resolved_method;
   MethodRegistry::instance().create(r["method"], "method", &resolved_method);
   r["method"] = resolved_method;
   if (r["exemplar"].get<std::string>().empty()) throw config_error("exemplar", "no exemplar file given");
+  const std::string name = r["name"];
+  if (!name.empty() && !is_safe_name(name))  // it names runs/<name>: never a path
+    throw config_error("name", "'" + name + "' is not a plain name (letters, digits, '_' or '-')");
   return r;
 }
 

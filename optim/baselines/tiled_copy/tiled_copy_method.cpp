@@ -64,6 +64,7 @@ class TiledCopyMethod : public SynthesisMethod {
 }  // namespace ppsynth
 
 PPSYNTH_REGISTER(ppsynth::MethodRegistry, "tiled_copy", (nlohmann::json{{"offset", nullptr}}),
+                 (nlohmann::json{{"offset", "[-1e6, 1e6]"}}),
                  "the exemplar tiled u x u, shifted on the torus (offset null = seeded random, or [x, y]): the copy baseline",
                  [](const nlohmann::json& p) -> std::unique_ptr<ppsynth::SynthesisMethod> {
                    return std::make_unique<ppsynth::TiledCopyMethod>(p);

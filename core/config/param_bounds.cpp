@@ -1,0 +1,117 @@
+#include "core/config/param_bounds.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace ppsynth {
+
+namespace {
+
+struct Interval {
+  bool integer = false;
+  double lo = -INFINITY, hi = INFINITY;
+  bool lo_open = true, hi_open = true;
+};
+
+double parse_end(std::string s, const std::string& bound) {
+  s.erase(0, s.find_first_not_of(' '));
+  s.erase(s.find_last_not_of(' ') + 1);
+  if (s == "inf" || s == "+inf") return INFINITY;
+  if (s == "-inf") return -INFINITY;
+  size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(s, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != s.size() || s.empty()) throw std::logic_error("malformed parameter bound '" + bound + "'");
+  return v;
+}
+
+Interval parse_interval(const std::string& bound) {
+  Interval iv;
+  std::string s = bound;
+  if (s.rfind("int ", 0) == 0) {
+    iv.integer = true;
+    s = s.substr(4);
+  }
+  const size_t comma = s.find(',');
+  if (s.size() < 5 || (s.front() != '[' && s.front() != '(') || (s.back() != ']' && s.back() != ')') ||
+      comma == std::string::npos)
+    throw std::logic_error("malformed parameter bound '" + bound + "'");
+  iv.lo_open = s.front() == '(';
+  iv.hi_open = s.back() == ')';
+  iv.lo = parse_end(s.substr(1, comma - 1), bound);
+  iv.hi = parse_end(s.substr(comma + 1, s.size() - comma - 2), bound);
+  return iv;
+}
+
+std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+
+std::string shown(double v) {
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+void check_value(const nlohmann::json& v, const std::string& bound, const std::string& kp) {
+  if (v.is_null()) return;  // a null default ("none") is not a number to bound
+  const Interval iv = parse_interval(bound);
+  if (!v.is_number()) throw config_error(kp, "expected a number in " + bound);
+  const double x = v.get<double>();
+  if (!std::isfinite(x)) throw config_error(kp, "not a finite number");
+  if (iv.integer && x != std::floor(x)) throw config_error(kp, "expected a whole number in " + bound + ", got " + shown(x));
+  const bool below = iv.lo_open ? !(x > iv.lo) : !(x >= iv.lo);
+  const bool above = iv.hi_open ? !(x < iv.hi) : !(x <= iv.hi);
+  if (below || above) throw config_error(kp, shown(x) + " is outside the allowed range " + bound);
+}
+
+}  // namespace
+
+void check_bounds(const nlohmann::json& params, const nlohmann::json& bounds, const std::string& key_path) {
+  if (!bounds.is_object() || !params.is_object()) return;
+  for (auto it = bounds.begin(); it != bounds.end(); ++it) {
+    if (!params.contains(it.key())) continue;
+    const std::string kp = join(key_path, it.key());
+    const nlohmann::json& v = params[it.key()];
+    if (it.value().is_object()) {
+      check_bounds(v, it.value(), kp);
+    } else if (it.value().is_string()) {
+      if (v.is_array()) {  // a list of numbers: every element in the bound
+        for (size_t i = 0; i < v.size(); ++i) check_value(v[i], it.value(), kp + "[" + std::to_string(i) + "]");
+      } else {
+        check_value(v, it.value(), kp);
+      }
+    } else {
+      throw std::logic_error("malformed parameter bound at '" + kp + "'");
+    }
+  }
+}
+
+std::vector<std::string> unbounded_numbers(const nlohmann::json& defaults, const nlohmann::json& bounds,
+                                           const std::string& key_path) {
+  std::vector<std::string> out;
+  if (!defaults.is_object()) return out;
+  for (auto it = defaults.begin(); it != defaults.end(); ++it) {
+    const std::string kp = join(key_path, it.key());
+    const nlohmann::json* b = bounds.is_object() && bounds.contains(it.key()) ? &bounds[it.key()] : nullptr;
+    const nlohmann::json& d = it.value();
+    if (d.is_object() && !d.contains("type")) {  // a nested group (a component spec has its own registry)
+      auto sub = unbounded_numbers(d, b ? *b : nlohmann::json::object(), kp);
+      out.insert(out.end(), sub.begin(), sub.end());
+    } else if (d.is_number() || (d.is_array() && !d.empty() && d.front().is_number())) {
+      if (!b || !b->is_string()) out.push_back(kp);
+      else parse_interval(b->get<std::string>());  // malformed bounds surface here too
+    }
+  }
+  return out;
+}
+
+}  // namespace ppsynth

@@ -1,0 +1,17 @@
+#pragma once
+// Sizes a user controls (point counts, grid and image resolutions, upscaling) are checked
+// against the memory they need before anything is allocated, so that an impossible request
+// is an error with its number, not an allocation failure deep inside a library.
+#include <string>
+
+namespace ppsynth {
+
+// The memory this process may use: MemAvailable of /proc/meminfo (else the physical memory),
+// lowered by PPSYNTH_MEMORY_LIMIT_MB when set (tests, shared machines).
+double available_memory_bytes();
+
+// Throws InputError "<what> needs about X GiB; Y GiB are available" when `bytes` exceeds
+// available_memory_bytes(). `what` names the parameter(s) that set the size.
+void check_memory(double bytes, const std::string& what);
+
+}  // namespace ppsynth

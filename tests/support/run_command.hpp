@@ -1,0 +1,30 @@
+#pragma once
+// Test support: runs the built `ppsynth` binary as a user would and keeps what it printed.
+#include <array>
+#include <cstdio>
+#include <string>
+
+#include <sys/wait.h>
+
+namespace ppsynth::test {
+
+struct CommandResult {
+  int status = -1;     // exit code; 128 + N when killed by signal N
+  std::string output;  // stdout and stderr together
+};
+
+// `args` is passed to the shell after the binary; `prefix` goes before it (e.g. "cd DIR &&",
+// "PPSYNTH_THREADS=x").
+inline CommandResult run_ppsynth(const std::string& args, const std::string& prefix = "") {
+  const std::string cmd = prefix + " " + PPSYNTH_BINARY + " " + args + " 2>&1";
+  CommandResult r;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf{};
+  for (size_t n; (n = fread(buf.data(), 1, buf.size(), p)) > 0;) r.output.append(buf.data(), n);
+  const int st = pclose(p);
+  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
+  return r;
+}
+
+}  // namespace ppsynth::test
