@@ -5,9 +5,11 @@
 // runner and report handles a new method with no code change.
 //
 // This header is torch-free on purpose: baselines in optim/baselines/ build without LibTorch.
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -39,6 +41,9 @@ class SynthesisObserver {
   virtual void on_iteration(const ProgressEvent&) {}
   // `current` is the whole output so far (frozen and moving points, with classes/attrs).
   virtual void on_stage_end(const ProgressEvent&, const PointSet& current) {}
+  // A resumed run: the iterations run before the checkpoint, in order (their on_iteration
+  // events, replayed once), then the run continues with on_iteration as usual.
+  virtual void on_resume(const std::vector<ProgressEvent>& earlier) {}
 };
 
 // Everything a method gets besides its own parameters.
@@ -53,10 +58,29 @@ struct SynthesisContext {
   // stage, wall time per phase, resolved settings such as the grid and sigmas).
   nlohmann::json* stats = nullptr;
 
+  // Checkpoints, for methods that can resume (SynthesisMethod::can_resume). The method hands
+  // its state as opaque bytes to `save_checkpoint` at every stage boundary and at least every
+  // `checkpoint_seconds` of wall time; the run layer stores them. With `resume_state` (bytes
+  // from an earlier save_checkpoint of the same config, seed and exemplar) it continues from
+  // there instead of starting. When `stop` becomes true (a signal), it saves a checkpoint at
+  // the end of the current iteration and throws SynthesisInterrupted.
+  std::function<void(const std::string& state)> save_checkpoint;
+  double checkpoint_seconds = 60;
+  const std::string* resume_state = nullptr;
+  const std::atomic<bool>* stop = nullptr;
+
+  bool stop_requested() const { return stop && stop->load(); }
   void start(const PointSet& p) const { for (auto* o : observers) o->on_start(p); }
   void stage_begin(const ProgressEvent& e) const { for (auto* o : observers) o->on_stage_begin(e); }
   void iteration(const ProgressEvent& e) const { for (auto* o : observers) o->on_iteration(e); }
+  void resumed(const std::vector<ProgressEvent>& earlier) const { for (auto* o : observers) o->on_resume(earlier); }
   void stage_end(const ProgressEvent& e, const PointSet& p) const { for (auto* o : observers) o->on_stage_end(e, p); }
+};
+
+// Thrown by a method that stopped on SynthesisContext::stop after saving a checkpoint.
+class SynthesisInterrupted : public std::runtime_error {
+ public:
+  SynthesisInterrupted() : std::runtime_error("interrupted; the last checkpoint holds the state") {}
 };
 
 class SynthesisMethod {
@@ -64,6 +88,9 @@ class SynthesisMethod {
   virtual ~SynthesisMethod() = default;
   // Returns the output pattern in the unit square; every point keeps its class and attributes.
   virtual PointSet synthesize(const PointSet& exemplar, const SynthesisContext& ctx) = 0;
+  // True when the method honours the checkpoint fields of SynthesisContext. The others run
+  // to the end in one go and cannot be resumed (the run layer says so).
+  virtual bool can_resume() const { return false; }
 };
 
 // {"type": "gabor" | "roveri2015" | "pcf2017" | ..., params...}

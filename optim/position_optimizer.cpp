@@ -1,5 +1,7 @@
 #include "optim/position_optimizer.hpp"
 
+#include <sstream>
+
 #include "core/config/defaults_catalog.hpp"
 
 namespace ppsynth {
@@ -17,6 +19,21 @@ double learning_rate_for(const json& p, int s, const std::string& kp) {
 
 namespace {
 
+std::string save_optimizer(const torch::optim::Optimizer& o) {
+  torch::serialize::OutputArchive a;
+  o.save(a);
+  std::ostringstream out;
+  a.save_to(out);
+  return out.str();
+}
+
+void load_optimizer(torch::optim::Optimizer& o, const std::string& bytes) {
+  torch::serialize::InputArchive a;
+  std::istringstream in(bytes);
+  a.load_from(in);
+  o.load(a);
+}
+
 class AdamPositions : public PositionOptimizer {
  public:
   AdamPositions(torch::Tensor p, double lr) : params_(p), adam_({p}, torch::optim::AdamOptions(lr)) {}
@@ -26,6 +43,8 @@ class AdamPositions : public PositionOptimizer {
     adam_.step();
     return loss.item<double>();
   }
+  std::string save_state() const override { return save_optimizer(adam_); }
+  void load_state(const std::string& bytes) override { load_optimizer(adam_, bytes); }
 
  private:
   torch::Tensor params_;
@@ -47,6 +66,8 @@ class LbfgsPositions : public PositionOptimizer {
     });
     return first;
   }
+  std::string save_state() const override { return save_optimizer(lbfgs_); }
+  void load_state(const std::string& bytes) override { load_optimizer(lbfgs_, bytes); }
 
  private:
   torch::optim::LBFGS lbfgs_;
@@ -56,11 +77,13 @@ class LbfgsPositions : public PositionOptimizer {
 }  // namespace ppsynth
 
 PPSYNTH_REGISTER(ppsynth::OptimizerRegistry, "adam", (ppsynth::json{{"lr", {0.005, 0.002, 0.002, 0.002}}}),
+                 (ppsynth::json{{"lr", "(0, inf)"}}),
                  "Adam, fresh state per stage; lr per sigma (published: 0.005, 0.002, 0.002, 0.002)",
                  [](const ppsynth::json& p, torch::Tensor params, int s) -> std::unique_ptr<ppsynth::PositionOptimizer> {
                    return std::make_unique<ppsynth::AdamPositions>(params, ppsynth::learning_rate_for(p, s, "optimizer"));
                  })
 PPSYNTH_REGISTER(ppsynth::OptimizerRegistry, "lbfgs", (ppsynth::json{{"lr", {0.5, 0.2, 0.2, 0.2}}, {"max_iter", 20}}),
+                 (ppsynth::json{{"lr", "(0, inf)"}, {"max_iter", "int [1, 10000]"}}),
                  "L-BFGS (published: lr 100x Adam's); one step = up to max_iter evaluations",
                  [](const ppsynth::json& p, torch::Tensor params, int s) -> std::unique_ptr<ppsynth::PositionOptimizer> {
                    return std::make_unique<ppsynth::LbfgsPositions>(params, ppsynth::learning_rate_for(p, s, "optimizer"),

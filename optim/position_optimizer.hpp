@@ -6,6 +6,7 @@
 #include <torch/torch.h>
 
 #include <functional>
+#include <string>
 
 #include "core/registry.hpp"
 
@@ -16,6 +17,10 @@ class PositionOptimizer {
   virtual ~PositionOptimizer() = default;
   // closure: zero grads are handled here; it returns the loss after backward().
   virtual double step(const std::function<torch::Tensor()>& closure) = 0;
+  // The optimiser's state (moments, step counts, history) as bytes, and back: checkpoints
+  // restore it so a resumed stage takes the very steps it would have taken.
+  virtual std::string save_state() const = 0;
+  virtual void load_state(const std::string& bytes) = 0;
 };
 
 // Created per stage with the parameter tensor and the stage (sigma) index, so a learning-rate

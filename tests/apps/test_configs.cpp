@@ -75,7 +75,10 @@ TEST_CASE("every run config runs with --quick", "[apps][configs]") {
       try {
         json r = ppsynth::app::resolve_run_config(c, {});
         const fs::path run_dir = out / (std::string(dir) + "_" + f.stem().string());
-        auto o = ppsynth::app::run_synthesis(r, run_dir.string(), true);
+        ppsynth::app::RunRequest req;
+        req.dir = run_dir.string();
+        req.quick = true;
+        auto o = ppsynth::app::run_synthesis(r, req);
         const int u = r["upscale"];
         const double target = double(o.exemplar.size() * u * u);
         if (r["method"]["type"] == "roveri2015")  // sampling control (Eq. 3.7) adapts the count

@@ -1,20 +1,52 @@
 // `ppsynth synthesize [CONFIG] [--exemplar FILE] [-o RUN_DIR] [--set key=value ...]`
+// `ppsynth synthesize --resume RUN_DIR`
 // Runs one synthesis (default method: the paper's, with the published settings) and writes a
-// run directory (see run_synthesis.hpp).
+// run directory (see run_synthesis.hpp). SIGINT and SIGTERM stop it at the end of the current
+// iteration with a checkpoint; the command prints how to resume and exits 130 / 143 (a second
+// signal ends it at once).
+#include <csignal>
 #include <iostream>
 
 #include "apps/ppsynth/command.hpp"
 #include "apps/ppsynth/synthesis/run_config.hpp"
 #include "apps/ppsynth/synthesis/run_synthesis.hpp"
 #include "core/config/config.hpp"
+#include "core/error.hpp"
 
 namespace {
 
+std::atomic<bool> g_stop{false};
+volatile std::sig_atomic_t g_signal = 0;
+
+extern "C" void request_stop(int sig) {
+  g_signal = sig;
+  g_stop = true;
+}
+
+// SIGINT / SIGTERM: stop at the end of the iteration; the handler is reset after the first
+// signal, so a second one ends the process at once.
+void install_stop_handlers() {
+  struct sigaction sa {};
+  sa.sa_handler = request_stop;
+  sa.sa_flags = SA_RESETHAND;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
+
+std::string shell_quoted(const std::string& s) {
+  if (!s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-./") == std::string::npos)
+    return s;
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
 struct Opts {
-  std::string config, exemplar, out, method, init, format;
+  std::string config, exemplar, out, method, init, format, resume;
   std::vector<std::string> sets;
   long long seed = -1;
-  bool quick = false;
+  bool quick = false, force = false;
 };
 
 ppsynth::app::RunFn setup(CLI::App& app) {
@@ -22,24 +54,46 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_option("config", o->config, "experiment config (JSON); optional with --exemplar");
   app.add_option("--exemplar,-e", o->exemplar, "exemplar point file (overrides the config's)");
   app.add_option("--format", o->format, "exemplar format: auto | gabor | point-synthesis | plain | json");
-  app.add_option("-o,--out", o->out, "run directory (default runs/<name>)");
+  app.add_option("-o,--out", o->out, "run directory (default runs/<name>); must be new or empty");
+  app.add_flag("--force", o->force, "replace the run directory if it holds a run of ppsynth");
+  app.add_option("--resume", o->resume, "continue the unfinished run in this directory from its last checkpoint");
   app.add_option("--method,-m", o->method, "synthesis method (gabor, roveri2015, pcf2017, ...)");
   app.add_option("--set", o->sets, "override a config key: key.path=value (repeatable)");
   app.add_option("--seed", o->seed, "random seed");
   app.add_option("--init", o->init, "explicit initialisation point file");
   app.add_flag("--quick", o->quick, "tiny grid and few iterations (smoke test)");
-  return [o]() {
+  return [o]() -> int {
     using namespace ppsynth;
-    json c = o->config.empty() ? json::object() : load_config(o->config);
+    app::RunRequest req;
+    req.dir = o->out;
+    req.quick = o->quick;
+    req.force = o->force;
+    req.stop = &g_stop;
+    try {
+      if (!o->resume.empty()) {
+        if (!o->config.empty() || !o->exemplar.empty() || !o->out.empty() || !o->sets.empty() || o->force || o->seed >= 0 ||
+            !o->method.empty() || !o->init.empty() || !o->format.empty() || o->quick)
+          throw InputError("--resume takes the run directory alone: its config, seed and settings are the run's own");
+        install_stop_handlers();
+        std::cout << app::resume_synthesis(o->resume, req).dir << "\n";
+        return 0;
+      }
+      json c = o->config.empty() ? json::object() : load_config(o->config);
     if (!o->exemplar.empty()) c["exemplar"] = o->exemplar;
     if (!o->format.empty()) c["format"] = o->format;
     if (!o->method.empty()) c["method"] = json{{"type", o->method}};
     if (o->seed >= 0) c["seed"] = o->seed;
     if (!o->init.empty()) c["init_file"] = o->init;
-    auto resolved = app::resolve_run_config(c, o->sets);
-    auto outcome = app::run_synthesis(resolved, o->out, o->quick);
-    std::cout << outcome.dir << "\n";
-    return 0;
+      auto resolved = app::resolve_run_config(c, o->sets);
+      if (app::can_resume(resolved)) install_stop_handlers();  // others stop at once, as without handlers
+      std::cout << app::run_synthesis(resolved, req).dir << "\n";
+      return 0;
+    } catch (const app::RunInterrupted& e) {
+      const char* name = g_signal == SIGTERM ? "SIGTERM" : "SIGINT";
+      std::cerr << "ppsynth synthesize: stopped by " << name << " at the end of an iteration; the checkpoint is in " << e.dir
+                << ". Continue with:\n  ppsynth synthesize --resume " << shell_quoted(e.dir) << "\n";
+      return 128 + (g_signal == SIGTERM ? SIGTERM : SIGINT);
+    }
   };
 }
 

@@ -39,8 +39,18 @@ void ProgressLog::on_stage_end(const ProgressEvent& e, const PointSet&) {
   spdlog::info("[{}] {} done: {} iterations in {}", name_, e.stage, e.iteration, fmt_duration(e.seconds));
 }
 
+void ProgressLog::on_resume(const std::vector<ProgressEvent>& earlier) {
+  if (earlier.empty()) return spdlog::info("[{}] resumed at the start", name_);
+  const auto& e = earlier.back();
+  spdlog::info("[{}] resumed after {}, iteration {} ({} iterations before)", name_, e.stage, e.iteration, earlier.size());
+}
+
 void LossRecorder::on_iteration(const ProgressEvent& e) {
   rows_.push_back({e.stage_index, e.stage, e.iteration, e.loss, e.seconds});
+}
+
+void LossRecorder::on_resume(const std::vector<ProgressEvent>& earlier) {
+  for (const auto& e : earlier) on_iteration(e);
 }
 
 std::string LossRecorder::csv() const {

@@ -16,6 +16,7 @@ class ProgressLog : public SynthesisObserver {
   void on_stage_begin(const ProgressEvent& e) override;
   void on_iteration(const ProgressEvent& e) override;
   void on_stage_end(const ProgressEvent& e, const PointSet&) override;
+  void on_resume(const std::vector<ProgressEvent>& earlier) override;
 
  private:
   std::string name_;
@@ -25,6 +26,7 @@ class ProgressLog : public SynthesisObserver {
 class LossRecorder : public SynthesisObserver {
  public:
   void on_iteration(const ProgressEvent& e) override;
+  void on_resume(const std::vector<ProgressEvent>& earlier) override;
   struct Row {
     int stage_index;
     std::string stage;

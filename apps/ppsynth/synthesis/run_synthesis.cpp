@@ -5,16 +5,20 @@
 #include <filesystem>
 #include <fstream>
 
+#include <ATen/Parallel.h>
+
 #include "apps/ppsynth/command.hpp"
 #include "apps/ppsynth/synthesis/run_config.hpp"
 #include "apps/ppsynth/synthesis/run_observers.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
+#include "core/formats/text_table.hpp"
 #include "core/log.hpp"
 #include "core/metrics/evaluation.hpp"
 #include "core/metrics/pcf.hpp"
 #include "core/paths.hpp"
+#include "core/run_directory.hpp"
 #include "core/render/plot_curves.hpp"
 #include "core/render/plot_points.hpp"
 #include "optim/method.hpp"
@@ -52,95 +56,9 @@ void plot_pcf(const std::string& path, const nlohmann::json& m) {
 
 }  // namespace
 
-void write_run(RunOutcome& o, const nlohmann::json& r, const std::string& name, const std::string& partial, bool quick,
-               std::chrono::steady_clock::time_point t0);
-
-RunOutcome run_synthesis(const nlohmann::json& r, const std::string& dir_in, bool quick) {
-  using Clock = std::chrono::steady_clock;
-  const auto t0 = Clock::now();
-  RunOutcome o;
-  o.config = r;
-  o.exemplar = load_exemplar(r);
-  std::string name = r["name"];
-  if (name.empty()) name = fs::path(resolve_data_path(r["exemplar"])).stem().string();
-  o.dir = dir_in.empty() ? "runs/" + name : dir_in;
-  const std::string partial = o.dir + ".partial";
-  fs::remove_all(partial);
-  fs::create_directories(partial + "/snapshots");
-  try {
-    write_run(o, r, name, partial, quick, t0);
-  } catch (...) {
-    fs::remove_all(partial);  // an interrupted run leaves no half-written directory
-    throw;
-  }
-  fs::remove_all(o.dir);
-  fs::rename(partial, o.dir);
-  spdlog::info("[{}] wrote {} ({:.1f} s)", name, o.dir, o.seconds);
-  return o;
-}
-
-void write_run(RunOutcome& o, const nlohmann::json& r, const std::string& name, const std::string& partial, bool quick,
-               std::chrono::steady_clock::time_point t0) {
-  using Clock = std::chrono::steady_clock;
-
-  SynthesisContext ctx;
-  ctx.seed = r["seed"].get<uint64_t>();
-  ctx.upscale = r["upscale"].get<int>();
-  ctx.quick = quick;
-  auto explicit_init = load_initialization(r);
-  PointSet init_ps = explicit_init ? *explicit_init : PointSet();
-  if (explicit_init) ctx.initialization = &init_ps;
-  ProgressLog progress(name, quick ? 1 : 10);
-  LossRecorder losses;
-  SnapshotWriter snaps(partial + "/snapshots");
-  ctx.observers = {&progress, &losses, &snaps};
-  snaps.set_enabled(r["snapshots"].get<bool>());
-  nlohmann::json stats;
-  ctx.stats = &stats;
-
-  auto method = MethodRegistry::instance().create(r["method"], "method");
-  spdlog::info("[{}] {} points, {} classes -> {} points ({}), seed {}", name, o.exemplar.size(), o.exemplar.num_classes(),
-               o.exemplar.size() * ctx.upscale * ctx.upscale, r["method"]["type"].get<std::string>(), ctx.seed);
-  const auto ts = Clock::now();
-  o.output = method->synthesize(o.exemplar, ctx);
-  const double synth_seconds = std::chrono::duration<double>(Clock::now() - ts).count();
-  o.stats = stats;
-
-  // --- outputs ------------------------------------------------------------------
-  write_points(partial + "/output.txt", o.output, Format::Plain);
-  Format ex_format = detect_format(resolve_data_path(r["exemplar"]));
-  if (ex_format == Format::GaborInt) write_points(partial + "/output.gabor.txt", o.output, Format::GaborInt);
-  std::vector<std::pair<std::string, PointSet>> panels = {{"exemplar (" + std::to_string(o.exemplar.size()) + ")", o.exemplar}};
-  o.initialization = snaps.initial();
-  if (!o.initialization.empty()) {
-    panels.push_back({"initialisation", o.initialization});
-    write_points(partial + "/init.txt", o.initialization, Format::Plain);
-  }
-  panels.push_back({"output (" + std::to_string(o.output.size()) + ")", o.output});
-  plot_panels(partial + "/exemplar_vs_output.png", panels, PointStyle{}, 420);
-  write_text_atomic(partial + "/loss.csv", losses.csv());
-  losses.plot(partial + "/loss.png", name + ": loss per iteration");
-  write_text_atomic(partial + "/config.json", r.dump(2) + "\n");
-  // The exemplar as synthesised (after scaling and class merging): the run stays
-  // self-contained when a generated exemplar's file is gone, and --reuse compares contents.
-  write_points(partial + "/exemplar.txt", o.exemplar, Format::Plain);
-  if (r["evaluate"].get<bool>()) {
-    o.metrics = evaluate(o.exemplar, o.output);
-    write_text_atomic(partial + "/metrics.json", o.metrics.dump(2) + "\n");
-    plot_pcf(partial + "/pcf.png", o.metrics);
-  }
-  o.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-  nlohmann::json run = {{"name", name},
-                        {"seed", ctx.seed},
-                        {"revision", revision()},
-                        {"quick", quick},
-                        {"synthesis_seconds", synth_seconds},
-                        {"total_seconds", o.seconds},
-                        {"method_stats", stats}};
-  write_text_atomic(partial + "/run.json", run.dump(2) + "\n");
-}
-
 namespace {
+
+const char* kCheckpoint = "checkpoint.bin";
 
 nlohmann::json read_json_file(const std::string& path) {
   std::ifstream in(path);
@@ -152,10 +70,169 @@ nlohmann::json read_json_file(const std::string& path) {
   }
 }
 
+// The run's name: the config's, else the exemplar's file stem.
+std::string run_name(const nlohmann::json& r) {
+  const std::string name = r["name"];
+  return name.empty() ? fs::path(resolve_data_path(r["exemplar"])).stem().string() : name;
+}
+
+void write_outputs(RunOutcome& o, const std::string& name, bool quick, const LossRecorder& losses,
+                   const SnapshotWriter& snaps, double synth_seconds, std::chrono::steady_clock::time_point t0);
+
+// Runs (or continues, with `resume_state`) the synthesis into the open directory `dir`.
+RunOutcome execute(RunOutcome o, RunDirectory& dir, const std::string& name, const RunRequest& req,
+                   const std::string* resume_state) {
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
+  const nlohmann::json& r = o.config;
+  o.dir = dir.path();
+  SynthesisContext ctx;
+  ctx.seed = r["seed"].get<uint64_t>();
+  ctx.upscale = r["upscale"].get<int>();
+  ctx.quick = req.quick;
+  auto explicit_init = load_initialization(r);
+  PointSet init_ps = explicit_init ? *explicit_init : PointSet();
+  if (explicit_init) ctx.initialization = &init_ps;
+  ProgressLog progress(name, req.quick ? 1 : 10);
+  LossRecorder losses;
+  SnapshotWriter snaps(o.dir + "/snapshots");
+  ctx.observers = {&progress, &losses, &snaps};
+  snaps.set_enabled(r["snapshots"].get<bool>());
+  nlohmann::json stats;
+  ctx.stats = &stats;
+  auto method = MethodRegistry::instance().create(r["method"], "method");
+  bool checkpointed = resume_state != nullptr;
+  if (method->can_resume()) {
+    ctx.save_checkpoint = [&](const std::string& bytes) {
+      AtomicFile f(o.dir + "/" + kCheckpoint, std::ios::binary);
+      f.stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+      f.commit();
+      checkpointed = true;
+    };
+    ctx.checkpoint_seconds = r["checkpoint_seconds"].get<double>();
+    ctx.resume_state = resume_state;
+    ctx.stop = req.stop;
+  }
+  spdlog::info("[{}] {} points, {} classes -> {} points ({}), seed {}", name, o.exemplar.size(), o.exemplar.num_classes(),
+               o.exemplar.size() * ctx.upscale * ctx.upscale, r["method"]["type"].get<std::string>(), ctx.seed);
+  try {
+    fs::create_directories(o.dir + "/snapshots");
+    const auto ts = Clock::now();
+    o.output = method->synthesize(o.exemplar, ctx);
+    o.stats = stats;
+    write_outputs(o, name, req.quick, losses, snaps, std::chrono::duration<double>(Clock::now() - ts).count(), t0);
+    dir.mark_complete({{"seed", r["seed"]}});
+  } catch (const SynthesisInterrupted&) {
+    throw RunInterrupted(o.dir);  // the checkpoint stays for --resume
+  } catch (...) {
+    if (!checkpointed) dir.discard();  // nothing to resume from: leave nothing behind
+    throw;
+  }
+  std::error_code ec;
+  fs::remove(o.dir + "/" + kCheckpoint, ec);  // a finished run needs no checkpoint
+  spdlog::info("[{}] wrote {} ({:.1f} s)", name, o.dir, o.seconds);
+  return o;
+}
+
+}  // namespace
+
+bool can_resume(const nlohmann::json& resolved) {
+  return MethodRegistry::instance().create(resolved["method"], "method")->can_resume();
+}
+
+RunOutcome run_synthesis(const nlohmann::json& r, const RunRequest& req) {
+  RunOutcome o;
+  o.config = r;
+  o.exemplar = load_exemplar(r);  // bad input fails here, before anything is created
+  const std::string name = run_name(r);
+  if (req.dir.empty() && !is_safe_name(name))
+    throw InputError("the run name '" + name + "' (the exemplar's file name) is not a plain name; give the run directory with -o");
+  RunDirOptions dir_options;
+  dir_options.force = req.force;
+  RunDirectory dir = RunDirectory::open(req.dir.empty() ? "runs/" + name : req.dir, dir_options);
+  try {
+    // What a resume needs, written first: the resolved config and the way it ran.
+    write_text_atomic(dir.path() + "/config.json", r.dump(2) + "\n");
+    dir.mark_running({{"quick", req.quick}, {"threads", at::get_num_threads()}, {"seed", r["seed"]}});
+  } catch (...) {
+    dir.discard();
+    throw;
+  }
+  return execute(std::move(o), dir, name, req, nullptr);
+}
+
+RunOutcome resume_synthesis(const std::string& path, const RunRequest& req) {
+  RunDirOptions dir_options;
+  dir_options.resume = true;
+  dir_options.option = "--resume";
+  RunDirectory dir = RunDirectory::open(path, dir_options);
+  const nlohmann::json marker = run_dir_marker(dir.path());
+  RunOutcome o;
+  o.config = read_json_file(dir.path() + "/config.json");
+  o.exemplar = load_exemplar(o.config);
+  const std::string checkpoint = dir.path() + "/" + kCheckpoint;
+  if (!fs::exists(checkpoint))
+    throw InputError("--resume " + dir.path() + ": no checkpoint (the run stopped before its first one, or its method (" +
+                     o.config["method"].value("type", "?") + ") cannot resume); start it again with --force");
+  const std::string bytes = read_file_text(checkpoint);
+  if (marker.contains("threads") && marker["threads"] != at::get_num_threads())
+    spdlog::warn("--resume {}: the run started with {} threads, this process uses {}: the result may differ in the last bits "
+                 "from an uninterrupted run (set PPSYNTH_THREADS={})",
+                 dir.path(), marker["threads"].dump(), at::get_num_threads(), marker["threads"].dump());
+  RunRequest r = req;
+  r.quick = marker.value("quick", false);
+  const std::string name = run_name(o.config);
+  return execute(std::move(o), dir, name, r, &bytes);
+}
+
+namespace {
+
+void write_outputs(RunOutcome& o, const std::string& name, bool quick, const LossRecorder& losses,
+                   const SnapshotWriter& snaps, double synth_seconds, std::chrono::steady_clock::time_point t0) {
+  using Clock = std::chrono::steady_clock;
+  const nlohmann::json& r = o.config;
+  const std::string& dir = o.dir;
+  const nlohmann::json& stats = o.stats;
+  // --- outputs ------------------------------------------------------------------
+  write_points(dir + "/output.txt", o.output, Format::Plain);
+  Format ex_format = detect_format(resolve_data_path(r["exemplar"]));
+  if (ex_format == Format::GaborInt) write_points(dir + "/output.gabor.txt", o.output, Format::GaborInt);
+  std::vector<std::pair<std::string, PointSet>> panels = {{"exemplar (" + std::to_string(o.exemplar.size()) + ")", o.exemplar}};
+  o.initialization = snaps.initial();
+  if (!o.initialization.empty()) {
+    panels.push_back({"initialisation", o.initialization});
+    write_points(dir + "/init.txt", o.initialization, Format::Plain);
+  }
+  panels.push_back({"output (" + std::to_string(o.output.size()) + ")", o.output});
+  plot_panels(dir + "/exemplar_vs_output.png", panels, PointStyle{}, 420);
+  write_text_atomic(dir + "/loss.csv", losses.csv());
+  losses.plot(dir + "/loss.png", name + ": loss per iteration");
+  // The exemplar as synthesised (after scaling and class merging): the run stays
+  // self-contained when a generated exemplar's file is gone, and --reuse compares contents.
+  write_points(dir + "/exemplar.txt", o.exemplar, Format::Plain);
+  if (r["evaluate"].get<bool>()) {
+    o.metrics = evaluate(o.exemplar, o.output);
+    write_text_atomic(dir + "/metrics.json", o.metrics.dump(2) + "\n");
+    plot_pcf(dir + "/pcf.png", o.metrics);
+  }
+  o.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  nlohmann::json run = {{"name", name},
+                        {"seed", r["seed"]},
+                        {"revision", revision()},
+                        {"quick", quick},
+                        // results depend on it in the last bits (reductions split across threads)
+                        {"threads", at::get_num_threads()},
+                        {"synthesis_seconds", synth_seconds},
+                        {"total_seconds", o.seconds},
+                        {"method_stats", stats}};
+  write_text_atomic(dir + "/run.json", run.dump(2) + "\n");
+}
+
+
 // The keys that decide a synthesis, without the exemplar's file name: exemplars are
 // compared by content (a generated exemplar lives in each report's own folder).
 nlohmann::json synthesis_key(nlohmann::json c) {
-  for (const char* k : {"name", "description", "snapshots", "evaluate", "exemplar", "format"}) c.erase(k);
+  for (const char* k : {"name", "description", "snapshots", "evaluate", "exemplar", "format", "checkpoint_seconds"}) c.erase(k);
   return c;
 }
 
@@ -194,13 +271,23 @@ RunOutcome load_run(const std::string& dir) {
 
 bool same_synthesis(const nlohmann::json& a, const nlohmann::json& b) { return synthesis_key(a) == synthesis_key(b); }
 
+namespace {
+
+// A run made with another thread count may differ from a run here in the last bits: say so.
+std::string note_threads(const std::string& dir) {
+  const nlohmann::json run = read_json_file(dir + "/run.json");
+  if (run.contains("threads") && run["threads"] != at::get_num_threads())
+    spdlog::warn("{} was made with {} threads, this process uses {}: a new run here may differ in the last bits",
+                 dir, run["threads"].dump(), at::get_num_threads());
+  return dir;
+}
+
+}  // namespace
+
 std::string find_matching_run(const nlohmann::json& resolved, bool quick, const std::vector<std::string>& roots) {
   const PointSet wanted = load_exemplar(resolved);
   auto matches = [&](const fs::path& d) {
-    std::error_code ec;
-    if (!fs::is_regular_file(d / "config.json", ec) || !fs::is_regular_file(d / "run.json", ec) ||
-        !fs::is_regular_file(d / "output.txt", ec))
-      return false;
+    if (run_dir_state(d.string()) != RunDirState::Complete) return false;  // only finished runs of ppsynth
     try {
       const nlohmann::json config = read_json_file((d / "config.json").string());
       return same_synthesis(config, resolved) &&
@@ -213,13 +300,13 @@ std::string find_matching_run(const nlohmann::json& resolved, bool quick, const 
   for (auto& root : roots) {
     std::error_code ec;
     if (!fs::is_directory(root, ec)) throw InputError("--reuse " + root + ": not a directory");
-    if (matches(root)) return root;
+    if (matches(root)) return note_threads(root);
     std::vector<fs::path> subdirs;
     for (auto& e : fs::directory_iterator(root, ec))
-      if (e.is_directory() && e.path().extension() != ".partial") subdirs.push_back(e.path());
+      if (e.is_directory()) subdirs.push_back(e.path());
     std::sort(subdirs.begin(), subdirs.end());  // deterministic choice when several match
     for (auto& d : subdirs)
-      if (matches(d)) return d.string();
+      if (matches(d)) return note_threads(d.string());
   }
   return "";
 }

@@ -1,0 +1,70 @@
+#pragma once
+// GaborEngine: runs a SynthesisPlan (optim/stage_plan.hpp) over explicit state
+// (optim/synthesis_state.hpp), one stage after another:
+//
+//   stage:  targets <- exemplar classes -> Rasterizer -> FeatureNet -> CompositeLoss target
+//           repeat: wrap(moving) + frozen -> Rasterizer(u) -> FeatureNet -> CompositeLoss
+//                   [+ class_own_weight x the same on the moving class alone; not in the paper]
+//                   [+ point terms on the positions (optim/point_term.hpp); not in the paper]
+//                   -> backward -> PositionOptimizer step        (until the ConvergenceRule)
+//
+// Everything that changes while it runs lives in the state, so the state can be saved at any
+// iteration (SynthesisContext::save_checkpoint) and a run restored from it takes the very
+// same steps. Everything else (targets, networks, rasterizers) is a function of the config,
+// the exemplar, the seed and the stage, and is rebuilt on entering a stage.
+#include <chrono>
+#include <memory>
+#include <random>
+
+#include "optim/gabor_pipeline.hpp"
+#include "optim/method.hpp"
+#include "optim/point_term.hpp"
+#include "optim/position_optimizer.hpp"
+#include "optim/stage_plan.hpp"
+#include "optim/synthesis_state.hpp"
+
+namespace ppsynth {
+
+class GaborEngine {
+ public:
+  GaborEngine(const json& params, const PointSet& exemplar, const SynthesisContext& ctx);
+  // Runs the plan from the state (fresh, or restored from ctx.resume_state) to the end.
+  PointSet run();
+  const json& stats() const { return stats_; }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  struct Phases {  // wall time per phase, accumulated over the run
+    double targets = 0, maps = 0, net = 0, loss = 0, backward = 0, step = 0;
+  };
+
+  void restore(const std::string& bytes);
+  void enter_group(const Stage& stage);   // networks, neighbours, point terms of a new group
+  void enter_stage(const Stage& stage);   // targets and a fresh (or restored) optimiser
+  void run_stage(const Stage& stage);
+  torch::Tensor evaluate(const Stage& stage);  // the loss at the current positions, after backward
+  void finish_stage(const Stage& stage);
+  void save_checkpoint();
+  ProgressEvent event(const Stage& stage) const;
+
+  json p_;
+  const PointSet& exemplar_;
+  const SynthesisContext& ctx_;
+  GaborSettings s_;
+  std::unique_ptr<GaborPipeline> pipe_, own_;  // own_: the per-class term's pipeline (or null)
+  std::vector<WeightedPointTerm> terms_;
+  SynthesisPlan plan_;
+  PointSet out_;
+  SynthesisState state_;
+  std::mt19937_64 jitter_rng_;
+  Phases phases_;
+  json stats_;
+
+  // The current group and stage (rebuilt from the plan and the state).
+  int group_ = -1;
+  torch::Tensor frozen_, out_weights_, own_out_weights_;
+  std::unique_ptr<PositionOptimizer> optimizer_;
+  Clock::time_point stage_start_, last_checkpoint_;
+};
+
+}  // namespace ppsynth

@@ -1,0 +1,38 @@
+#include "optim/stage_plan.hpp"
+
+#include <algorithm>
+
+#include "optim/gabor_pipeline.hpp"
+
+namespace ppsynth {
+
+SynthesisPlan class_sigma_plan(const PointSet& exemplar, const GaborSettings& s,
+                               const std::vector<std::vector<size_t>>& out_index) {
+  SynthesisPlan plan;
+  const int K = exemplar.num_classes();
+  for (int st = 0; st < K; ++st) {
+    const int cls = s.class_order[st];
+    const std::vector<int> active(s.class_order.begin(), s.class_order.begin() + st + 1);
+    const size_t active_points = exemplar.subset_classes(active).size();
+    std::vector<size_t> frozen;
+    for (int j = 0; j < st; ++j) frozen.insert(frozen.end(), out_index[s.class_order[j]].begin(), out_index[s.class_order[j]].end());
+    for (size_t j = 0; j < s.sigmas.size(); ++j) {
+      Stage stage;
+      stage.label = (K > 1 ? "class " + std::to_string(st + 1) + "/" + std::to_string(K) + " (id " + std::to_string(cls) + "), "
+                           : std::string()) +
+                    "sigma " + std::to_string(j + 1) + "/" + std::to_string(s.sigmas.size());
+      stage.group = st;
+      stage.sigma_index = static_cast<int>(j);
+      stage.sigma = s.sigmas[j];
+      stage.k = s.k_per_stage ? static_cast<int>(std::min<size_t>(s.k, active_points)) : s.k;
+      stage.target_classes = active;
+      stage.own_class = cls;
+      stage.moving = out_index[cls];
+      stage.frozen = frozen;
+      plan.push_back(std::move(stage));
+    }
+  }
+  return plan;
+}
+
+}  // namespace ppsynth

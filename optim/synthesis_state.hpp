@@ -1,0 +1,43 @@
+#pragma once
+// Everything a synthesis needs to continue exactly where it stopped: a checkpoint. Small on
+// purpose (positions, the optimiser's moments, the generator's state, the loss history; no
+// feature maps or targets, which are recomputed from the exemplar and the seed). Restoring it
+// and running on gives the same bits as never stopping (same config, seed and thread count).
+#include <torch/torch.h>
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/point_set.hpp"
+
+namespace ppsynth {
+
+struct LossRecord {
+  int stage = 0;
+  int iteration = 0;
+  double loss = 0;
+  double seconds = 0;  // wall time since the stage began
+};
+
+struct SynthesisState {
+  std::vector<Vec2> positions;       // the whole output; moving points as of their stage's start
+  int stage = 0;                     // the stage in progress (or next to start)
+  int iteration = 0;                 // iterations done in `stage`
+  torch::Tensor moving;              // the group's optimised positions, unwrapped (undefined: none yet)
+  std::string optimizer;             // the optimiser's serialised state ("" at a stage start)
+  std::string rng;                   // the jitter generator (std::mt19937_64, text form)
+  std::vector<double> stage_losses;  // losses of `stage` so far (the convergence window)
+  double stage_scale = -1;           // the point terms' unit (the stage's first loss), -1 unset
+  std::vector<LossRecord> history;   // every iteration of every stage so far
+  nlohmann::json stages = nlohmann::json::array();  // one summary per finished stage
+  nlohmann::json phase_seconds = nlohmann::json::object();
+};
+
+// Bytes <-> state (a torch archive: tensors bit for bit, the rest as JSON). `source` names
+// the file in errors.
+std::string serialize_state(const SynthesisState& state);
+SynthesisState deserialize_state(const std::string& bytes, const std::string& source);
+
+}  // namespace ppsynth

@@ -1,0 +1,141 @@
+// Checkpoint and resume of the Gabor engine, in process: a run restored from any of its
+// checkpoints (mid-stage or at a stage boundary) ends with the very bits of the run that was
+// never stopped; and the comparison is sharp enough to see a wrong generator, wrong moments
+// or a one-ulp position change in the restored state.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <sstream>
+
+#include "core/generators/lattices.hpp"
+#include "optim/method.hpp"
+#include "optim/synthesis_state.hpp"
+
+using namespace ppsynth;
+
+namespace {
+
+PointSet exemplar(int classes, bool disks) {
+  PointSet ps;
+  if (disks) ps.add_attribute("radius");
+  for (int c = 0; c < classes; ++c) {
+    auto pts = jittered_grid_points(c == 0 ? 16 : 9, 11 + c);
+    for (size_t i = 0; i < pts.size(); ++i) ps.add(pts[i], c, disks ? std::vector<double>{0.02 + 0.01 * c} : std::vector<double>{});
+  }
+  return ps;
+}
+
+struct Run {
+  PointSet output;
+  std::vector<std::string> checkpoints;  // every one saved, in order
+  json stats;
+};
+
+Run synthesize(const PointSet& ex, const std::string* resume = nullptr, const std::atomic<bool>* stop = nullptr) {
+  auto method = MethodRegistry::instance().create(
+      json{{"type", "gabor"}, {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 7}, {"num_sigmas", 2}}}}, "method");
+  REQUIRE(method->can_resume());
+  Run run;
+  SynthesisContext ctx;
+  ctx.quick = true;
+  ctx.seed = 5;
+  ctx.stats = &run.stats;
+  ctx.checkpoint_seconds = 0;  // every iteration
+  ctx.save_checkpoint = [&](const std::string& bytes) { run.checkpoints.push_back(bytes); };
+  ctx.resume_state = resume;
+  ctx.stop = stop;
+  run.output = method->synthesize(ex, ctx);
+  return run;
+}
+
+bool same_bits(const PointSet& a, const PointSet& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i].x != b[i].x || a[i].y != b[i].y || a.cls(i) != b.cls(i)) return false;
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("a run resumed from any checkpoint ends bit for bit as the uninterrupted one", "[optim][checkpoint]") {
+  for (auto [classes, disks] : {std::pair{1, false}, std::pair{2, false}, std::pair{2, true}}) {
+    INFO(classes << " classes, disks " << disks);
+    const PointSet ex = exemplar(classes, disks);
+    const Run whole = synthesize(ex);
+    // checkpoints: every iteration plus every stage boundary
+    REQUIRE(whole.checkpoints.size() > 2u * classes * 2);
+    const size_t n = whole.checkpoints.size();
+    for (size_t i : {size_t{0}, size_t{3}, n / 2, n - 2, n - 1}) {
+      const SynthesisState st = deserialize_state(whole.checkpoints[i], "test");
+      INFO("checkpoint " << i << ": stage " << st.stage << ", iteration " << st.iteration);
+      const Run resumed = synthesize(ex, &whole.checkpoints[i]);
+      CHECK(same_bits(resumed.output, whole.output));
+      REQUIRE(resumed.stats["stages"].size() == whole.stats["stages"].size());
+      // per-stage iterations and final losses are the same too (seconds aside)
+      for (size_t s = 0; s < whole.stats["stages"].size(); ++s) {
+        CHECK(resumed.stats["stages"][s]["iterations"] == whole.stats["stages"][s]["iterations"]);
+        CHECK(resumed.stats["stages"][s]["final_loss"] == whole.stats["stages"][s]["final_loss"]);
+      }
+    }
+  }
+}
+
+TEST_CASE("the stop flag saves a checkpoint and throws; resuming from it finishes the run", "[optim][checkpoint]") {
+  const PointSet ex = exemplar(2, false);
+  const Run whole = synthesize(ex);
+  std::atomic<bool> stop{true};  // stop at the end of the first iteration
+  Run stopped;
+  auto method = MethodRegistry::instance().create(
+      json{{"type", "gabor"}, {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 7}, {"num_sigmas", 2}}}}, "method");
+  SynthesisContext ctx;
+  ctx.quick = true;
+  ctx.seed = 5;
+  ctx.checkpoint_seconds = 1e9;
+  ctx.save_checkpoint = [&](const std::string& bytes) { stopped.checkpoints.push_back(bytes); };
+  ctx.stop = &stop;
+  CHECK_THROWS_AS(method->synthesize(ex, ctx), SynthesisInterrupted);
+  REQUIRE(stopped.checkpoints.size() == 1);
+  CHECK(deserialize_state(stopped.checkpoints[0], "t").iteration == 1);
+  CHECK(same_bits(synthesize(ex, &stopped.checkpoints[0]).output, whole.output));
+}
+
+TEST_CASE("the resume comparison sees a perturbed generator, optimiser or position", "[optim][checkpoint]") {
+  const PointSet ex = exemplar(1, false);
+  const Run whole = synthesize(ex);
+  // a checkpoint in the middle of the first stage: the optimiser has moments, the generator has drawn
+  SynthesisState st = deserialize_state(whole.checkpoints[2], "test");
+  REQUIRE(st.iteration > 0);
+  REQUIRE_FALSE(st.optimizer.empty());
+  const std::string intact = serialize_state(st);
+  CHECK(same_bits(synthesize(ex, &intact).output, whole.output));  // the round trip itself changes nothing
+
+  SynthesisState rng = st;  // the generator one draw ahead
+  std::mt19937_64 g;
+  std::istringstream(rng.rng) >> g;
+  g();
+  std::ostringstream os;
+  os << g;
+  rng.rng = os.str();
+  const std::string rng_bytes = serialize_state(rng);
+  CHECK_FALSE(same_bits(synthesize(ex, &rng_bytes).output, whole.output));
+
+  SynthesisState fresh_optimizer = st;  // Adam's moments lost
+  fresh_optimizer.optimizer.clear();
+  const std::string opt_bytes = serialize_state(fresh_optimizer);
+  CHECK_FALSE(same_bits(synthesize(ex, &opt_bytes).output, whole.output));
+
+  SynthesisState nudged = st;  // one position one ulp off
+  nudged.moving = st.moving.clone();
+  float* p = nudged.moving.data_ptr<float>();
+  p[0] = std::nextafter(p[0], 2.0f);
+  const std::string pos_bytes = serialize_state(nudged);
+  CHECK_FALSE(same_bits(synthesize(ex, &pos_bytes).output, whole.output));
+}
+
+TEST_CASE("a checkpoint of another synthesis is refused", "[optim][checkpoint]") {
+  const Run one = synthesize(exemplar(1, false));
+  const PointSet other = exemplar(2, false);
+  CHECK_THROWS_AS(synthesize(other, &one.checkpoints[1]), InputError);
+  const std::string garbage = "not a checkpoint";
+  CHECK_THROWS_WITH(synthesize(other, &garbage), Catch::Contains("checkpoint"));
+}
