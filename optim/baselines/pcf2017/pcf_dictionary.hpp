@@ -10,7 +10,7 @@
 //
 // The symmetric eigen-decomposition is a compact cyclic Jacobi solver (jacobi_eigen): this
 // library is torch-free on purpose and none of the allowed Debian dependencies (nlohmann,
-// spdlog, nanoflann, CLI11, cairo) provides one; LibTorch's torch.linalg.eigh is not linked here.
+// spdlog, nanoflann, the command-line parser, cairo) provides one; LibTorch's torch.linalg.eigh is not linked here.
 #include <cstddef>
 #include <vector>
 
