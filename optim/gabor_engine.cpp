@@ -60,10 +60,8 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
   validate(exemplar, "exemplar");
   s_ = resolve_gabor_settings(p_, exemplar, ctx.upscale, ctx.quick);
   pipe_ = std::make_unique<GaborPipeline>(p_, s_, ctx.seed);
-  // The per-class term (s.class_own_weight, not in the paper) needs rasters with the class's
-  // own k and targets of the class alone: a second pipeline. Its network is drawn from the
-  // same seed as pipe_'s, so both terms see the same random filters.
-  if (s_.class_own_weight > 0 && exemplar.num_classes() > 1) own_ = std::make_unique<GaborPipeline>(p_, s_, ctx.seed);
+  map_terms_ = create_map_terms(p_["map_terms"]);
+  for (auto& t : map_terms_) t.term->begin_run(MapTermRun{p_, s_, exemplar, ctx.seed});
   terms_ = create_point_terms(p_["terms"]);
   OptimizerRegistry::instance().entry(p_["optimizer"].value("type", ""), "method.optimizer.type");
   auto init = InitializerRegistry::instance().create(p_["init"], "method.init");
@@ -71,8 +69,9 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
   out_ = initial_output(exemplar, ctx, *init, out_index);
   plan_ = class_sigma_plan(exemplar, s_, out_index);
   stats_ = {{"grid_res", s_.res}, {"output_grid_res", s_.upscale * s_.res}, {"k", s_.k}, {"sigmas", s_.sigmas},
-            {"mean_nn_distance", s_.mean_nn_distance}, {"class_own_weight", s_.class_own_weight},
-            {"terms", json::object()}};
+            {"mean_nn_distance", s_.mean_nn_distance},
+            {"map_terms", json::object()}, {"terms", json::object()}};
+  for (const auto& t : map_terms_) stats_["map_terms"][t.name] = t.weight;
   for (const auto& t : terms_) stats_["terms"][t.name] = t.weight;
 }
 
@@ -133,12 +132,7 @@ void GaborEngine::enter_group(const Stage& stage) {
   if (!state_.moving.defined()) state_.moving = positions_tensor(out_.subset(stage.moving));
   state_.moving.set_requires_grad(true);
   for (auto& t : terms_) t.term->begin_class(ClassStage{exemplar_, out_, stage.moving, stage.frozen, s_.upscale});
-  if (own_ && group_ > 0) {
-    if (fresh_net) own_->redraw_network(ctx_.seed + 7919ull * group_);
-    const PointSet ex_own = exemplar_.subset_class(stage.own_class);
-    own_->set_neighbours(s_.k_per_stage ? static_cast<int>(std::min<size_t>(s_.k, ex_own.size())) : s_.k);
-    own_out_weights_ = A > 0 ? normalized_attributes(out_.subset(stage.moving), s_.attr_cols) : torch::Tensor();
-  }
+  for (auto& t : map_terms_) t.term->begin_group(stage, out_);
 }
 
 void GaborEngine::enter_stage(const Stage& stage) {
@@ -148,11 +142,7 @@ void GaborEngine::enter_stage(const Stage& stage) {
   const PointSet ex_active = exemplar_.subset_classes(stage.target_classes);
   pipe_->set_targets(positions_tensor(ex_active), A > 0 ? normalized_attributes(ex_active, s_.attr_cols) : torch::Tensor(),
                      stage.sigma);
-  if (own_ && group_ > 0) {
-    const PointSet ex_own = exemplar_.subset_class(stage.own_class);
-    own_->set_targets(positions_tensor(ex_own), A > 0 ? normalized_attributes(ex_own, s_.attr_cols) : torch::Tensor(),
-                      stage.sigma);
-  }
+  for (auto& t : map_terms_) t.term->begin_stage(stage);
   phases_.targets += since(t0);
   optimizer_ = OptimizerRegistry::instance().create(p_["optimizer"], "method.optimizer", state_.moving, stage.sigma_index);
   if (!state_.optimizer.empty()) optimizer_->load_state(state_.optimizer);  // resumed inside the stage
@@ -172,22 +162,20 @@ ProgressEvent GaborEngine::event(const Stage& stage) const {
 }
 
 torch::Tensor GaborEngine::evaluate(const Stage& stage) {
-  const bool own_term = own_ && group_ > 0;
   const auto ta = Clock::now();
   const auto mv = wrap_unit(state_.moving);
   const auto jitter = pipe_->draw_jitter(jitter_rng_);
   auto pts = frozen_.size(0) > 0 ? torch::cat({frozen_, mv}) : mv;
   auto maps = pipe_->output_maps(pts, out_weights_, stage.sigma, jitter);
-  torch::Tensor own_maps;
-  if (own_term) own_maps = own_->output_maps(mv, own_out_weights_, stage.sigma, jitter);
   const auto tb = Clock::now();
   auto feats = pipe_->features(maps);
-  Features own_feats;
-  if (own_term) own_feats = own_->features(own_maps);
   const auto tc = Clock::now();
   auto l = pipe_->loss(feats);
-  if (own_term) l = l + s_.class_own_weight * own_->loss(own_feats);
-  // The paper's loss (+ own term) at the stage's first evaluation: the unit of the point
+  for (auto& t : map_terms_) {  // beside the paper's (optim/map_term.hpp); their maps and nets count as loss time
+    const auto v = t.term->evaluate(mv, jitter, stage);
+    if (v.defined()) l = l + t.weight * v;
+  }
+  // The paper's loss (+ map terms) at the stage's first evaluation: the unit of the point
   // terms, so one weight serves every scene and sigma (optim/point_term.hpp).
   if (!terms_.empty() && state_.stage_scale < 0) state_.stage_scale = l.item<double>();
   for (auto& t : terms_) l = l + t.weight * state_.stage_scale * t.term->evaluate(mv, frozen_);

@@ -4,7 +4,7 @@
 //
 //   stage:  targets <- exemplar classes -> Rasterizer -> FeatureNet -> CompositeLoss target
 //           repeat: wrap(moving) + frozen -> Rasterizer(u) -> FeatureNet -> CompositeLoss
-//                   [+ class_own_weight x the same on the moving class alone; not in the paper]
+//                   [+ map terms on maps of their own (optim/map_term.hpp); not in the paper]
 //                   [+ point terms on the positions (optim/point_term.hpp); not in the paper]
 //                   -> backward -> PositionOptimizer step        (until the ConvergenceRule)
 //
@@ -17,6 +17,7 @@
 #include <random>
 
 #include "optim/gabor_pipeline.hpp"
+#include "optim/map_term.hpp"
 #include "optim/method.hpp"
 #include "optim/point_term.hpp"
 #include "optim/position_optimizer.hpp"
@@ -51,7 +52,8 @@ class GaborEngine {
   const PointSet& exemplar_;
   const SynthesisContext& ctx_;
   GaborSettings s_;
-  std::unique_ptr<GaborPipeline> pipe_, own_;  // own_: the per-class term's pipeline (or null)
+  std::unique_ptr<GaborPipeline> pipe_;
+  std::vector<WeightedMapTerm> map_terms_;
   std::vector<WeightedPointTerm> terms_;
   SynthesisPlan plan_;
   PointSet out_;
@@ -62,7 +64,7 @@ class GaborEngine {
 
   // The current group and stage (rebuilt from the plan and the state).
   int group_ = -1;
-  torch::Tensor frozen_, out_weights_, own_out_weights_;
+  torch::Tensor frozen_, out_weights_;
   std::unique_ptr<PositionOptimizer> optimizer_;
   Clock::time_point stage_start_, last_checkpoint_;
 };

@@ -32,9 +32,9 @@ json gabor_defaults() {
       {"class_order", json::array()},  // empty = file order
       {"map_attributes", nullptr},  // null or "auto": every non-constant attribute; or a list of names ([] = none)
       {"fresh_net_per_class", false},
-      // Not in the paper: weight of a per-class term for the second and later classes (the
-      // loss on the moving class's own maps vs the exemplar class's own); 0 = the paper.
-      {"class_own_weight", 0.0},
+      // Not in the paper: losses on maps of their own (optim/map_term.hpp), by registered
+      // name: {"class_own": {"weight": 1}}. Empty = the paper.
+      {"map_terms", json::object()},
       // Not in the paper: losses on the positions themselves (optim/point_term.hpp), by
       // registered name: {"separation": {"weight": 1}, "pcf_match": {"weight": 10}}. Empty = the paper.
       {"terms", json::object()},
@@ -54,7 +54,6 @@ json gabor_bounds() {
       // check_every 0 would divide by zero; a window of 0 compares a loss with itself
       {"convergence", {{"window", "int [1, 1000000000]"}, {"check_every", "int [1, 1000000000]"}, {"threshold", "[0, inf)"}}},
       {"class_order", "int [0, 1000000]"},
-      {"class_own_weight", "[0, inf)"},
       {"quick", {{"res", "int [8, 8192]"}, {"channels", "int [1, 4096]"}, {"max_iterations", "int [1, 1000000000]"},
                  {"num_sigmas", "int [1, 64]"}}},
   };
@@ -113,8 +112,6 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, in
   s.k_per_stage = p["k_per_stage"].get<bool>();
   s.attr_cols = map_attribute_columns(exemplar, p["map_attributes"]);
   s.jitter = p["jitter"].get<bool>();
-  s.class_own_weight = get_number(p, "class_own_weight", "method");
-  if (!(s.class_own_weight >= 0)) throw config_error("method.class_own_weight", "must be >= 0");
   {  // one iteration keeps the output grid's maps and every layer's activations and gradients
     const double cells = std::pow(static_cast<double>(s.upscale) * s.res, 2);
     auto number_or = [&](const char* key, double fallback) {  // the net's own registry checks the types later

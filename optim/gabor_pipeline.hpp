@@ -35,11 +35,6 @@ struct GaborSettings {
   std::vector<int> class_order;
   int max_iterations = 500;
   bool jitter = true;
-  // Not in the paper (0 = off, the paper's method): from the second class stage on, add this
-  // weight times the same loss on the maps of the moving class ALONE against the exemplar's
-  // class alone. The joint maps constrain a later class only through the joint pattern; this
-  // term also asks for the class's own spacing (docs/method.md "Beyond the paper").
-  double class_own_weight = 0;
   ConvergenceRule rule;
   json feature_net;             // the net spec after --quick shrinking
 };

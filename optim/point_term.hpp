@@ -18,6 +18,7 @@
 
 #include "core/point_set.hpp"
 #include "core/registry.hpp"
+#include "optim/weighted_terms.hpp"
 
 namespace ppsynth {
 
@@ -42,14 +43,11 @@ class PointTerm {
 
 using PointTermRegistry = Registry<PointTerm>;
 
-struct WeightedPointTerm {
-  std::string name;
-  double weight = 0;
-  std::unique_ptr<PointTerm> term;
-};
+using WeightedPointTerm = WeightedTerm<PointTerm>;
 
-// The terms `method.terms` switches on (weight > 0), in name order. Unknown names, unknown
-// keys, a missing or negative weight name the key (method.terms.<name>...).
-std::vector<WeightedPointTerm> create_point_terms(const nlohmann::json& terms);
+// The terms `method.terms` switches on (weight > 0), in name order (optim/weighted_terms.hpp).
+inline std::vector<WeightedPointTerm> create_point_terms(const nlohmann::json& terms) {
+  return create_weighted_terms<PointTerm>(terms, "method.terms");
+}
 
 }  // namespace ppsynth

@@ -22,8 +22,6 @@ struct CommandEntry {
 std::map<std::string, CommandEntry>& commands();
 bool register_command(const std::string& name, const std::string& description, SetupFn setup);
 
-// Project revision compiled into the binary (git describe).
-const char* revision();
 
 }  // namespace ppsynth::app
 

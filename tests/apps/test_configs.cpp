@@ -13,10 +13,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "apps/ppsynth/synthesis/reproduce_config.hpp"
-#include "apps/ppsynth/synthesis/reproduce_runner.hpp"
-#include "apps/ppsynth/synthesis/run_config.hpp"
-#include "apps/ppsynth/synthesis/run_synthesis.hpp"
+#include "optim/reproduce/reproduce_config.hpp"
+#include "optim/reproduce/reproduce_runner.hpp"
+#include "optim/run/run_config.hpp"
+#include "optim/run/run_synthesis.hpp"
 #include "core/config/config.hpp"
 #include "core/log.hpp"
 #include "core/procedural/pptbf.hpp"
@@ -73,12 +73,12 @@ TEST_CASE("every run config runs with --quick", "[apps][configs]") {
       // A method-only fragment (configs/methods/pcf2017.json) runs on the lines exemplar.
       if (!c.contains("exemplar")) c["exemplar"] = "shared:data/exemplars/gabor-paper/lines.txt";
       try {
-        json r = ppsynth::app::resolve_run_config(c, {});
+        json r = ppsynth::resolve_run_config(c, {});
         const fs::path run_dir = out / (std::string(dir) + "_" + f.stem().string());
-        ppsynth::app::RunRequest req;
+        ppsynth::RunRequest req;
         req.dir = run_dir.string();
         req.quick = true;
-        auto o = ppsynth::app::run_synthesis(r, req);
+        auto o = ppsynth::run_synthesis(r, req);
         const int u = r["upscale"];
         const double target = double(o.exemplar.size() * u * u);
         if (r["method"]["type"] == "roveri2015")  // sampling control (Eq. 3.7) adapts the count
@@ -104,13 +104,13 @@ TEST_CASE("every paper config (configs/paper) reproduces with --quick", "[apps][
   for (auto& f : files) {
     INFO(f.string());
     try {
-      auto c = ppsynth::app::load_reproduce_config(f.string());
+      auto c = ppsynth::load_reproduce_config(f.string());
       CHECK(c.name == f.stem().string());
       CHECK_FALSE(c.claim.empty());
-      ppsynth::app::ReproduceOptions o;
+      ppsynth::ReproduceOptions o;
       o.quick = true;
       o.out = (out / c.name).string();
-      auto r = ppsynth::app::run_reproduction(c, o);
+      auto r = ppsynth::run_reproduction(c, o);
       CHECK(fs::exists(out / c.name / "index.html"));
       CHECK(fs::exists(out / c.name / "metrics.csv"));
       CHECK_FALSE(fs::exists(out / (c.name + ".partial")));

@@ -9,6 +9,7 @@
 #include "models/rasterizer.hpp"
 #include "optim/initializer.hpp"
 #include "optim/method.hpp"
+#include "optim/map_term.hpp"
 #include "optim/point_term.hpp"
 #include "optim/position_optimizer.hpp"
 
@@ -36,5 +37,6 @@ TEST_CASE("every registered part declares the range of each numeric parameter", 
   check_registry<ppsynth::OptimizerRegistry>("optimizer");
   check_registry<ppsynth::InitializerRegistry>("init");
   check_registry<ppsynth::PointTermRegistry>("term");
+  check_registry<ppsynth::MapTermRegistry>("map_term");
   check_registry<ppsynth::GeneratorRegistry>("generator");
 }

@@ -65,7 +65,7 @@ TEST_CASE("Quick 2-class synthesis keeps classes and attributes and freezes earl
   CHECK(moved > 0);
 }
 
-TEST_CASE("The per-class term (class_own_weight) acts on the later classes only", "[optim][synthesis]") {
+TEST_CASE("The per-class map term (map_terms.class_own) acts on the later classes only", "[optim][synthesis]") {
   auto ex = two_class_exemplar();
   struct FirstLossPerStage : SynthesisObserver {
     std::vector<double> first;
@@ -80,7 +80,7 @@ TEST_CASE("The per-class term (class_own_weight) acts on the later classes only"
   ctx.observers = {&paper_seen};
   auto paper = gabor()->synthesize(ex, ctx);
   ctx.observers = {&own_seen};
-  auto with_own = gabor(json{{"class_own_weight", 1.0}})->synthesize(ex, ctx);
+  auto with_own = gabor(json{{"map_terms", {{"class_own", {{"weight", 1.0}}}}}})->synthesize(ex, ctx);
   REQUIRE(paper.size() == with_own.size());
   // Class 0 (the first stage, where joint = own) is untouched; class 1 moves differently.
   double class1_diff = 0;
@@ -98,7 +98,10 @@ TEST_CASE("The per-class term (class_own_weight) acts on the later classes only"
   REQUIRE(own_seen.first.size() == 4);
   CHECK(own_seen.first[0] == paper_seen.first[0]);
   CHECK(own_seen.first[2] > paper_seen.first[2]);
-  CHECK_THROWS_WITH(gabor(json{{"class_own_weight", -1.0}})->synthesize(ex, ctx), Catch::Contains("class_own_weight"));
+  CHECK_THROWS_WITH(gabor(json{{"map_terms", {{"class_own", {{"weight", -1.0}}}}}})->synthesize(ex, ctx),
+                    Catch::Contains("method.map_terms.class_own.weight"));
+  CHECK_THROWS_WITH(gabor(json{{"map_terms", {{"no_such_term", {{"weight", 1.0}}}}}})->synthesize(ex, ctx),
+                    Catch::Contains("no_such_term"));
 }
 
 TEST_CASE("Same config and seed give the same output", "[optim][synthesis]") {

@@ -1,5 +1,6 @@
 #pragma once
-// Test support: runs the built `ppsynth` binary as a user would and keeps what it printed.
+// Test support: runs a built binary (`ppsynth`, the library example) as a user would and keeps
+// what it printed.
 #include <array>
 #include <cstdio>
 #include <string>
@@ -15,8 +16,8 @@ struct CommandResult {
 
 // `args` is passed to the shell after the binary; `prefix` goes before it (e.g. "cd DIR &&",
 // "PPSYNTH_THREADS=x").
-inline CommandResult run_ppsynth(const std::string& args, const std::string& prefix = "") {
-  const std::string cmd = prefix + " " + PPSYNTH_BINARY + " " + args + " 2>&1";
+inline CommandResult run_program(const std::string& binary, const std::string& args, const std::string& prefix = "") {
+  const std::string cmd = prefix + " " + binary + " " + args + " 2>&1";
   CommandResult r;
   FILE* p = popen(cmd.c_str(), "r");
   if (!p) return r;
@@ -25,6 +26,10 @@ inline CommandResult run_ppsynth(const std::string& args, const std::string& pre
   const int st = pclose(p);
   r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
   return r;
+}
+
+inline CommandResult run_ppsynth(const std::string& args, const std::string& prefix = "") {
+  return run_program(PPSYNTH_BINARY, args, prefix);
 }
 
 }  // namespace ppsynth::test

@@ -2,23 +2,28 @@
 // Times one synthesis iteration of the Gabor method split into phases (min and median over
 // repetitions), the set-up per sigma (exemplar maps, features, loss targets), the same
 // binary's own 120 -> 120 7x7 convolution throughput, the iteration's convolution floor
-// (network FLOPs / that throughput) and the ratio, and the peak resident memory.
+// (network FLOPs / that throughput) and the ratio, and the peak resident memory. Then whole
+// iterations as a run takes them, through the library's synthesize() (optimiser step,
+// convergence bookkeeping, and a checkpoint written after every iteration: the worst case).
 // A benchmark: it prints numbers; no test asserts on them.
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 
 #include "apps/ppsynth/command.hpp"
-#include "apps/ppsynth/synthesis/run_config.hpp"
+#include "optim/run/run_config.hpp"
 #include "core/atomic_file.hpp"
 #include "core/config/config.hpp"
 #include "models/gabor_feature_maps.hpp"
 #include "models/point_tensor.hpp"
 #include "optim/gabor_pipeline.hpp"
 #include "optim/initializer.hpp"
+#include "optim/run/synthesize.hpp"
 
 namespace {
 
@@ -85,10 +90,10 @@ app::RunFn setup(CLI::App& app) {
   return [o]() {
     json c = o->config.empty() ? json::object() : load_config(o->config);
     if (!o->exemplar.empty()) c["exemplar"] = o->exemplar;
-    auto r = app::resolve_run_config(c, o->sets);
+    auto r = resolve_run_config(c, o->sets);
     if (r["method"]["type"] != "gabor") throw InputError("bench: only the gabor method is benchmarked");
     const json& p = r["method"];
-    PointSet ex = app::load_exemplar(r);
+    PointSet ex = load_exemplar(r);
     const int u = r["upscale"];
     const uint64_t seed = r["seed"];
     const auto settings_t0 = Clock::now();
@@ -184,6 +189,36 @@ app::RunFn setup(CLI::App& app) {
       pipe.loss(pipe.features(m)).backward();
     });
 
+    // --- whole iterations through the run library, checkpointing after each -----------------
+    struct IterationClock : SynthesisObserver {
+      std::vector<double> at;  // seconds since the stage began, at the end of each iteration
+      void on_iteration(const ProgressEvent& e) override { at.push_back(e.seconds); }
+    } iteration_clock;
+    json engine_spec = r;
+    engine_spec["method"]["num_sigmas"] = 1;  // one stage: the cost of an iteration does not depend on sigma
+    engine_spec["method"]["max_iterations"] = o->reps + 2;
+    engine_spec["checkpoint_seconds"] = 1e-9;  // a checkpoint after every iteration
+    engine_spec["evaluate"] = false;
+    const std::string checkpoint_file =
+        (std::filesystem::temp_directory_path() / ("ppsynth-bench-" + std::to_string(::getpid()) + ".bin")).string();
+    Timing checkpoint_write;
+    size_t checkpoint_bytes = 0;
+    SynthesisOptions engine_options;
+    engine_options.observers = {&iteration_clock};
+    engine_options.save_checkpoint = [&](const std::string& bytes) {
+      const auto a = Clock::now();
+      AtomicFile f(checkpoint_file, std::ios::binary);
+      f.stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+      f.commit();
+      checkpoint_write.s.push_back(std::chrono::duration<double>(Clock::now() - a).count());
+      checkpoint_bytes = std::max(checkpoint_bytes, bytes.size());
+    };
+    synthesize(ex, engine_spec, engine_options);
+    std::filesystem::remove(checkpoint_file);
+    Timing engine;  // the first iteration (warm-up) is left out
+    for (size_t i = 2; i < iteration_clock.at.size(); ++i) engine.s.push_back(iteration_clock.at[i] - iteration_clock.at[i - 1]);
+    if (engine.s.empty()) engine.s.push_back(iteration_clock.at.back());
+
     // --- the convolution floor ---------------------------------------------------------
     const int C = s.feature_net.value("channels", 120), ks = s.feature_net.value("kernel_size", 7),
               depth = s.feature_net.value("depth", 3);
@@ -208,10 +243,14 @@ app::RunFn setup(CLI::App& app) {
       jp.push_back({{"phase", name}, {"min_s", t.min()}, {"median_s", t.median()}});
     }
     std::printf("%-42s %10.4f %10.4f\n", "ONE FULL ITERATION (forward + backward)", full.min(), full.median());
+    std::printf("%-42s %10.4f %10.4f\n", "ONE RUN ITERATION (+ step + checkpoint)", engine.min(), engine.median());
+    std::printf("  checkpoint: %.1f KiB, written in %.2f ms (median of %zu)\n", checkpoint_bytes / 1024.0,
+                1e3 * checkpoint_write.median(), checkpoint_write.s.size());
     std::printf("\nconvolution 120->120 7x7 at %dx%d: %.1f GFLOP/s (min %.4f s)\n", R, R, conv_gflops, conv.min());
     if (flops > 0)
-      std::printf("network FLOPs per iteration (fwd + input grad): %.1f GFLOP -> floor %.3f s; iteration / floor = %.2f\n",
-                  flops / 1e9, floor_s, full.median() / floor_s);
+      std::printf("network FLOPs per iteration (fwd + input grad): %.1f GFLOP -> floor %.3f s; iteration / floor = %.2f; "
+                  "run iteration / floor = %.2f\n",
+                  flops / 1e9, floor_s, full.median() / floor_s, engine.median() / floor_s);
     std::printf("set-up before the first iteration: %.2f s", setup_first);
     if (setup_each.empty()) {
       std::printf(" (per-sigma set-up not timed: --skip-setup)\n");
@@ -229,6 +268,11 @@ app::RunFn setup(CLI::App& app) {
     out["net_gflop_per_iteration"] = flops / 1e9;
     out["floor_s"] = floor_s;
     out["iteration_over_floor"] = floor_s > 0 ? full.median() / floor_s : 0;
+    out["run_iteration_min_s"] = engine.min();
+    out["run_iteration_median_s"] = engine.median();
+    out["run_iteration_over_floor"] = floor_s > 0 ? engine.median() / floor_s : 0;
+    out["checkpoint_bytes"] = checkpoint_bytes;
+    out["checkpoint_write_median_s"] = checkpoint_write.median();
     out["setup_first_s"] = setup_first;
     out["setup_per_sigma_s"] = setup_each;
     out["peak_rss_mib"] = peak_rss_mib();

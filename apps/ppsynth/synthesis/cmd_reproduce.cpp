@@ -2,13 +2,13 @@
 // `ppsynth reproduce --list` | `ppsynth reproduce --check [NAME...]`
 // Re-runs a published experiment (a figure, table or ablation of Huang et al. 2022) from its
 // config in configs/paper/ and writes a self-contained report (reports/NAME/index.html, plus
-// CSV/Markdown tables). Schema: apps/ppsynth/synthesis/reproduce_config.hpp, docs/reproduce.md.
+// CSV/Markdown tables). Schema: optim/reproduce/reproduce_config.hpp, docs/reproduce.md.
 #include <filesystem>
 #include <iostream>
 
 #include "apps/ppsynth/command.hpp"
-#include "apps/ppsynth/synthesis/reproduce_config.hpp"
-#include "apps/ppsynth/synthesis/reproduce_runner.hpp"
+#include "optim/reproduce/reproduce_config.hpp"
+#include "optim/reproduce/reproduce_runner.hpp"
 #include "core/error.hpp"
 
 namespace {
@@ -35,9 +35,9 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     using namespace ppsynth;
     namespace fs = std::filesystem;
     if (o->list) {
-      for (auto& f : app::list_reproduce_configs(app::paper_config_dir())) {
+      for (auto& f : list_reproduce_configs(paper_config_dir())) {
         try {
-          auto c = app::load_reproduce_config(f);
+          auto c = load_reproduce_config(f);
           std::printf("%-24s %-10s %2zu panel(s)  %s\n", fs::path(f).stem().c_str(), c.kind.c_str(), c.panels.size(), c.title.c_str());
         } catch (const InputError& e) {
           std::printf("%-24s INVALID: %s\n", fs::path(f).stem().c_str(), e.what());
@@ -47,24 +47,24 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     }
     if (o->check) {
       std::vector<std::string> files;
-      for (auto& n : o->names) files.push_back(app::find_reproduce_config(n));
-      if (o->names.empty()) files = app::list_reproduce_configs(app::paper_config_dir());
+      for (auto& n : o->names) files.push_back(find_reproduce_config(n));
+      if (o->names.empty()) files = list_reproduce_configs(paper_config_dir());
       for (auto& f : files) {
-        auto c = app::load_reproduce_config(f);  // throws InputError naming the file and key
+        auto c = load_reproduce_config(f);  // throws InputError naming the file and key
         std::printf("ok  %s (%zu panels)\n", f.c_str(), c.panels.size());
       }
       return 0;
     }
     if (o->names.size() != 1) throw InputError("give one config name (see --list)");
-    auto config = app::load_reproduce_config(app::find_reproduce_config(o->names.front()));
-    app::ReproduceOptions ro;
+    auto config = load_reproduce_config(find_reproduce_config(o->names.front()));
+    ReproduceOptions ro;
     ro.quick = o->quick;
     ro.out = o->out;
     ro.force = o->force;
     ro.overrides = o->sets;
     ro.reuse = o->reuse;
     ro.panels = o->panels;
-    auto res = app::run_reproduction(config, ro);
+    auto res = run_reproduction(config, ro);
     std::cout << res.dir << "/index.html\n";
     return 0;
   };

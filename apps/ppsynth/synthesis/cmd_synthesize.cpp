@@ -8,8 +8,9 @@
 #include <iostream>
 
 #include "apps/ppsynth/command.hpp"
-#include "apps/ppsynth/synthesis/run_config.hpp"
-#include "apps/ppsynth/synthesis/run_synthesis.hpp"
+#include "optim/run/run_config.hpp"
+#include "optim/run/run_synthesis.hpp"
+#include "optim/run/synthesize.hpp"
 #include "core/config/config.hpp"
 #include "core/error.hpp"
 
@@ -64,7 +65,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_flag("--quick", o->quick, "tiny grid and few iterations (smoke test)");
   return [o]() -> int {
     using namespace ppsynth;
-    app::RunRequest req;
+    RunRequest req;
     req.dir = o->out;
     req.quick = o->quick;
     req.force = o->force;
@@ -75,7 +76,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
             !o->method.empty() || !o->init.empty() || !o->format.empty() || o->quick)
           throw InputError("--resume takes the run directory alone: its config, seed and settings are the run's own");
         install_stop_handlers();
-        std::cout << app::resume_synthesis(o->resume, req).dir << "\n";
+        std::cout << resume_synthesis(o->resume, req).dir << "\n";
         return 0;
       }
       json c = o->config.empty() ? json::object() : load_config(o->config);
@@ -84,11 +85,11 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     if (!o->method.empty()) c["method"] = json{{"type", o->method}};
     if (o->seed >= 0) c["seed"] = o->seed;
     if (!o->init.empty()) c["init_file"] = o->init;
-      auto resolved = app::resolve_run_config(c, o->sets);
-      if (app::can_resume(resolved)) install_stop_handlers();  // others stop at once, as without handlers
-      std::cout << app::run_synthesis(resolved, req).dir << "\n";
+      auto resolved = resolve_run_config(c, o->sets);
+      if (can_resume(resolved)) install_stop_handlers();  // others stop at once, as without handlers
+      std::cout << run_synthesis(resolved, req).dir << "\n";
       return 0;
-    } catch (const app::RunInterrupted& e) {
+    } catch (const RunInterrupted& e) {
       const char* name = g_signal == SIGTERM ? "SIGTERM" : "SIGINT";
       std::cerr << "ppsynth synthesize: stopped by " << name << " at the end of an iteration; the checkpoint is in " << e.dir
                 << ". Continue with:\n  ppsynth synthesize --resume " << shell_quoted(e.dir) << "\n";

@@ -1,6 +1,6 @@
 #pragma once
 // A paper experiment as a config (configs/paper/NAME.json): `ppsynth reproduce NAME` runs it
-// and writes a report (apps/ppsynth/synthesis/reproduce_runner.hpp, report_writer.hpp).
+// and writes a report (optim/reproduce/reproduce_runner.hpp, report_writer.hpp).
 // Schema (docs/reproduce.md is the user-facing description; unknown keys are errors naming
 // the key path, e.g. "config key 'panels[2].methods[1]': ..."):
 //
@@ -34,7 +34,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace ppsynth::app {
+namespace ppsynth {
 
 using json = nlohmann::json;
 
@@ -97,4 +97,4 @@ std::vector<std::string> list_reproduce_configs(const std::string& dir);
 // InputError listing the known names when NAME is neither.
 std::string find_reproduce_config(const std::string& name_or_path);
 
-}  // namespace ppsynth::app
+}  // namespace ppsynth

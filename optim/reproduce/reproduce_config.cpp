@@ -1,10 +1,10 @@
-#include "apps/ppsynth/synthesis/reproduce_config.hpp"
+#include "optim/reproduce/reproduce_config.hpp"
 
 #include <algorithm>
 #include <filesystem>
 #include <set>
 
-#include "apps/ppsynth/synthesis/run_config.hpp"
+#include "optim/run/run_config.hpp"
 #include "core/config/config.hpp"
 #include "core/error.hpp"
 #include "core/run_directory.hpp"
@@ -16,7 +16,7 @@
 
 namespace fs = std::filesystem;
 
-namespace ppsynth::app {
+namespace ppsynth {
 
 namespace {
 
@@ -301,4 +301,4 @@ std::string find_reproduce_config(const std::string& name) {
   throw InputError("no config '" + name + "' in " + paper_config_dir() + " (known: " + known + ")");
 }
 
-}  // namespace ppsynth::app
+}  // namespace ppsynth

@@ -7,10 +7,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "apps/ppsynth/synthesis/report_tables.hpp"
-#include "apps/ppsynth/synthesis/reproduce_config.hpp"
-#include "apps/ppsynth/synthesis/reproduce_runner.hpp"
-#include "apps/ppsynth/synthesis/run_synthesis.hpp"
+#include "optim/reproduce/report_tables.hpp"
+#include "optim/reproduce/reproduce_config.hpp"
+#include "optim/reproduce/reproduce_runner.hpp"
+#include "optim/run/run_synthesis.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/formats/text_table.hpp"
@@ -24,7 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 using ppsynth::InputError;
 using json = nlohmann::json;
-using namespace ppsynth::app;
+using namespace ppsynth;
 
 const std::string kLines = "shared:data/exemplars/gabor-paper/lines.txt";
 const std::string kLinesRef = "shared:data/reference/lines/output.txt";

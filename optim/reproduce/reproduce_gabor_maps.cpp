@@ -1,4 +1,4 @@
-#include "apps/ppsynth/synthesis/reproduce_gabor_maps.hpp"
+#include "optim/reproduce/reproduce_gabor_maps.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -8,7 +8,7 @@
 #include "models/gabor_feature_maps.hpp"
 #include "models/point_tensor.hpp"
 
-namespace ppsynth::app {
+namespace ppsynth {
 
 namespace {
 
@@ -76,4 +76,4 @@ std::vector<std::pair<std::string, std::string>> render_gabor_map_figure(const P
   return out;
 }
 
-}  // namespace ppsynth::app
+}  // namespace ppsynth

@@ -19,10 +19,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "apps/ppsynth/synthesis/reproduce_config.hpp"
+#include "optim/reproduce/reproduce_config.hpp"
 #include "core/point_set.hpp"
 
-namespace ppsynth::app {
+namespace ppsynth {
 
 struct ReproduceOptions {
   bool quick = false;
@@ -73,4 +73,4 @@ ReproduceResult run_reproduction(const ReproduceConfig& config, const ReproduceO
 // Sum of the optimisation iterations a method reported in its stats (Gabor: per stage).
 int total_iterations(const nlohmann::json& stats);
 
-}  // namespace ppsynth::app
+}  // namespace ppsynth

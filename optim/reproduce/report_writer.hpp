@@ -12,12 +12,12 @@
 //   report.json  the numbers (metrics without curves), per panel and column
 #include <string>
 
-#include "apps/ppsynth/synthesis/reproduce_config.hpp"
-#include "apps/ppsynth/synthesis/reproduce_runner.hpp"
+#include "optim/reproduce/reproduce_config.hpp"
+#include "optim/reproduce/reproduce_runner.hpp"
 
-namespace ppsynth::app {
+namespace ppsynth {
 
 // Into result.dir: index.html, report.json, the tables as CSV and Markdown.
 void write_reproduce_report(const ReproduceConfig& config, const ReproduceResult& result, const ReproduceOptions& options);
 
-}  // namespace ppsynth::app
+}  // namespace ppsynth

@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
-#include "apps/ppsynth/synthesis/reproduce_config.hpp"
-#include "apps/ppsynth/synthesis/reproduce_runner.hpp"
+#include "optim/reproduce/reproduce_config.hpp"
+#include "optim/reproduce/reproduce_runner.hpp"
 
-namespace ppsynth::app {
+namespace ppsynth {
 
 struct ReportTable {
   std::string name, caption;
@@ -36,4 +36,4 @@ void write_table_files(const ReportTable& t, const std::string& dir);
 // "0.1235" / "n/a" for non-numbers; JSON strings are printed as they are.
 std::string format_cell(const nlohmann::json& v, int decimals = 4);
 
-}  // namespace ppsynth::app
+}  // namespace ppsynth

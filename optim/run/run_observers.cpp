@@ -1,4 +1,4 @@
-#include "apps/ppsynth/synthesis/run_observers.hpp"
+#include "optim/run/run_observers.hpp"
 
 #include <cstdio>
 #include <map>
@@ -10,7 +10,7 @@
 #include "core/render/plot_curves.hpp"
 #include "core/render/plot_points.hpp"
 
-namespace ppsynth::app {
+namespace ppsynth {
 
 namespace {
 std::string fmt_duration(double s) {
@@ -91,4 +91,4 @@ void SnapshotWriter::on_stage_end(const ProgressEvent& e, const PointSet& curren
   titles_.push_back(e.stage);
 }
 
-}  // namespace ppsynth::app
+}  // namespace ppsynth

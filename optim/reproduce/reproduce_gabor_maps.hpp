@@ -15,7 +15,7 @@
 
 #include "core/point_set.hpp"
 
-namespace ppsynth::app {
+namespace ppsynth {
 
 // `maps`: {"sigma", "sigmas", "res", "quick_res", "k", "base_frequency"} (reproduce_config).
 // Writes into `dir`; returns (file name relative to `dir`, caption) per image.
@@ -23,4 +23,4 @@ std::vector<std::pair<std::string, std::string>> render_gabor_map_figure(const P
                                                                          const nlohmann::json& maps, bool quick,
                                                                          const std::string& dir);
 
-}  // namespace ppsynth::app
+}  // namespace ppsynth

@@ -1,4 +1,4 @@
-#include "apps/ppsynth/synthesis/run_config.hpp"
+#include "optim/run/run_config.hpp"
 
 #include "core/config/config.hpp"
 #include "core/config/defaults_catalog.hpp"
@@ -9,7 +9,7 @@
 #include "core/run_directory.hpp"
 #include "optim/method.hpp"
 
-namespace ppsynth::app {
+namespace ppsynth {
 
 json run_defaults() {
   return json{
@@ -37,7 +37,6 @@ json resolve_run_config(json config, const std::vector<std::string>& overrides) 
   json resolved_method;
   MethodRegistry::instance().create(r["method"], "method", &resolved_method);
   r["method"] = resolved_method;
-  if (r["exemplar"].get<std::string>().empty()) throw config_error("exemplar", "no exemplar file given");
   const std::string name = r["name"];
   if (!name.empty() && !is_safe_name(name))  // it names runs/<name>: never a path
     throw config_error("name", "'" + name + "' is not a plain name (letters, digits, '_' or '-')");
@@ -45,6 +44,7 @@ json resolve_run_config(json config, const std::vector<std::string>& overrides) 
 }
 
 PointSet load_exemplar(const json& r) {
+  if (r["exemplar"].get<std::string>().empty()) throw config_error("exemplar", "no exemplar file given");
   ReadOptions o;
   o.format = parse_format(r["format"].get<std::string>());
   const std::string sc = r["scaling"];
@@ -73,10 +73,10 @@ std::optional<PointSet> load_initialization(const json& r) {
   return all;
 }
 
-}  // namespace ppsynth::app
+}  // namespace ppsynth
 
 namespace {
 [[maybe_unused]] const bool ppsynth_run_kind = ppsynth::register_defaults_kind("run", [] {
-  return ppsynth::json{{"run", {{"description", "top-level keys of a synthesis config"}, {"defaults", ppsynth::app::run_defaults()}}}};
+  return ppsynth::json{{"run", {{"description", "top-level keys of a synthesis config"}, {"defaults", ppsynth::run_defaults()}}}};
 });
 }  // namespace

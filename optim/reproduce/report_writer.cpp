@@ -1,4 +1,4 @@
-#include "apps/ppsynth/synthesis/report_writer.hpp"
+#include "optim/reproduce/report_writer.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -6,15 +6,15 @@
 #include <filesystem>
 #include <set>
 
-#include "apps/ppsynth/command.hpp"
-#include "apps/ppsynth/synthesis/report_tables.hpp"
+#include "core/revision.hpp"
+#include "optim/reproduce/report_tables.hpp"
 #include "core/atomic_file.hpp"
 #include "core/render/plot_points.hpp"
 #include "core/report/html_report.hpp"
 
 namespace fs = std::filesystem;
 
-namespace ppsynth::app {
+namespace ppsynth {
 
 namespace {
 
@@ -221,4 +221,4 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
   write_text_atomic(dir + "/report.json", report.dump(2) + "\n");
 }
 
-}  // namespace ppsynth::app
+}  // namespace ppsynth

@@ -1,7 +1,8 @@
 #pragma once
-// A synthesis run's config: which exemplar, which method (with its own parameters), seed,
-// upscaling, where to write. Top-level defaults live in run_config.cpp; method defaults live
-// with each method's registration. Used by `synthesize`, `reproduce` and `bench`.
+// A synthesis run's config (the "spec" of optim/run/synthesize.hpp): which exemplar, which
+// method (with its own parameters), seed, upscaling, checkpoints. Top-level defaults live in
+// run_config.cpp; method defaults live with each method's registration. Used by every front
+// end: `synthesize`, `reproduce`, `bench`, the library call.
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,7 +11,7 @@
 
 #include "core/point_set.hpp"
 
-namespace ppsynth::app {
+namespace ppsynth {
 
 using json = nlohmann::json;
 
@@ -20,9 +21,10 @@ json run_defaults();
 // the method's parameters merged with its registered defaults.
 json resolve_run_config(json config, const std::vector<std::string>& overrides);
 
-// Loads the exemplar a resolved config names ("shared:" paths allowed).
+// Loads the exemplar a resolved config names ("shared:" paths allowed); a config used only
+// in memory (synthesize() with an exemplar at hand) needs none.
 PointSet load_exemplar(const json& resolved);
 // The explicit initialisation of "init_file", if any.
 std::optional<PointSet> load_initialization(const json& resolved);
 
-}  // namespace ppsynth::app
+}  // namespace ppsynth

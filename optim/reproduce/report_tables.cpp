@@ -1,4 +1,4 @@
-#include "apps/ppsynth/synthesis/report_tables.hpp"
+#include "optim/reproduce/report_tables.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include "core/report/html_report.hpp"
 #include "optim/gabor_pipeline.hpp"
 
-namespace ppsynth::app {
+namespace ppsynth {
 
 namespace {
 
@@ -231,4 +231,4 @@ void write_table_files(const ReportTable& t, const std::string& dir) {
   write_text_atomic(dir + "/" + t.name + ".md", md);
 }
 
-}  // namespace ppsynth::app
+}  // namespace ppsynth

@@ -1,4 +1,4 @@
-#include "apps/ppsynth/synthesis/reproduce_runner.hpp"
+#include "optim/reproduce/reproduce_runner.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -6,10 +6,10 @@
 #include <fstream>
 #include <map>
 
-#include "apps/ppsynth/synthesis/report_writer.hpp"
-#include "apps/ppsynth/synthesis/reproduce_gabor_maps.hpp"
-#include "apps/ppsynth/synthesis/run_config.hpp"
-#include "apps/ppsynth/synthesis/run_synthesis.hpp"
+#include "optim/reproduce/report_writer.hpp"
+#include "optim/reproduce/reproduce_gabor_maps.hpp"
+#include "optim/run/run_config.hpp"
+#include "optim/run/run_synthesis.hpp"
 #include "core/atomic_file.hpp"
 #include "core/config/config.hpp"
 #include "core/error.hpp"
@@ -24,7 +24,7 @@
 
 namespace fs = std::filesystem;
 
-namespace ppsynth::app {
+namespace ppsynth {
 
 namespace {
 
@@ -283,4 +283,4 @@ ReproduceResult run_reproduction(const ReproduceConfig& config, const ReproduceO
   return res;
 }
 
-}  // namespace ppsynth::app
+}  // namespace ppsynth

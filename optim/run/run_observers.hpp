@@ -8,7 +8,7 @@
 
 #include "optim/method.hpp"
 
-namespace ppsynth::app {
+namespace ppsynth {
 
 class ProgressLog : public SynthesisObserver {
  public:
@@ -58,4 +58,4 @@ class SnapshotWriter : public SynthesisObserver {
   std::vector<std::string> pngs_, titles_;
 };
 
-}  // namespace ppsynth::app
+}  // namespace ppsynth

@@ -1,0 +1,181 @@
+#include "optim/run/run_store.hpp"
+
+#include <ATen/Parallel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/formats/point_io.hpp"
+#include "core/log.hpp"
+#include "core/paths.hpp"
+#include "core/render/plot_curves.hpp"
+#include "core/render/plot_points.hpp"
+#include "core/revision.hpp"
+#include "core/run_directory.hpp"
+#include "optim/run/run_config.hpp"
+
+namespace fs = std::filesystem;
+
+namespace ppsynth {
+
+namespace {
+
+// PCF of the exemplar vs the output (quadrant average): all classes, each class, each
+// class pair (cross PCF).
+void plot_pcf(const std::string& path, const nlohmann::json& m) {
+  auto curve_plot = [](const std::string& title, const nlohmann::json& pcf) {
+    CurvePlot cp;
+    cp.title = title;
+    cp.xlabel = "r / r_max";
+    cp.ylabel = "g(r)";
+    const auto r = pcf["r"].get<std::vector<double>>();
+    cp.series.push_back(Series{"exemplar", r, pcf["exemplar"].get<std::vector<double>>(), true});
+    cp.series.push_back(Series{"output (4 quadrants)", r, pcf["output"].get<std::vector<double>>(), false});
+    return cp;
+  };
+  std::vector<CurvePlot> plots;
+  if (m.contains("all") && m["all"].contains("pcf")) plots.push_back(curve_plot("all classes", m["all"]["pcf"]));
+  if (m.contains("classes") && m["classes"].size() > 1)
+    for (auto& c : m["classes"])
+      if (c.contains("pcf")) plots.push_back(curve_plot("class " + c["class"].dump(), c["pcf"]));
+  if (m.contains("cross"))
+    for (auto& c : m["cross"])
+      if (c.contains("pcf")) plots.push_back(curve_plot("cross " + c["ci"].dump() + "-" + c["cj"].dump(), c["pcf"]));
+  if (plots.size() == 1) plot_curves(path, plots[0]);
+  else if (!plots.empty()) plot_curve_grid(path, plots, std::min<int>(3, static_cast<int>(plots.size())));
+}
+
+// The keys that decide a synthesis, without the exemplar's file name: exemplars are
+// compared by content (a generated exemplar lives in each report's own folder).
+nlohmann::json synthesis_key(nlohmann::json c) {
+  for (const char* k : {"name", "description", "snapshots", "evaluate", "exemplar", "format", "checkpoint_seconds"}) c.erase(k);
+  return c;
+}
+
+// The exemplar a finished run synthesised from: its own copy, else the config's file.
+PointSet run_exemplar(const std::string& dir, const nlohmann::json& config) {
+  const std::string copy = dir + "/exemplar.txt";
+  return fs::exists(copy) ? read_points(copy) : load_exemplar(config);
+}
+
+bool same_points(const PointSet& a, const PointSet& b) {
+  if (a.size() != b.size() || a.classes() != b.classes() || a.attribute_names() != b.attribute_names()) return false;
+  const double tol = 1e-9;  // plain text keeps 17 digits; tolerance only for the text round trip
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (std::abs(a[i].x - b[i].x) > tol || std::abs(a[i].y - b[i].y) > tol) return false;
+    for (size_t k = 0; k < a.num_attributes(); ++k)
+      if (std::abs(a.attr(i, k) - b.attr(i, k)) > tol * (1 + std::abs(a.attr(i, k)))) return false;
+  }
+  return true;
+}
+
+// A run made with another thread count may differ from a run here in the last bits: say so.
+std::string note_threads(const std::string& dir) {
+  const nlohmann::json run = read_run_json(dir + "/run.json");
+  if (run.contains("threads") && run["threads"] != at::get_num_threads())
+    spdlog::warn("{} was made with {} threads, this process uses {}: a new run here may differ in the last bits",
+                 dir, run["threads"].dump(), at::get_num_threads());
+  return dir;
+}
+
+}  // namespace
+
+nlohmann::json read_run_json(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw file_error(path, 0, "missing (not a finished run directory?)");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw file_error(path, 0, std::string("not valid JSON: ") + e.what());
+  }
+}
+
+std::string run_name(const nlohmann::json& r) {
+  const std::string name = r["name"];
+  return name.empty() ? fs::path(resolve_data_path(r["exemplar"])).stem().string() : name;
+}
+
+void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const LossRecorder& losses,
+                       double synthesis_seconds, std::chrono::steady_clock::time_point started) {
+  const nlohmann::json& r = o.config;
+  const std::string& dir = o.dir;
+  write_points(dir + "/output.txt", o.output, Format::Plain);
+  Format ex_format = detect_format(resolve_data_path(r["exemplar"]));
+  if (ex_format == Format::GaborInt) write_points(dir + "/output.gabor.txt", o.output, Format::GaborInt);
+  std::vector<std::pair<std::string, PointSet>> panels = {{"exemplar (" + std::to_string(o.exemplar.size()) + ")", o.exemplar}};
+  if (!o.initialization.empty()) {
+    panels.push_back({"initialisation", o.initialization});
+    write_points(dir + "/init.txt", o.initialization, Format::Plain);
+  }
+  panels.push_back({"output (" + std::to_string(o.output.size()) + ")", o.output});
+  plot_panels(dir + "/exemplar_vs_output.png", panels, PointStyle{}, 420);
+  write_text_atomic(dir + "/loss.csv", losses.csv());
+  losses.plot(dir + "/loss.png", name + ": loss per iteration");
+  // The exemplar as synthesised (after scaling and class merging): the run stays
+  // self-contained when a generated exemplar's file is gone, and --reuse compares contents.
+  write_points(dir + "/exemplar.txt", o.exemplar, Format::Plain);
+  if (!o.metrics.is_null()) {
+    write_text_atomic(dir + "/metrics.json", o.metrics.dump(2) + "\n");
+    plot_pcf(dir + "/pcf.png", o.metrics);
+  }
+  o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  nlohmann::json run = {{"name", name},
+                        {"seed", r["seed"]},
+                        {"revision", revision()},
+                        {"quick", quick},
+                        // results depend on it in the last bits (reductions split across threads)
+                        {"threads", at::get_num_threads()},
+                        {"synthesis_seconds", synthesis_seconds},
+                        {"total_seconds", o.seconds},
+                        {"method_stats", o.stats}};
+  write_text_atomic(dir + "/run.json", run.dump(2) + "\n");
+}
+
+RunOutcome load_run(const std::string& dir) {
+  RunOutcome o;
+  o.dir = dir;
+  o.config = read_run_json(dir + "/config.json");
+  const nlohmann::json run = read_run_json(dir + "/run.json");
+  o.stats = run.value("method_stats", nlohmann::json::object());
+  o.seconds = run.value("total_seconds", 0.0);
+  o.exemplar = run_exemplar(dir, o.config);
+  o.output = read_points(dir + "/output.txt");
+  if (fs::exists(dir + "/init.txt")) o.initialization = read_points(dir + "/init.txt");
+  if (fs::exists(dir + "/metrics.json")) o.metrics = read_run_json(dir + "/metrics.json");
+  return o;
+}
+
+bool same_synthesis(const nlohmann::json& a, const nlohmann::json& b) { return synthesis_key(a) == synthesis_key(b); }
+
+std::string find_matching_run(const nlohmann::json& resolved, bool quick, const std::vector<std::string>& roots) {
+  const PointSet wanted = load_exemplar(resolved);
+  auto matches = [&](const fs::path& d) {
+    if (run_dir_state(d.string()) != RunDirState::Complete) return false;  // only finished runs of ppsynth
+    try {
+      const nlohmann::json config = read_run_json((d / "config.json").string());
+      return same_synthesis(config, resolved) &&
+             read_run_json((d / "run.json").string()).value("quick", !quick) == quick &&
+             same_points(run_exemplar(d.string(), config), wanted);
+    } catch (const InputError&) {
+      return false;  // a damaged directory is simply not a match
+    }
+  };
+  for (auto& root : roots) {
+    std::error_code ec;
+    if (!fs::is_directory(root, ec)) throw InputError("--reuse " + root + ": not a directory");
+    if (matches(root)) return note_threads(root);
+    std::vector<fs::path> subdirs;
+    for (auto& e : fs::directory_iterator(root, ec))
+      if (e.is_directory()) subdirs.push_back(e.path());
+    std::sort(subdirs.begin(), subdirs.end());  // deterministic choice when several match
+    for (auto& d : subdirs)
+      if (matches(d)) return note_threads(d.string());
+  }
+  return "";
+}
+
+}  // namespace ppsynth

@@ -1,0 +1,57 @@
+#pragma once
+// The run store: a run as a directory of files, written, read back and found again.
+//   output.txt (project format) + output.<exemplar format>.txt, exemplar.txt (as synthesised),
+//   init.txt, exemplar_vs_output.png, snapshots/stageNN.{txt,png} (paper Fig. 4), loss.csv +
+//   loss.png, config.json (resolved), run.json (seed, revision, threads, wall times, the
+//   method's stats), metrics.json and pcf.png (`ppsynth eval` of the output vs the exemplar).
+// Directories are opened through RunDirectory (core/run_directory.hpp); running a synthesis
+// into one is optim/run/run_synthesis.hpp.
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/point_set.hpp"
+#include "optim/run/run_observers.hpp"
+
+namespace ppsynth {
+
+// A run as the store knows it: where, the resolved config, the points and what was measured.
+struct RunOutcome {
+  std::string dir;
+  PointSet exemplar, initialization, output;
+  nlohmann::json stats, metrics, config;
+  double seconds = 0;
+};
+
+// Writes every output file of a finished synthesis into o.dir (o.seconds is set here: the
+// run's wall time since `started`). `losses` holds every iteration's loss.
+void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const LossRecorder& losses,
+                       double synthesis_seconds, std::chrono::steady_clock::time_point started);
+
+// Reads a finished run directory back (config.json, run.json, output.txt, init.txt; the
+// exemplar from its exemplar.txt copy, or the config's file for runs made before the copy).
+// Throws InputError naming the file when something is missing.
+RunOutcome load_run(const std::string& dir);
+
+// True when two resolved run configs describe the same synthesis apart from the exemplar:
+// everything but the keys that only label or decorate a run (name, description, snapshots,
+// evaluate, checkpoint_seconds) and the exemplar's file name and format (exemplars are
+// compared by content).
+bool same_synthesis(const nlohmann::json& a, const nlohmann::json& b);
+
+// A finished run directory under any of `roots` (each root itself or one of its direct
+// subdirectories) made by the same synthesis (same_synthesis) at the same quick setting from
+// the same exemplar points (so a generated exemplar in another report's folder matches);
+// "" when none. Only directories marked complete count. Lets a report reuse long runs
+// instead of repeating them (reproduce --reuse).
+std::string find_matching_run(const nlohmann::json& resolved, bool quick, const std::vector<std::string>& roots);
+
+// The run's name: the config's, else the exemplar's file stem.
+std::string run_name(const nlohmann::json& resolved);
+
+// A JSON file of a run directory; InputError naming it when missing or malformed.
+nlohmann::json read_run_json(const std::string& path);
+
+}  // namespace ppsynth

@@ -1,0 +1,118 @@
+#include "optim/run/run_synthesis.hpp"
+
+#include <ATen/Parallel.h>
+
+#include <chrono>
+#include <filesystem>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/log.hpp"
+#include "core/formats/text_table.hpp"
+#include "core/run_directory.hpp"
+#include "optim/run/run_config.hpp"
+#include "optim/run/run_observers.hpp"
+#include "optim/run/synthesize.hpp"
+
+namespace fs = std::filesystem;
+
+namespace ppsynth {
+
+namespace {
+
+const char* kCheckpoint = "checkpoint.bin";
+
+// Runs (or continues, with `resume_state`) the synthesis into the open directory `dir`.
+RunOutcome execute(RunOutcome o, RunDirectory& dir, const std::string& name, const RunRequest& req,
+                   const std::string* resume_state) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const nlohmann::json& r = o.config;
+  o.dir = dir.path();
+  ProgressLog progress(name, req.quick ? 1 : 10);
+  LossRecorder losses;
+  SnapshotWriter snaps(o.dir + "/snapshots");
+  snaps.set_enabled(r["snapshots"].get<bool>());
+  SynthesisOptions options;
+  options.quick = req.quick;
+  options.observers = {&progress, &losses, &snaps};
+  bool checkpointed = resume_state != nullptr;
+  options.save_checkpoint = [&](const std::string& bytes) {
+    AtomicFile f(o.dir + "/" + kCheckpoint, std::ios::binary);
+    f.stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    f.commit();
+    checkpointed = true;
+  };
+  options.resume_state = resume_state;
+  options.stop = req.stop;
+  spdlog::info("[{}] {} points, {} classes -> {} points ({}), seed {}", name, o.exemplar.size(), o.exemplar.num_classes(),
+               o.exemplar.size() * r["upscale"].get<int>() * r["upscale"].get<int>(), r["method"]["type"].get<std::string>(),
+               r["seed"].get<uint64_t>());
+  try {
+    fs::create_directories(o.dir + "/snapshots");
+    SynthesisResult res = synthesize(o.exemplar, r, options);
+    o.output = std::move(res.output);
+    o.initialization = std::move(res.initialization);
+    o.stats = std::move(res.stats);
+    o.metrics = std::move(res.metrics);
+    write_run_outputs(o, name, req.quick, losses, res.seconds, t0);
+    dir.mark_complete({{"seed", r["seed"]}});
+  } catch (const SynthesisInterrupted&) {
+    throw RunInterrupted(o.dir);  // the checkpoint stays for --resume
+  } catch (...) {
+    if (!checkpointed) dir.discard();  // nothing to resume from: leave nothing behind
+    throw;
+  }
+  std::error_code ec;
+  fs::remove(o.dir + "/" + kCheckpoint, ec);  // a finished run needs no checkpoint
+  spdlog::info("[{}] wrote {} ({:.1f} s)", name, o.dir, o.seconds);
+  return o;
+}
+
+}  // namespace
+
+RunOutcome run_synthesis(const nlohmann::json& r, const RunRequest& req) {
+  RunOutcome o;
+  o.config = r;
+  o.exemplar = load_exemplar(r);  // bad input fails here, before anything is created
+  const std::string name = run_name(r);
+  if (req.dir.empty() && !is_safe_name(name))
+    throw InputError("the run name '" + name + "' (the exemplar's file name) is not a plain name; give the run directory with -o");
+  RunDirOptions dir_options;
+  dir_options.force = req.force;
+  RunDirectory dir = RunDirectory::open(req.dir.empty() ? "runs/" + name : req.dir, dir_options);
+  try {
+    // What a resume needs, written first: the resolved config and the way it ran.
+    write_text_atomic(dir.path() + "/config.json", r.dump(2) + "\n");
+    dir.mark_running({{"quick", req.quick}, {"threads", at::get_num_threads()}, {"seed", r["seed"]}});
+  } catch (...) {
+    dir.discard();
+    throw;
+  }
+  return execute(std::move(o), dir, name, req, nullptr);
+}
+
+RunOutcome resume_synthesis(const std::string& path, const RunRequest& req) {
+  RunDirOptions dir_options;
+  dir_options.resume = true;
+  dir_options.option = "--resume";
+  RunDirectory dir = RunDirectory::open(path, dir_options);
+  const nlohmann::json marker = run_dir_marker(dir.path());
+  RunOutcome o;
+  o.config = read_run_json(dir.path() + "/config.json");
+  o.exemplar = load_exemplar(o.config);
+  const std::string checkpoint = dir.path() + "/" + kCheckpoint;
+  if (!fs::exists(checkpoint))
+    throw InputError("--resume " + dir.path() + ": no checkpoint (the run stopped before its first one, or its method (" +
+                     o.config["method"].value("type", "?") + ") cannot resume); start it again with --force");
+  const std::string bytes = read_file_text(checkpoint);
+  if (marker.contains("threads") && marker["threads"] != at::get_num_threads())
+    spdlog::warn("--resume {}: the run started with {} threads, this process uses {}: the result may differ in the last bits "
+                 "from an uninterrupted run (set PPSYNTH_THREADS={})",
+                 dir.path(), marker["threads"].dump(), at::get_num_threads(), marker["threads"].dump());
+  RunRequest r = req;
+  r.quick = marker.value("quick", false);
+  const std::string name = run_name(o.config);
+  return execute(std::move(o), dir, name, r, &bytes);
+}
+
+}  // namespace ppsynth

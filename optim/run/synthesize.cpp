@@ -1,0 +1,63 @@
+#include "optim/run/synthesize.hpp"
+
+#include <chrono>
+
+#include "core/metrics/evaluation.hpp"
+#include "optim/run/run_config.hpp"
+
+namespace ppsynth {
+
+namespace {
+
+// Keeps the initial output (the first event of every run, resumed or not).
+struct InitialRecorder : SynthesisObserver {
+  PointSet initial;
+  void on_start(const PointSet& p) override { initial = p; }
+};
+
+std::vector<StageResult> stage_results(const nlohmann::json& stats) {
+  std::vector<StageResult> v;
+  if (!stats.is_object() || !stats.contains("stages")) return v;
+  for (const auto& s : stats["stages"])
+    v.push_back({s.value("stage", ""), s.value("iterations", 0), s.value("final_loss", 0.0), s.value("seconds", 0.0)});
+  return v;
+}
+
+}  // namespace
+
+bool can_resume(const nlohmann::json& spec) {
+  return MethodRegistry::instance().create(spec["method"], "method")->can_resume();
+}
+
+SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec, const SynthesisOptions& options) {
+  using Clock = std::chrono::steady_clock;
+  auto method = MethodRegistry::instance().create(spec["method"], "method");
+  SynthesisContext ctx;
+  ctx.seed = spec["seed"].get<uint64_t>();
+  ctx.upscale = spec["upscale"].get<int>();
+  ctx.quick = options.quick;
+  const auto from_file = options.initialization ? std::nullopt : load_initialization(spec);
+  ctx.initialization = options.initialization ? options.initialization : from_file ? &*from_file : nullptr;
+  InitialRecorder initial;
+  ctx.observers = options.observers;
+  ctx.observers.push_back(&initial);
+  SynthesisResult r;
+  ctx.stats = &r.stats;
+  if (method->can_resume()) {
+    ctx.save_checkpoint = options.save_checkpoint;
+    ctx.checkpoint_seconds = spec["checkpoint_seconds"].get<double>();
+    ctx.resume_state = options.resume_state;
+    ctx.stop = options.stop;
+  } else if (options.resume_state) {
+    throw InputError("the method " + spec["method"].value("type", std::string("?")) + " cannot resume a checkpoint");
+  }
+  const auto t0 = Clock::now();
+  r.output = method->synthesize(exemplar, ctx);
+  r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  r.initialization = std::move(initial.initial);
+  r.stages = stage_results(r.stats);
+  if (spec["evaluate"].get<bool>()) r.metrics = evaluate(exemplar, r.output);
+  return r;
+}
+
+}  // namespace ppsynth

@@ -1,0 +1,60 @@
+#pragma once
+// The in-memory synthesis: exemplar in, result out, no files, no command. Every front end
+// (the `ppsynth` command through run_synthesis.hpp, a Python module, a sweep runner, a test)
+// calls this; the run directory, reports and reproduce plans are built on top of it.
+//
+//   exemplar --spec (resolve_run_config)--> SynthesisMethod (registered by "method.type")
+//            --observers: progress, losses, snapshots--> output --evaluate--> metrics
+//
+// A spec is a resolved run config (optim/run/run_config.hpp); its "exemplar" key is not used
+// here (the exemplar is given), its "method", "seed", "upscale", "init_file" and "evaluate" are.
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/point_set.hpp"
+#include "optim/method.hpp"
+
+namespace ppsynth {
+
+// One stage of a run (a class and sigma of the Gabor method; empty for one-shot methods).
+struct StageResult {
+  std::string stage;
+  int iterations = 0;
+  double final_loss = 0;
+  double seconds = 0;
+};
+
+struct SynthesisResult {
+  PointSet initialization;           // the output before optimisation
+  PointSet output;                   // in the unit square, with classes and attributes
+  std::vector<StageResult> stages;   // per stage: iterations, final loss, wall time
+  nlohmann::json stats;              // all the method measured (grid, sigmas, phase times, ...)
+  nlohmann::json metrics;            // evaluate(exemplar, output) when the spec asks, else null
+  double seconds = 0;                // wall time of the synthesis (metrics excluded)
+};
+
+struct SynthesisOptions {
+  bool quick = false;                          // tiny grids, few iterations (tests, --quick)
+  std::vector<SynthesisObserver*> observers;   // told of every stage and iteration
+  const PointSet* initialization = nullptr;    // else the spec's init_file, else the method's initialiser
+  // Checkpoints, for methods that can resume (can_resume): the method hands its state to
+  // save_checkpoint at every stage boundary and every spec "checkpoint_seconds"; with
+  // resume_state (bytes of an earlier save of the same spec, seed and exemplar) it continues
+  // from there; when *stop turns true it saves and throws SynthesisInterrupted.
+  std::function<void(const std::string& state)> save_checkpoint;
+  const std::string* resume_state = nullptr;
+  const std::atomic<bool>* stop = nullptr;
+};
+
+// Runs the spec's method on `exemplar`. Same spec, seed, exemplar and thread count give the
+// same output, bit for bit, resumed or not. Errors are InputError naming the key.
+SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec, const SynthesisOptions& options = {});
+
+// True when the spec's method checkpoints (and so honours SynthesisOptions::stop).
+bool can_resume(const nlohmann::json& spec);
+
+}  // namespace ppsynth

@@ -1,0 +1,28 @@
+# Writes the C++ example of docs/ARCHITECTURE.md (the ```cpp block after the line
+# "<!-- example: compiled and run by the tests -->") to OUT, so the example a reader sees is
+# the code the build compiles and a test runs (tests/optim/test_library_example.cpp).
+# Usage: cmake -DIN=docs/ARCHITECTURE.md -DOUT=file.cpp -P scripts/extract_example.cmake
+file(READ "${IN}" text)
+string(FIND "${text}" "<!-- example: compiled and run by the tests -->" at)
+if(at LESS 0)
+  message(FATAL_ERROR "${IN}: no line '<!-- example: compiled and run by the tests -->'")
+endif()
+string(SUBSTRING "${text}" ${at} -1 text)
+string(FIND "${text}" "```cpp\n" open)
+if(open LESS 0)
+  message(FATAL_ERROR "${IN}: no ```cpp block after the example marker")
+endif()
+math(EXPR open "${open} + 7")
+string(SUBSTRING "${text}" ${open} -1 text)
+string(FIND "${text}" "```" close)
+if(close LESS 0)
+  message(FATAL_ERROR "${IN}: the example's ```cpp block is not closed")
+endif()
+string(SUBSTRING "${text}" 0 ${close} code)
+set(code "// Generated from ${IN} by scripts/extract_example.cmake: edit the document, not this file.\n${code}")
+if(EXISTS "${OUT}")
+  file(READ "${OUT}" old)
+endif()
+if(NOT "${old}" STREQUAL "${code}")
+  file(WRITE "${OUT}" "${code}")
+endif()
