@@ -55,6 +55,14 @@ std::string normalize_output_dir(const std::string& path, const std::string& opt
   return s;
 }
 
+bool run_dir_locked(const std::string& dir) {
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool locked = ::flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+  ::close(fd);  // releases the shared lock if we got it
+  return locked;
+}
+
 nlohmann::json run_dir_marker(const std::string& dir) {
   std::ifstream in(dir + "/" + kMarker);
   if (!in) return nullptr;

@@ -42,6 +42,9 @@ enum class RunDirState {
   Foreign,     // a file, or a directory that is not ppsynth's
 };
 RunDirState run_dir_state(const std::string& dir);
+// True while a process holds the directory open through RunDirectory (its advisory lock):
+// an unfinished run that is locked is running, one that is not was interrupted.
+bool run_dir_locked(const std::string& dir);
 // The marker's JSON, or null when there is none (or it is unreadable).
 nlohmann::json run_dir_marker(const std::string& dir);
 

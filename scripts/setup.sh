@@ -18,6 +18,7 @@ PACKAGES=(
   libcairo2-dev           # PNG / SVG / PDF plots
   clang-14 libclang-rt-14-dev  # libFuzzer and the sanitizer runtimes (scripts/fuzz.sh)
   llvm-14                 # llvm-symbolizer: file:line in sanitizer reports
+  munge slurmctld slurmd slurm-client  # a single-node SLURM cluster for the sweep tests (scripts/slurm_cluster.sh)
 )
 
 need=()

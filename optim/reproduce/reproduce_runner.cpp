@@ -7,6 +7,8 @@
 #include <map>
 
 #include "optim/reproduce/report_writer.hpp"
+#include "optim/sweep/sweep_executors.hpp"
+#include "optim/sweep/sweep_runs.hpp"
 #include "optim/reproduce/reproduce_gabor_maps.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/run/run_synthesis.hpp"
@@ -247,10 +249,48 @@ ReproduceConfig select_panels(const ReproduceConfig& c, const std::vector<std::s
   return r;
 }
 
+// Every synthesised column of the selected panels over the seeds, as a sweep planned and run
+// here (or only planned). Returns the sweep's directory once every run of it is done.
+std::string run_seed_sweep(const ReproduceConfig& c, const ReproduceOptions& o) {
+  if (c.source.empty()) throw InputError("--seeds: the figure config must be a file (a sweep names it)");
+  json spec = {{"name", c.name + "-seeds"}, {"figures", {c.source}}, {"seeds", o.seeds}, {"quick", o.quick}, {"set", o.overrides}};
+  std::vector<std::string> panels;
+  for (const auto& p : c.panels) panels.push_back(p.name);
+  if (!o.panels.empty()) spec["panels"] = panels;
+  if (o.seeds.find(',') != std::string::npos) {
+    spec["seeds"] = json::array();
+    for (size_t a = 0, b; a <= o.seeds.size(); a = b + 1) {
+      b = o.seeds.find(',', a);
+      if (b == std::string::npos) b = o.seeds.size();
+      const std::string one = o.seeds.substr(a, b - a);
+      if (!one.empty() && one.find_first_not_of("0123456789") == std::string::npos) spec["seeds"].push_back(std::stoull(one));
+      else spec["seeds"].push_back(one);
+    }
+  } else if (!o.seeds.empty() && o.seeds.find_first_not_of("0123456789") == std::string::npos) {
+    spec["seeds"] = std::stoull(o.seeds);
+  }
+  const std::string dir = o.sweep_dir.empty() ? "sweeps/" + c.name + (o.quick ? "-quick" : "") : o.sweep_dir;
+  const PlanSummary plan = plan_sweep(expand_sweep_spec(spec, c.source, fs::path(c.source).parent_path().string()), dir);
+  spdlog::info("[{}] over seeds {}: {} runs in the sweep {}", c.name, o.seeds, plan.rows, plan.dir);
+  if (o.plan_only) return plan.dir;
+  if (o.task_binary.empty()) throw InputError("--seeds: no executable to run the sweep's tasks with");
+  LocalExecution how;
+  how.binary = o.task_binary;
+  how.jobs = o.jobs;
+  execute_local(plan.dir, how, nullptr);
+  size_t open = 0;
+  for (const auto& st : sweep_status(plan.dir, load_sweep(plan.dir))) open += st.state == RowState::Done ? 0 : 1;
+  if (open > 0)
+    throw InputError(std::to_string(open) + " run(s) of the sweep " + plan.dir + " did not finish; see `ppsynth sweep status " +
+                     plan.dir + "` and its logs/, then run this again (finished runs are kept)");
+  return plan.dir;
+}
+
 }  // namespace
 
-ReproduceResult run_reproduction(const ReproduceConfig& config, const ReproduceOptions& o) {
-  const ReproduceConfig c = select_panels(config, o.panels);
+ReproduceResult run_reproduction(const ReproduceConfig& config, const ReproduceOptions& options) {
+  const ReproduceConfig c = select_panels(config, options.panels);
+  ReproduceOptions o = options;
   const auto t0 = Clock::now();
   try {
     check_reproduce_runs(c, o.overrides);  // a bad --set fails before anything is written
@@ -260,6 +300,11 @@ ReproduceResult run_reproduction(const ReproduceConfig& config, const ReproduceO
   }
   ReproduceResult res;
   res.quick = o.quick;
+  if (!o.seeds.empty()) {
+    res.sweep_dir = run_seed_sweep(c, o);
+    if (o.plan_only) return res;
+    o.reuse.push_back(res.sweep_dir + "/runs");  // the panels show the config seed's runs
+  }
   RunDirOptions dir_options;
   dir_options.kind = "report";
   dir_options.force = o.force;
@@ -271,6 +316,10 @@ ReproduceResult run_reproduction(const ReproduceConfig& config, const ReproduceO
       res.panels.emplace_back();
       run_panel(c, p, o, res.dir, res.panels.back());
       spdlog::info("[{}] panel {} done in {:.1f} s", c.name, p.name, res.panels.back().seconds);
+    }
+    if (!res.sweep_dir.empty()) {
+      res.seeds = gather_runs({res.sweep_dir}, GatherOptions{});
+      write_gather(res.seeds, res.dir + "/seeds", false);
     }
     res.seconds = since(t0);
     write_reproduce_report(c, res, o);

@@ -19,8 +19,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "optim/reproduce/reproduce_config.hpp"
 #include "core/point_set.hpp"
+#include "optim/reproduce/reproduce_config.hpp"
+#include "optim/sweep/gather.hpp"
 
 namespace ppsynth {
 
@@ -32,8 +33,16 @@ struct ReproduceOptions {
   // Finished run directories to reuse (find_matching_run): a synthesised column whose resolved
   // config equals one of theirs is copied into the report instead of being run again.
   std::vector<std::string> reuse;
-  // Only these panels (by name; all when empty). The report says which ones were left out.
+  // Only these panels (by name; all when empty). The report says which were left out.
   std::vector<std::string> panels;
+  // Over seeds: "95-99" or "95,97" runs every synthesised column with each seed as a sweep
+  // (optim/sweep: plan -> execute -> gather) and adds the statistics over seeds to the report;
+  // the panels show the runs of the config's own seed when it is one of them. "" = one seed.
+  std::string seeds;
+  std::string sweep_dir;    // the sweep's directory (default sweeps/<name>, sweeps/<name>-quick)
+  int jobs = 1;             // its tasks at once, here
+  std::string task_binary;  // the ppsynth executable that runs its tasks (`ppsynth sweep task`)
+  bool plan_only = false;   // plan the sweep and return (run it elsewhere: `ppsynth sweep run DIR --slurm`)
 };
 
 struct ColumnResult {
@@ -61,13 +70,15 @@ struct PanelResult {
 };
 
 struct ReproduceResult {
-  std::string dir;        // the final report directory
+  std::string dir;        // the final report directory ("" after plan_only)
+  std::string sweep_dir;  // the sweep over seeds ("" without --seeds)
+  GatherResult seeds;     // its statistics (gathered into <dir>/seeds)
   std::vector<PanelResult> panels;
   double seconds = 0;
   bool quick = false;
 };
 
-// Runs every panel and writes the report. Returns after the rename to `dir`.
+// Runs every panel and writes the report (with --seeds, after the sweep over seeds finished).
 ReproduceResult run_reproduction(const ReproduceConfig& config, const ReproduceOptions& options);
 
 // Sum of the optimisation iterations a method reported in its stats (Gabor: per stage).

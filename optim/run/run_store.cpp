@@ -49,13 +49,6 @@ void plot_pcf(const std::string& path, const nlohmann::json& m) {
   else if (!plots.empty()) plot_curve_grid(path, plots, std::min<int>(3, static_cast<int>(plots.size())));
 }
 
-// The keys that decide a synthesis, without the exemplar's file name: exemplars are
-// compared by content (a generated exemplar lives in each report's own folder).
-nlohmann::json synthesis_key(nlohmann::json c) {
-  for (const char* k : {"name", "description", "snapshots", "evaluate", "exemplar", "format", "checkpoint_seconds"}) c.erase(k);
-  return c;
-}
-
 // The exemplar a finished run synthesised from: its own copy, else the config's file.
 PointSet run_exemplar(const std::string& dir, const nlohmann::json& config) {
   const std::string copy = dir + "/exemplar.txt";
@@ -83,6 +76,11 @@ std::string note_threads(const std::string& dir) {
 }
 
 }  // namespace
+
+nlohmann::json synthesis_key(nlohmann::json c) {
+  for (const char* k : {"name", "description", "snapshots", "evaluate", "exemplar", "format", "checkpoint_seconds"}) c.erase(k);
+  return c;
+}
 
 nlohmann::json read_run_json(const std::string& path) {
   std::ifstream in(path);

@@ -35,6 +35,11 @@ void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const
 // Throws InputError naming the file when something is missing.
 RunOutcome load_run(const std::string& dir);
 
+// The keys of a resolved run config that decide a synthesis: all but those that only label or
+// decorate a run (name, description, snapshots, evaluate, checkpoint_seconds) and the
+// exemplar's file name and format (exemplars are compared by content).
+nlohmann::json synthesis_key(nlohmann::json resolved);
+
 // True when two resolved run configs describe the same synthesis apart from the exemplar:
 // everything but the keys that only label or decorate a run (name, description, snapshots,
 // evaluate, checkpoint_seconds) and the exemplar's file name and format (exemplars are

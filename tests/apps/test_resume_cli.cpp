@@ -12,11 +12,13 @@
 #include "core/formats/text_table.hpp"
 #include "core/run_directory.hpp"
 #include "tests/support/child_process.hpp"
+#include "tests/support/run_compare.hpp"
 #include "tests/support/run_command.hpp"
 #include "tests/support/scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using ppsynth::test::Child;
+using ppsynth::test::check_same_run;
 using ppsynth::test::run_ppsynth;
 
 namespace {
@@ -26,29 +28,6 @@ const std::string kGabor = std::string(PPSYNTH_SOURCE_DIR) + "/configs/runs/";
 // Quick settings with enough iterations per stage to interrupt inside one.
 std::string quick_run(const std::string& config, const std::string& extra = "") {
   return kGabor + config + " --quick --set method.quick.max_iterations=9 --set method.quick.res=16 " + extra;
-}
-
-// loss.csv without the wall-time column.
-std::string losses_without_seconds(const fs::path& csv) {
-  return std::regex_replace(ppsynth::read_file_text(csv.string()), std::regex(",[^,\n]*\n"), "\n");
-}
-
-// Every file of `a` equals `b`'s (run.json and the marker aside; loss.csv without seconds).
-void check_same_run(const fs::path& a, const fs::path& b) {
-  size_t compared = 0;
-  for (auto& e : fs::recursive_directory_iterator(a)) {
-    if (!e.is_regular_file()) continue;
-    const fs::path rel = fs::relative(e.path(), a);
-    const std::string name = rel.filename().string();
-    if (name == "run.json" || name == ".ppsynth-run") continue;
-    INFO(rel.string());
-    REQUIRE(fs::exists(b / rel));
-    if (name == "loss.csv") CHECK(losses_without_seconds(e.path()) == losses_without_seconds(b / rel));
-    else CHECK(ppsynth::read_file_text(e.path().string()) == ppsynth::read_file_text((b / rel).string()));
-    ++compared;
-  }
-  CHECK(compared >= 10);
-  CHECK_FALSE(fs::exists(b / "checkpoint.bin"));  // a finished run keeps no checkpoint
 }
 
 // A line of the progress log: stage `stage` (1-based) has begun / iteration `it` of it ran.

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/formats/text_table.hpp"
+#include "tests/support/run_command.hpp"
 #include "tests/support/scratch_dir.hpp"
 
 namespace fs = std::filesystem;
@@ -15,7 +16,7 @@ namespace fs = std::filesystem;
 namespace {
 
 int run(const std::string& args) {
-  const std::string cmd = std::string(PPSYNTH_BINARY) + " " + args + " > /dev/null 2>&1";
+  const std::string cmd = ppsynth::test::ppsynth_binary() + " " + args + " > /dev/null 2>&1";
   return WEXITSTATUS(std::system(cmd.c_str()));
 }
 

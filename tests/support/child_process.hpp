@@ -10,13 +10,16 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "tests/support/run_command.hpp"
+
 namespace ppsynth::test {
 
 class Child {
  public:
-  // Runs `PPSYNTH_BINARY args` (through the shell, exec'd: the pid is the binary's),
-  // stdout and stderr into one pipe.
-  explicit Child(const std::string& args) {
+  // Runs `ppsynth args` (run_command.hpp: this build's, or PPSYNTH_TEST_BINARY) through the shell, exec'd (the pid is the binary's),
+  // stdout and stderr into one pipe. `env`: assignments for its environment ("PPSYNTH_THREADS=1"),
+  // set through env(1), which execs the binary in its place (the pid stays the binary's).
+  explicit Child(const std::string& args, const std::string& env = "") {
     int fds[2];
     if (::pipe(fds) != 0) return;
     pid_ = ::fork();
@@ -25,7 +28,7 @@ class Child {
       ::dup2(fds[1], 2);
       ::close(fds[0]);
       ::close(fds[1]);
-      const std::string cmd = std::string("exec ") + PPSYNTH_BINARY + " " + args;
+      const std::string cmd = "exec " + (env.empty() ? "" : "env " + env + " ") + ppsynth_binary() + " " + args;
       ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
       ::_exit(127);
     }

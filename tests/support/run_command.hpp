@@ -3,6 +3,7 @@
 // what it printed.
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include <sys/wait.h>
@@ -28,8 +29,15 @@ inline CommandResult run_program(const std::string& binary, const std::string& a
   return r;
 }
 
+// The ppsynth the binary tests run: this build's, or PPSYNTH_TEST_BINARY's (another build, for
+// example an older commit's, to show that a test fails without the fix it guards).
+inline std::string ppsynth_binary() {
+  const char* other = std::getenv("PPSYNTH_TEST_BINARY");
+  return other && *other ? other : PPSYNTH_BINARY;
+}
+
 inline CommandResult run_ppsynth(const std::string& args, const std::string& prefix = "") {
-  return run_program(PPSYNTH_BINARY, args, prefix);
+  return run_program(ppsynth_binary(), args, prefix);
 }
 
 }  // namespace ppsynth::test

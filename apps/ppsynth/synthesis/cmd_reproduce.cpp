@@ -1,4 +1,4 @@
-// `ppsynth reproduce NAME [--quick] [--out DIR] [--set key=value ...]`
+// `ppsynth reproduce NAME [--quick] [--out DIR] [--set key=value ...] [--seeds 95-99 [-j N] [--plan-only]]`
 // `ppsynth reproduce --list` | `ppsynth reproduce --check [NAME...]`
 // Re-runs a published experiment (a figure, table or ablation of Huang et al. 2022) from its
 // config in configs/paper/ and writes a self-contained report (reports/NAME/index.html, plus
@@ -15,8 +15,9 @@ namespace {
 
 struct Opts {
   std::vector<std::string> names, sets, reuse, panels;
-  std::string out;
-  bool quick = false, list = false, check = false, force = false;
+  std::string out, seeds, sweep;
+  bool quick = false, list = false, check = false, force = false, plan_only = false;
+  int jobs = 1;
 };
 
 ppsynth::app::RunFn setup(CLI::App& app) {
@@ -31,6 +32,12 @@ ppsynth::app::RunFn setup(CLI::App& app) {
                  "reuse finished run directories (DIR or its subdirectories, e.g. runs/) whose resolved config equals a column's");
   app.add_option("--panels", o->panels, "run only these panels (the report says which were left out)");
   app.add_option("--set", o->sets, "override a key of every panel's run config: key.path=value (method.* keys: ours only)");
+  app.add_option("--seeds", o->seeds, "every synthesised column over these seeds (\"95-99\" or \"95,97\"), as a sweep; "
+                                      "the report adds the statistics over seeds");
+  app.add_option("--sweep", o->sweep, "the sweep's directory (default sweeps/NAME)");
+  app.add_option("-j,--jobs", o->jobs, "the sweep's runs at once, here (--seeds)")->check(CLI::PositiveNumber);
+  app.add_flag("--plan-only", o->plan_only, "plan the sweep (--seeds) and stop: run it with `ppsynth sweep run DIR --slurm`, "
+                                            "then run this command again to write the report");
   return [o]() {
     using namespace ppsynth;
     namespace fs = std::filesystem;
@@ -64,7 +71,18 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     ro.overrides = o->sets;
     ro.reuse = o->reuse;
     ro.panels = o->panels;
+    ro.seeds = o->seeds;
+    ro.sweep_dir = o->sweep;
+    ro.jobs = o->jobs;
+    ro.plan_only = o->plan_only;
+    ro.task_binary = fs::read_symlink("/proc/self/exe").string();
+    if (o->plan_only && o->seeds.empty()) throw InputError("--plan-only plans the sweep of --seeds; give --seeds");
     auto res = run_reproduction(config, ro);
+    if (o->plan_only) {
+      std::cout << "planned " << res.sweep_dir << "\nrun it with: ppsynth sweep run " << res.sweep_dir
+                << " --slurm (or --local -j N), then this command again without --plan-only\n";
+      return 0;
+    }
     std::cout << res.dir << "/index.html\n";
     return 0;
   };

@@ -8,40 +8,15 @@
 #include <iostream>
 
 #include "apps/ppsynth/command.hpp"
+#include "apps/ppsynth/stop_signals.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/run/run_synthesis.hpp"
 #include "optim/run/synthesize.hpp"
 #include "core/config/config.hpp"
 #include "core/error.hpp"
+#include "core/shell_quote.hpp"
 
 namespace {
-
-std::atomic<bool> g_stop{false};
-volatile std::sig_atomic_t g_signal = 0;
-
-extern "C" void request_stop(int sig) {
-  g_signal = sig;
-  g_stop = true;
-}
-
-// SIGINT / SIGTERM: stop at the end of the iteration; the handler is reset after the first
-// signal, so a second one ends the process at once.
-void install_stop_handlers() {
-  struct sigaction sa {};
-  sa.sa_handler = request_stop;
-  sa.sa_flags = SA_RESETHAND;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, nullptr);
-  sigaction(SIGTERM, &sa, nullptr);
-}
-
-std::string shell_quoted(const std::string& s) {
-  if (!s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-./") == std::string::npos)
-    return s;
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
 
 struct Opts {
   std::string config, exemplar, out, method, init, format, resume;
@@ -69,13 +44,13 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     req.dir = o->out;
     req.quick = o->quick;
     req.force = o->force;
-    req.stop = &g_stop;
+    req.stop = ppsynth::app::stop_flag();
     try {
       if (!o->resume.empty()) {
         if (!o->config.empty() || !o->exemplar.empty() || !o->out.empty() || !o->sets.empty() || o->force || o->seed >= 0 ||
             !o->method.empty() || !o->init.empty() || !o->format.empty() || o->quick)
           throw InputError("--resume takes the run directory alone: its config, seed and settings are the run's own");
-        install_stop_handlers();
+        ppsynth::app::install_stop_handlers();
         std::cout << resume_synthesis(o->resume, req).dir << "\n";
         return 0;
       }
@@ -86,14 +61,13 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     if (o->seed >= 0) c["seed"] = o->seed;
     if (!o->init.empty()) c["init_file"] = o->init;
       auto resolved = resolve_run_config(c, o->sets);
-      if (can_resume(resolved)) install_stop_handlers();  // others stop at once, as without handlers
+      if (can_resume(resolved)) ppsynth::app::install_stop_handlers();  // others stop at once, as without handlers
       std::cout << run_synthesis(resolved, req).dir << "\n";
       return 0;
     } catch (const RunInterrupted& e) {
-      const char* name = g_signal == SIGTERM ? "SIGTERM" : "SIGINT";
-      std::cerr << "ppsynth synthesize: stopped by " << name << " at the end of an iteration; the checkpoint is in " << e.dir
-                << ". Continue with:\n  ppsynth synthesize --resume " << shell_quoted(e.dir) << "\n";
-      return 128 + (g_signal == SIGTERM ? SIGTERM : SIGINT);
+      std::cerr << "ppsynth synthesize: stopped by " << ppsynth::app::stop_signal_name() << " at the end of an iteration; the checkpoint is in " << e.dir
+                << ". Continue with:\n  ppsynth synthesize --resume " << ppsynth::shell_quoted(e.dir) << "\n";
+      return ppsynth::app::exit_code_for_stop();
     }
   };
 }

@@ -1,0 +1,44 @@
+// `ppsynth gather DIR... [-o OUT] [--reference FILE] [--bound B] [--force]`
+// Statistics over seeds of every finished run under the directories (sweeps, run directories,
+// folders of them): prints the table; with -o writes gather.csv, gather.md, gather.json,
+// per_seed.csv and index.html (strip plots). The library: optim/sweep/gather.hpp.
+#include <iostream>
+
+#include "apps/ppsynth/command.hpp"
+#include "core/error.hpp"
+#include "optim/sweep/gather.hpp"
+
+namespace {
+
+struct Opts {
+  std::vector<std::string> dirs;
+  std::string out, reference;
+  double bound = 1.25;
+  bool force = false;
+};
+
+ppsynth::app::RunFn setup(CLI::App& cmd) {
+  auto o = std::make_shared<Opts>();
+  cmd.add_option("dirs", o->dirs, "sweep directories, run directories, or folders of them")->required();
+  cmd.add_option("-o,--out", o->out, "write the tables, JSON and HTML page here (new or empty directory)");
+  cmd.add_flag("--force", o->force, "replace an earlier gather's directory");
+  cmd.add_option("--reference", o->reference, "a point file (e.g. the published output) evaluated against each group's exemplar");
+  cmd.add_option("--bound", o->bound, "a seed is within when its value <= BOUND x the reference's (default 1.25)");
+  return [o]() -> int {
+    ppsynth::GatherOptions opts;
+    opts.reference = o->reference;
+    opts.bound = o->bound;
+    const auto r = ppsynth::gather_runs(o->dirs, opts);
+    if (r.runs.empty()) throw ppsynth::InputError("gather: no finished run under the given directories");
+    std::cout << ppsynth::format_gather(r);
+    if (!o->out.empty()) {
+      ppsynth::write_gather(r, o->out, o->force);
+      std::cout << o->out << "/index.html\n";
+    }
+    return 0;
+  };
+}
+
+}  // namespace
+
+PPSYNTH_COMMAND("gather", "statistics over seeds of finished runs (sweeps, run directories): tables and plots", setup)

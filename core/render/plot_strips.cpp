@@ -1,0 +1,166 @@
+#include "core/render/plot_strips.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/metrics/summary_stats.hpp"
+#include "core/render/canvas.hpp"
+#include "core/render/palette.hpp"
+#include "core/render/plot_frame.hpp"
+
+namespace ppsynth {
+namespace {
+
+using namespace render;
+
+constexpr double kPad = 12;
+constexpr double kTitleFont = 14.5;
+constexpr double kLabelFont = 12.5;
+constexpr double kTickFont = 11;
+constexpr double kColumn = 120;  // px per group
+constexpr double kMaxAbs = 1e150;  // as plot_curves: larger values would overflow the axis arithmetic
+
+bool usable(double v) { return std::isfinite(v) && std::abs(v) <= kMaxAbs; }
+
+// `text` cut to `width` px with an ellipsis.
+std::string fitted(const std::string& text, double width, double font) {
+  if (measure_text(text, font) <= width) return text;
+  std::string s = text;
+  while (!s.empty() && measure_text(s + "...", font) > width) s.pop_back();
+  return s + "...";
+}
+
+// A fixed, evenly spread horizontal offset per dot (no random jitter: the same data give the
+// same picture), so equal values side by side stay visible.
+double dot_offset(size_t i, size_t n, double half_width) {
+  if (n <= 1) return 0;
+  return half_width * (2.0 * static_cast<double>(i) / static_cast<double>(n - 1) - 1.0);
+}
+
+}  // namespace
+
+void plot_strips(const std::string& path, const StripPlot& plot, int height_px) {
+  const size_t n = plot.groups.size();
+  const int width = static_cast<int>(std::max(360.0, 2 * kPad + 70 + kColumn * static_cast<double>(std::max<size_t>(n, 1))));
+
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  auto include = [&](double v) {
+    if (usable(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+  };
+  for (const auto& g : plot.groups)
+    for (double v : g.values) include(v);
+  if (plot.reference) include(*plot.reference);
+  if (plot.bound) include(*plot.bound);
+  if (!(lo <= hi)) lo = 0, hi = 1;
+  if (lo >= 0 && lo < 0.5 * hi) lo = 0;  // errors and distances: an axis from 0 shows ratios honestly
+  if (hi - lo <= std::abs(hi) * 1e-12) {
+    const double w = std::max(0.5, std::abs(lo) * 1e-3);
+    lo -= w, hi += w;
+  }
+  std::vector<double> yt = nice_ticks(lo, hi, 5);
+  const double step = yt.size() >= 2 ? yt[1] - yt[0] : hi - lo;
+  lo = std::floor(lo / step + 1e-9) * step;
+  hi = std::ceil(hi / step - 1e-9) * step;
+  if (hi <= lo) hi = lo + step;
+  yt = nice_ticks(lo, hi, 5);
+
+  render_to_file(path, width, height_px, [&](cairo_t* cr) {
+    double ytw = 0;
+    for (double t : yt) ytw = std::max(ytw, measure_text(tick_label(t), kTickFont));
+    std::vector<LegendItem> legend;
+    if (plot.reference) legend.push_back({plot.reference_label.empty() ? "reference" : plot.reference_label, kText, Marker::Line});
+    if (plot.bound) legend.push_back({plot.bound_label.empty() ? "bound" : plot.bound_label, kText, Marker::DashedLine});
+    const double left = kPad + (plot.ylabel.empty() ? 0 : kLabelFont * 1.5) + ytw + 8;
+    const double right = width - kPad;
+    const double top = plot.title.empty() ? kPad : kTitleFont * 2.2;
+    const double leg_h = legend.empty() ? 0 : legend_height(legend, right - left, 12);
+    const double bottom = height_px - kPad - leg_h - 2 * kTickFont * 1.5;
+    const double pw = right - left, ph = bottom - top;
+    if (pw < 10 || ph < 10) return;
+    auto Y = [&](double v) { return bottom - (std::clamp(v, lo, hi) - lo) / (hi - lo) * ph; };
+    const double col = pw / static_cast<double>(std::max<size_t>(n, 1));
+
+    set_color(cr, kText);
+    if (!plot.title.empty()) draw_text(cr, plot.title, left, kTitleFont * 1.5, kTitleFont, HAlign::Left, VAlign::Baseline, true);
+    if (!plot.ylabel.empty())
+      draw_text(cr, plot.ylabel, kPad, top + ph / 2, kLabelFont, HAlign::Center, VAlign::Top, false, -M_PI / 2);
+    cairo_set_line_width(cr, 1);
+    for (double t : yt) {
+      set_color(cr, kGrid);
+      cairo_move_to(cr, left, std::round(Y(t)) + 0.5);
+      cairo_line_to(cr, right, std::round(Y(t)) + 0.5);
+      cairo_stroke(cr);
+      set_color(cr, kText);
+      draw_text(cr, tick_label(t), left - 6, Y(t), kTickFont, HAlign::Right, VAlign::Middle);
+    }
+
+    for (size_t g = 0; g < n; ++g) {
+      const auto& group = plot.groups[g];
+      const double cx = left + col * (static_cast<double>(g) + 0.5);
+      std::vector<double> finite;
+      for (double v : group.values)
+        if (usable(v)) finite.push_back(v);
+      const Summary s = summarize(finite);
+      const Rgb c = class_color(static_cast<int>(g));
+      const double bw = std::min(col * 0.5, 60.0);
+      if (s.count > 0) {
+        set_color(cr, kAxis);  // whiskers
+        cairo_move_to(cr, cx, Y(s.min));
+        cairo_line_to(cr, cx, Y(s.q1));
+        cairo_move_to(cr, cx, Y(s.q3));
+        cairo_line_to(cr, cx, Y(s.max));
+        cairo_stroke(cr);
+        set_color(cr, c, 0.18);  // the box from q1 to q3
+        cairo_rectangle(cr, cx - bw / 2, Y(s.q3), bw, std::max(1.0, Y(s.q1) - Y(s.q3)));
+        cairo_fill_preserve(cr);
+        set_color(cr, c, 0.9);
+        cairo_stroke(cr);
+        cairo_set_line_width(cr, 2.5);  // the median
+        cairo_move_to(cr, cx - bw / 2, Y(s.median));
+        cairo_line_to(cr, cx + bw / 2, Y(s.median));
+        cairo_stroke(cr);
+        cairo_set_line_width(cr, 1);
+      }
+      for (size_t i = 0; i < finite.size(); ++i) {  // one dot per sample, over the box
+        const double x = cx + dot_offset(i, finite.size(), bw * 0.35);
+        cairo_arc(cr, x, Y(finite[i]), 3.5, 0, 2 * M_PI);
+        set_color(cr, c);
+        cairo_fill_preserve(cr);
+        set_color(cr, {1, 1, 1});
+        cairo_stroke(cr);
+      }
+      set_color(cr, kText);
+      const std::string label = fitted(group.label, col - 6, kTickFont);
+      draw_text(cr, label, cx, bottom + 5, kTickFont, HAlign::Center, VAlign::Top);
+      std::string count = "n = " + std::to_string(s.count);
+      if (group.values.size() > s.count) count += " (" + std::to_string(group.values.size() - s.count) + " not finite)";
+      draw_text(cr, fitted(count, col - 6, kTickFont * 0.9), cx, bottom + 5 + kTickFont * 1.4, kTickFont * 0.9, HAlign::Center,
+                VAlign::Top);
+    }
+
+    auto hline = [&](double v, bool dashed) {
+      if (!usable(v)) return;
+      cairo_save(cr);
+      set_color(cr, kText, 0.8);
+      cairo_set_line_width(cr, 1.2);
+      if (dashed) {
+        const double dash[] = {5, 4};
+        cairo_set_dash(cr, dash, 2, 0);
+      }
+      cairo_move_to(cr, left, Y(v));
+      cairo_line_to(cr, right, Y(v));
+      cairo_stroke(cr);
+      cairo_restore(cr);
+    };
+    if (plot.reference) hline(*plot.reference, false);
+    if (plot.bound) hline(*plot.bound, true);
+
+    set_color(cr, kAxis);
+    cairo_rectangle(cr, std::round(left) + 0.5, std::round(top) + 0.5, std::round(pw), std::round(ph));
+    cairo_stroke(cr);
+    if (!legend.empty()) draw_legend(cr, legend, left, height_px - kPad - leg_h, right - left, 12);
+  });
+}
+
+}  // namespace ppsynth

@@ -1,0 +1,316 @@
+#include "optim/sweep/gather.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/formats/point_io.hpp"
+#include "core/metrics/evaluation.hpp"
+#include "core/metrics/summary_stats.hpp"
+#include "core/paths.hpp"
+#include "core/render/plot_strips.hpp"
+#include "core/report/html_report.hpp"
+#include "core/run_directory.hpp"
+#include "optim/run/run_store.hpp"
+#include "optim/sweep/sweep_plan.hpp"
+
+namespace fs = std::filesystem;
+
+namespace ppsynth {
+
+namespace {
+
+struct Found {
+  std::string dir, group, group_label;
+};
+
+// The numbers of one evaluation (metrics.json), as "<scope>/<metric>".
+std::vector<std::pair<std::string, double>> metric_values(const nlohmann::json& m) {
+  std::vector<std::pair<std::string, double>> v;
+  auto add = [&](const std::string& key, const nlohmann::json& x) {
+    if (x.is_number()) v.push_back({key, x.get<double>()});
+  };
+  auto patch = [&](const std::string& scope, const nlohmann::json& p) {
+    add(scope + "/pcf_mse", p.value("pcf_mse", nlohmann::json()));
+    add(scope + "/wasserstein", p.value("wasserstein", nlohmann::json()));
+    add(scope + "/wasserstein_estimate", p.value("wasserstein_estimate", nlohmann::json()));
+    add(scope + "/chamfer", p.value("chamfer", nlohmann::json()));
+  };
+  if (m.contains("all")) patch("all", m["all"]);
+  if (m.contains("output")) {
+    add("all/relative_radius", m["output"].value("relative_radius", nlohmann::json()));
+    add("all/border_fraction", m["output"].value("border_fraction", nlohmann::json()));
+  }
+  for (const auto& c : m.value("classes", nlohmann::json::array())) patch("class " + c["class"].dump(), c);
+  for (const auto& c : m.value("cross", nlohmann::json::array()))
+    add("classes " + c["ci"].dump() + "-" + c["cj"].dump() + "/pcf_mse", c.value("pcf_mse", nlohmann::json()));
+  return v;
+}
+
+// The group of a run directory made outside a sweep: its config without the seed (the same
+// key a sweep's plan uses, so both pool together).
+Found loose_run(const std::string& dir) {
+  const nlohmann::json config = read_run_json(dir + "/config.json");
+  nlohmann::json key = synthesis_key(config);
+  key.erase("seed");
+  key["exemplar"] = config["exemplar"];
+  key["quick"] = read_run_json(dir + "/run.json").value("quick", false);
+  return {dir, json_id(key), run_name(config) + " (" + config["method"].value("type", std::string("?")) + ")"};
+}
+
+void discover(const std::string& dir, std::vector<Found>& found, std::vector<std::string>& unfinished, int depth) {
+  if (fs::is_regular_file(fs::path(dir) / "manifest.json")) {
+    for (const auto& row : load_sweep(dir).rows) {
+      const std::string d = (fs::path(dir) / row.dir).string();
+      if (run_dir_state(d) == RunDirState::Complete) found.push_back({d, row.group, row.group_label});
+      else unfinished.push_back(d);
+    }
+    return;
+  }
+  switch (run_dir_state(dir)) {
+    case RunDirState::Complete:
+      if (run_dir_marker(dir).value("kind", "run") == "run") found.push_back(loose_run(dir));
+      return;
+    case RunDirState::Unfinished:
+      unfinished.push_back(dir);
+      return;
+    default:
+      break;
+  }
+  if (depth > 0 || !fs::is_directory(dir)) return;
+  std::vector<std::string> subdirs;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.is_directory()) subdirs.push_back(e.path().string());
+  std::sort(subdirs.begin(), subdirs.end());
+  for (const auto& d : subdirs) discover(d, found, unfinished, depth + 1);
+}
+
+std::pair<std::string, std::string> split_key(const std::string& key) {
+  const size_t slash = key.rfind('/');
+  return {key.substr(0, slash), key.substr(slash + 1)};
+}
+
+}  // namespace
+
+GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptions& options) {
+  if (dirs.empty()) throw InputError("gather: name at least one sweep or run directory");
+  if (!(options.bound > 0)) throw InputError("--bound: expected a number > 0");
+  GatherResult r;
+  r.options = options;
+  std::vector<Found> found;
+  for (const auto& d : dirs) {
+    if (!fs::is_directory(d)) throw InputError(d + ": not a directory");
+    discover(d, found, r.unfinished, 0);
+  }
+  std::set<std::string> seen;
+  for (const Found& f : found) {
+    const std::string canonical = fs::weakly_canonical(f.dir).string();
+    if (!seen.insert(canonical).second) continue;  // named twice
+    if (!fs::exists(f.dir + "/metrics.json")) {
+      r.unfinished.push_back(f.dir + " (no metrics.json: evaluate was off)");
+      continue;
+    }
+    GatheredRun run{f.dir, f.group, f.group_label, 0, metric_values(read_run_json(f.dir + "/metrics.json"))};
+    const nlohmann::json info = read_run_json(f.dir + "/run.json");
+    run.seed = info.value("seed", uint64_t{0});
+    run.values.push_back({"run/seconds", info.value("total_seconds", 0.0)});
+    r.runs.push_back(std::move(run));
+  }
+  std::sort(r.runs.begin(), r.runs.end(), [](const GatheredRun& a, const GatheredRun& b) {
+    return std::tie(a.group_label, a.group, a.seed, a.dir) < std::tie(b.group_label, b.group, b.seed, b.dir);
+  });
+  // group -> key -> summary, keys in first-seen order
+  std::map<std::string, std::vector<MetricSummary>> by_group;
+  std::vector<std::string> group_order;
+  for (const auto& run : r.runs) {
+    auto& list = by_group[run.group];
+    if (list.empty()) group_order.push_back(run.group);
+    for (const auto& [key, value] : run.values) {
+      const auto [scope, metric] = split_key(key);
+      auto it = std::find_if(list.begin(), list.end(), [&](const MetricSummary& s) { return s.scope == scope && s.metric == metric; });
+      if (it == list.end()) {
+        list.push_back(MetricSummary{run.group, run.group_label, scope, metric, {}, {}});
+        it = std::prev(list.end());
+      }
+      it->values.push_back(value);
+      it->seeds.push_back(run.seed);
+    }
+  }
+  for (const auto& g : group_order) {
+    std::map<std::string, double> ref;
+    if (!options.reference.empty()) {
+      const auto first = std::find_if(r.runs.begin(), r.runs.end(), [&](const GatheredRun& x) { return x.group == g; });
+      const PointSet exemplar = load_run(first->dir).exemplar;
+      for (const auto& [k, v] : metric_values(evaluate(exemplar, read_points(resolve_data_path(options.reference))))) ref[k] = v;
+    }
+    for (auto& s : by_group[g]) {
+      const Summary sum = summarize(s.values);
+      s.median = sum.median, s.q1 = sum.q1, s.q3 = sum.q3, s.min = sum.min, s.max = sum.max;
+      const auto it = ref.find(s.scope + "/" + s.metric);
+      if (it != ref.end()) {
+        s.reference = it->second;
+        if (it->second != 0) s.ratio = s.median / it->second;
+        const auto within = std::count_if(s.values.begin(), s.values.end(), [&](double v) { return v <= options.bound * it->second; });
+        s.within = static_cast<double>(within) / static_cast<double>(s.values.size());
+      }
+      r.summaries.push_back(s);
+    }
+  }
+  return r;
+}
+
+namespace {
+
+std::string num(double v, const char* fmt = "%.6g") {
+  if (!std::isfinite(v)) return "-";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, v);
+  return buf;
+}
+std::string opt(const std::optional<double>& v, const char* fmt = "%.6g") { return v ? num(*v, fmt) : ""; }
+
+std::vector<std::string> summary_header() {
+  return {"group", "scope", "metric", "n", "median", "q1", "q3", "min", "max", "reference", "median / reference", "share within bound"};
+}
+
+std::vector<std::vector<std::string>> summary_rows(const GatherResult& r) {
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& s : r.summaries)
+    rows.push_back({s.group_label, s.scope, s.metric, std::to_string(s.values.size()), num(s.median), num(s.q1), num(s.q3),
+                    num(s.min), num(s.max), opt(s.reference), opt(s.ratio, "%.3f"), opt(s.within, "%.2f")});
+  return rows;
+}
+
+// One row per run, one column per "<scope>/<metric>" (in first-seen order).
+std::pair<std::vector<std::string>, std::vector<std::vector<std::string>>> per_seed_table(const GatherResult& r) {
+  std::vector<std::string> keys;
+  for (const auto& run : r.runs)
+    for (const auto& [k, v] : run.values)
+      if (std::find(keys.begin(), keys.end(), k) == keys.end()) keys.push_back(k);
+  std::vector<std::string> header = {"group", "seed", "run directory"};
+  header.insert(header.end(), keys.begin(), keys.end());
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& run : r.runs) {
+    std::vector<std::string> row = {run.group_label, std::to_string(run.seed), run.dir};
+    for (const auto& k : keys) {
+      const auto it = std::find_if(run.values.begin(), run.values.end(), [&](const auto& kv) { return kv.first == k; });
+      row.push_back(it == run.values.end() ? "" : num(it->second));
+    }
+    rows.push_back(row);
+  }
+  return {header, rows};
+}
+
+nlohmann::json to_json(const GatherResult& r) {
+  nlohmann::json runs = nlohmann::json::array(), sums = nlohmann::json::array();
+  for (const auto& run : r.runs) {
+    nlohmann::json v = nlohmann::json::object();
+    for (const auto& [k, x] : run.values) v[k] = x;
+    runs.push_back({{"dir", run.dir}, {"group", run.group}, {"group_label", run.group_label}, {"seed", run.seed}, {"values", v}});
+  }
+  auto optional = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); };
+  for (const auto& s : r.summaries)
+    sums.push_back({{"group", s.group}, {"group_label", s.group_label}, {"scope", s.scope}, {"metric", s.metric},
+                    {"n", s.values.size()}, {"values", s.values}, {"seeds", s.seeds}, {"median", s.median}, {"q1", s.q1},
+                    {"q3", s.q3}, {"min", s.min}, {"max", s.max}, {"reference", optional(s.reference)},
+                    {"ratio_of_medians", optional(s.ratio)}, {"share_within_bound", optional(s.within)}});
+  return {{"reference", r.options.reference}, {"bound", r.options.bound}, {"runs", runs}, {"summaries", sums},
+          {"left_out", r.unfinished}};
+}
+
+// One strip plot per scope and metric, a column per group.
+std::vector<std::pair<std::string, std::string>> write_plots(const GatherResult& r, const std::string& dir) {
+  std::vector<std::pair<std::string, std::string>> keys;  // scope, metric in first-seen order
+  for (const auto& s : r.summaries)
+    if (std::find(keys.begin(), keys.end(), std::make_pair(s.scope, s.metric)) == keys.end()) keys.push_back({s.scope, s.metric});
+  std::vector<std::pair<std::string, std::string>> images;
+  fs::create_directories(dir + "/plots");
+  for (const auto& [scope, metric] : keys) {
+    StripPlot plot;
+    plot.title = scope + ": " + metric;
+    plot.ylabel = metric;
+    std::set<double> refs;
+    for (const auto& s : r.summaries)
+      if (s.scope == scope && s.metric == metric) {
+        plot.groups.push_back(StripGroup{s.group_label, s.values});
+        if (s.reference) refs.insert(*s.reference);
+      }
+    if (refs.size() == 1) {  // one reference value for every group: draw it and the bound
+      plot.reference = *refs.begin();
+      plot.reference_label = "reference";
+      plot.bound = r.options.bound * *refs.begin();
+      plot.bound_label = num(r.options.bound, "%g") + " x reference";
+    }
+    std::string file = scope + "_" + metric;
+    for (char& c : file)
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') c = '_';
+    const std::string png = dir + "/plots/" + file + ".png";
+    plot_strips(png, plot);
+    images.push_back({png, plot.title});
+  }
+  return images;
+}
+
+}  // namespace
+
+std::string format_gather(const GatherResult& r) {
+  std::string s;
+  char line[512];
+  std::snprintf(line, sizeof line, "%-40s %-12s %-22s %3s %11s %11s %11s %9s %7s\n", "group", "scope", "metric", "n", "median",
+                "q1", "q3", "ref", "ratio");
+  s += line;
+  for (const auto& m : r.summaries) {
+    std::snprintf(line, sizeof line, "%-40.40s %-12.12s %-22.22s %3zu %11s %11s %11s %9s %7s\n", m.group_label.c_str(),
+                  m.scope.c_str(), m.metric.c_str(), m.values.size(), num(m.median, "%.5g").c_str(),
+                  num(m.q1, "%.5g").c_str(), num(m.q3, "%.5g").c_str(), opt(m.reference, "%.5g").c_str(),
+                  opt(m.ratio, "%.3f").c_str());
+    s += line;
+  }
+  if (!r.unfinished.empty()) s += std::to_string(r.unfinished.size()) + " run(s) left out (not finished)\n";
+  return s;
+}
+
+void write_gather(const GatherResult& r, const std::string& out, bool force) {
+  RunDirOptions o;
+  o.kind = "gather";
+  o.force = force;
+  RunDirectory dir = RunDirectory::open(out, o);
+  try {
+    const std::string d = dir.path();
+    write_table_csv(d + "/gather.csv", summary_header(), summary_rows(r));
+    const auto [seed_header, seed_rows] = per_seed_table(r);
+    write_table_csv(d + "/per_seed.csv", seed_header, seed_rows);
+    std::string md = "# Gathered runs\n\n" + std::to_string(r.runs.size()) + " finished runs" +
+                     (r.options.reference.empty() ? "" : "; reference " + r.options.reference + ", bound " + num(r.options.bound, "%g") + " x") +
+                     ".\n\n" + table_markdown(summary_header(), summary_rows(r)) + "\n## Per seed\n\n" +
+                     table_markdown(seed_header, seed_rows);
+    write_text_atomic(d + "/gather.md", md);
+    write_text_atomic(d + "/gather.json", to_json(r).dump(1) + "\n");
+    HtmlReport html("ppsynth gather: " + std::to_string(r.runs.size()) + " runs");
+    html.add_paragraph("Every finished run, grouped by configuration with the seeds pooled: one dot per seed, the box from "
+                       "the first to the third quartile with the median, whiskers to the extremes.");
+    std::vector<std::pair<std::string, std::string>> kv = {{"runs", std::to_string(r.runs.size())},
+                                                           {"left out (unfinished)", std::to_string(r.unfinished.size())}};
+    if (!r.options.reference.empty()) {
+      kv.push_back({"reference", r.options.reference});
+      kv.push_back({"bound", num(r.options.bound, "%g") + " x the reference's value"});
+    }
+    html.add_key_values(kv);
+    html.add_image_row(write_plots(r, d));
+    html.add_heading("Summary");
+    html.add_table(summary_header(), summary_rows(r));
+    html.add_heading("Per seed");
+    html.add_table(seed_header, seed_rows);
+    html.write(d + "/index.html");
+    dir.mark_complete({{"runs", r.runs.size()}});
+  } catch (...) {
+    dir.discard();
+    throw;
+  }
+}
+
+}  // namespace ppsynth

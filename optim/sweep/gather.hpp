@@ -1,0 +1,52 @@
+#pragma once
+// Statistics over seeds: every finished run under the given directories (sweep directories,
+// run directories, or folders of run directories), grouped by configuration with the seeds
+// pooled (one seed is one sample). For each group and each metric of each scope (all
+// classes, each class, each class pair) the median, quartiles, min, max and count; against a
+// reference output (a published one, say) the ratio of medians and the share of seeds within
+// a bound. Written as CSV, Markdown, JSON and an HTML page with a strip plot per metric.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace ppsynth {
+
+struct GatherOptions {
+  std::string reference;  // a point file evaluated against each group's exemplar ("" = none)
+  double bound = 1.25;    // a seed is within when its value <= bound x the reference's
+};
+
+// One finished run and the numbers taken from it.
+struct GatheredRun {
+  std::string dir, group, group_label;
+  uint64_t seed = 0;
+  std::vector<std::pair<std::string, double>> values;  // "<scope>/<metric>" -> value
+};
+
+struct MetricSummary {
+  std::string group, group_label, scope, metric;
+  std::vector<double> values;  // per seed, in the order of `seeds`
+  std::vector<uint64_t> seeds;
+  double median = 0, q1 = 0, q3 = 0, min = 0, max = 0;
+  std::optional<double> reference, ratio, within;  // within: share of seeds <= bound x reference
+};
+
+struct GatherResult {
+  std::vector<GatheredRun> runs;
+  std::vector<MetricSummary> summaries;  // by group, then scope, then metric
+  std::vector<std::string> unfinished;   // run directories left out (not complete)
+  GatherOptions options;
+};
+
+GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptions& options);
+
+// gather.csv, gather.md, gather.json, per_seed.csv, index.html (+ plots/) into `out`, opened
+// as a ppsynth directory (new or empty, or an earlier gather's with force).
+void write_gather(const GatherResult& result, const std::string& out, bool force);
+
+// The table printed by the command: one line per group, scope and metric.
+std::string format_gather(const GatherResult& result);
+
+}  // namespace ppsynth

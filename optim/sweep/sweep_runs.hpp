@@ -1,0 +1,36 @@
+#pragma once
+// The runs of a sweep (optim/sweep/sweep_plan.hpp), read from the run directories themselves,
+// so status works the same after a cluster has forgotten its jobs:
+//   done         the run directory is marked complete
+//   running      unfinished, and a process holds its lock
+//   interrupted  unfinished, nobody holds it: the next task resumes its checkpoint
+//   failed       the last task failed (DIR/logs/<id>.failed holds the error); the next retries
+//   pending      not started
+// run_sweep_task runs one row: skips a finished run, resumes an interrupted one, starts the
+// rest. The `ppsynth sweep task` command, every local worker and every SLURM array task are
+// this call.
+#include <atomic>
+#include <string>
+#include <vector>
+
+#include "optim/sweep/sweep_plan.hpp"
+
+namespace ppsynth {
+
+enum class RowState { Pending, Running, Interrupted, Failed, Done };
+const char* row_state_name(RowState s);
+
+struct RowStatus {
+  const SweepRow* row = nullptr;
+  RowState state = RowState::Pending;
+  std::string detail;  // the error of a failed run; the wall time of a finished one
+};
+
+std::vector<RowStatus> sweep_status(const std::string& sweep_dir, const SweepManifest& m);
+
+// Runs row `index` of the sweep in `sweep_dir`; returns its state afterwards (Done). Throws
+// what the run throws (RunInterrupted when *stop turned true: the checkpoint is kept), after
+// recording a failure in DIR/logs/<id>.failed.
+RowState run_sweep_task(const std::string& sweep_dir, size_t index, const std::atomic<bool>* stop);
+
+}  // namespace ppsynth

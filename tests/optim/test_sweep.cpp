@@ -1,0 +1,187 @@
+// Sweeps, in process: seeds and grids expand into rows with stable ids; planning again keeps
+// the rows that did not change; a directory that is not a sweep's is never planned into;
+// gather pools seeds and compares with a reference. (Through the binary, with local tasks,
+// interruption and the SLURM script: tests/apps/test_sweep_cli.cpp.)
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.hpp"
+#include "core/metrics/summary_stats.hpp"
+#include "optim/sweep/gather.hpp"
+#include "optim/sweep/sweep_executors.hpp"
+#include "optim/sweep/sweep_plan.hpp"
+#include "optim/sweep/sweep_runs.hpp"
+#include "tests/support/scratch_dir.hpp"
+
+namespace fs = std::filesystem;
+using namespace ppsynth;
+using nlohmann::json;
+
+namespace {
+
+const std::string kLines = std::string(PPSYNTH_SOURCE_DIR) + "/configs/runs/lines.json";
+
+json tiny_spec(json grid = json::object()) {
+  return {{"name", "tiny"},
+          {"runs", {kLines}},
+          {"seeds", {3, "5-6"}},
+          {"quick", true},
+          {"set", {"method.quick.max_iterations=3", "method.quick.res=16"}},
+          {"grid", grid}};
+}
+
+std::vector<std::string> ids(const SweepManifest& m) {
+  std::vector<std::string> v;
+  for (const auto& r : m.rows) v.push_back(r.id);
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("seeds: numbers and ranges, in order, without repeats", "[sweep]") {
+  CHECK(parse_seeds(json::array({95, "96-98", 95}), "seeds") == std::vector<uint64_t>{95, 96, 97, 98});
+  CHECK(parse_seeds(json("7-7"), "seeds") == std::vector<uint64_t>{7});
+  CHECK_THROWS_WITH(parse_seeds(json::array({"9-3"}), "seeds"), Catch::Contains("seeds[0]"));
+  CHECK_THROWS_WITH(parse_seeds(json::array({-1}), "seeds"), Catch::Contains("seeds[0]"));
+  CHECK_THROWS_WITH(parse_seeds(json::array(), "seeds"), Catch::Contains("no seeds"));
+}
+
+TEST_CASE("a sweep spec expands into rows with stable ids", "[sweep]") {
+  const auto m = expand_sweep_spec(tiny_spec({{"method.max_iterations", {5, 7}}}), "spec", "");
+  REQUIRE(m.rows.size() == 6);  // 3 seeds x 2 grid points
+  const auto row_ids = ids(m);
+  std::set<std::string> unique(row_ids.begin(), row_ids.end());
+  CHECK(unique.size() == 6);
+  CHECK(m.rows[0].config["seed"] == 3);
+  CHECK(m.rows[0].config["method"]["max_iterations"] == 5);
+  CHECK(m.rows[3].config["method"]["max_iterations"] == 7);
+  CHECK(m.rows[0].group == m.rows[2].group);  // seeds of one config pool together
+  CHECK(m.rows[0].group != m.rows[3].group);
+  CHECK(m.rows[0].dir == "runs/" + m.rows[0].id);
+  CHECK(m.rows[0].quick);
+  // The same spec gives the same ids; an edit of one axis value keeps the other rows' ids.
+  CHECK(ids(expand_sweep_spec(tiny_spec({{"method.max_iterations", {5, 7}}}), "spec", "")) == ids(m));
+  const auto edited = expand_sweep_spec(tiny_spec({{"method.max_iterations", {5, 8}}}), "spec", "");
+  for (int i = 0; i < 3; ++i) CHECK(edited.rows[i].id == m.rows[i].id);
+  for (int i = 3; i < 6; ++i) CHECK(edited.rows[i].id != m.rows[i].id);
+  // Labels, descriptions and checkpoint intervals do not make another run.
+  json relabelled = tiny_spec({{"method.max_iterations", {5, 7}}});
+  relabelled["set"].push_back("checkpoint_seconds=5");
+  relabelled["set"].push_back("description=another");
+  CHECK(ids(expand_sweep_spec(relabelled, "spec", "")) == ids(m));
+}
+
+TEST_CASE("a sweep spec's mistakes name the key", "[sweep]") {
+  json bad = tiny_spec();
+  bad["colour"] = 1;
+  CHECK_THROWS_WITH(expand_sweep_spec(bad, "spec", ""), Catch::Contains("colour"));
+  bad = tiny_spec();
+  bad["runs"] = {"no/such.json"};
+  CHECK_THROWS_WITH(expand_sweep_spec(bad, "spec", ""), Catch::Contains("runs[0]") && Catch::Contains("no/such.json"));
+  bad = tiny_spec();
+  bad["name"] = "../x";
+  CHECK_THROWS_WITH(expand_sweep_spec(bad, "spec", ""), Catch::Contains("name"));
+  bad = tiny_spec({{"method.max_iterations", json::array()}});
+  CHECK_THROWS_WITH(expand_sweep_spec(bad, "spec", ""), Catch::Contains("grid.method.max_iterations"));
+  bad = tiny_spec();
+  bad["set"] = {"method.no_such_key=1"};
+  CHECK_THROWS_WITH(expand_sweep_spec(bad, "spec", ""), Catch::Contains("no_such_key"));
+}
+
+TEST_CASE("planning again keeps unchanged rows; only a sweep's directory is planned into", "[sweep]") {
+  const auto d = test::scratch_dir("sweep_plan");
+  const std::string dir = (d / "sw").string();
+  const auto first = plan_sweep(expand_sweep_spec(tiny_spec({{"method.max_iterations", {5, 7}}}), "spec", ""), dir);
+  CHECK(first.added == 6);
+  fs::create_directories(d / "sw" / "runs" / "kept_marker");  // stands for a finished run's files
+  const auto again = plan_sweep(expand_sweep_spec(tiny_spec({{"method.max_iterations", {5, 8}}}), "spec", ""), dir);
+  CHECK(again.kept == 3);
+  CHECK(again.added == 3);
+  CHECK(again.dropped == 3);
+  CHECK(fs::exists(d / "sw" / "runs" / "kept_marker"));
+  CHECK(load_sweep(dir).rows.size() == 6);
+  for (const auto& s : sweep_status(dir, load_sweep(dir))) CHECK(s.state == RowState::Pending);
+  // Not a sweep: refused, untouched.
+  fs::create_directories(d / "other");
+  std::ofstream(d / "other" / "mine.txt") << "mine";
+  CHECK_THROWS_WITH(plan_sweep(expand_sweep_spec(tiny_spec(), "spec", ""), (d / "other").string()),
+                    Catch::Contains("not a sweep directory"));
+  CHECK(fs::exists(d / "other" / "mine.txt"));
+  CHECK_THROWS_WITH(load_sweep((d / "other").string()), Catch::Contains("not a sweep directory"));
+  CHECK_THROWS(plan_sweep(expand_sweep_spec(tiny_spec(), "spec", ""), "."));
+}
+
+TEST_CASE("tasks run rows, skip finished ones, and gather pools seeds against a reference", "[sweep]") {
+  const auto d = test::scratch_dir("sweep_tasks");
+  const std::string dir = (d / "sw").string();
+  plan_sweep(expand_sweep_spec(tiny_spec(), "spec", ""), dir);
+  const auto m = load_sweep(dir);
+  for (size_t i = 0; i < m.rows.size(); ++i) CHECK(run_sweep_task(dir, i, nullptr) == RowState::Done);
+  for (const auto& s : sweep_status(dir, m)) CHECK(s.state == RowState::Done);
+  const auto before = fs::last_write_time(fs::path(dir) / m.rows[0].dir / "output.txt");
+  CHECK(run_sweep_task(dir, 0, nullptr) == RowState::Done);  // done already: not run again
+  CHECK(fs::last_write_time(fs::path(dir) / m.rows[0].dir / "output.txt") == before);
+  CHECK_THROWS_WITH(run_sweep_task(dir, 3, nullptr), Catch::Contains("no row 3"));
+
+  GatherOptions o;
+  o.reference = (fs::path(dir) / m.rows[0].dir / "output.txt").string();  // seed 3's own output
+  const GatherResult g = gather_runs({dir}, o);
+  REQUIRE(g.runs.size() == 3);
+  const auto pcf = std::find_if(g.summaries.begin(), g.summaries.end(),
+                                [](const MetricSummary& s) { return s.scope == "all" && s.metric == "pcf_mse"; });
+  REQUIRE(pcf != g.summaries.end());
+  REQUIRE(pcf->values.size() == 3);
+  CHECK(pcf->seeds == std::vector<uint64_t>{3, 5, 6});
+  CHECK(pcf->median == Approx(quantile(pcf->values, 0.5)));
+  REQUIRE(pcf->reference);
+  CHECK(*pcf->reference == Approx(pcf->values[0]));  // the reference is seed 3's output
+  CHECK(*pcf->ratio == Approx(pcf->median / pcf->values[0]));
+  CHECK(*pcf->within >= 1.0 / 3);
+  // Written: tables, JSON and the page; a second gather into it needs force.
+  write_gather(g, (d / "g").string(), false);
+  for (const char* f : {"gather.csv", "gather.md", "gather.json", "per_seed.csv", "index.html"}) CHECK(fs::exists(d / "g" / f));
+  CHECK_THROWS_WITH(write_gather(g, (d / "g").string(), false), Catch::Contains("--force"));
+  CHECK_NOTHROW(write_gather(g, (d / "g").string(), true));
+}
+
+TEST_CASE("summaries: NumPy's quantiles, non-finite values left out", "[sweep][stats]") {
+  CHECK(quantile({1, 2, 3, 4}, 0.25) == Approx(1.75));
+  CHECK(quantile({4, 1, 3, 2}, 0.5) == Approx(2.5));
+  const Summary s = summarize({3, std::nan(""), 1, 2, INFINITY});
+  CHECK(s.count == 3);
+  CHECK(s.not_finite == 2);
+  CHECK(s.median == 2);
+  CHECK(s.min == 1);
+  CHECK(s.max == 3);
+  CHECK(std::isnan(summarize({}).median));
+}
+
+TEST_CASE("the SLURM job script: one array task per run that is not done", "[sweep][slurm]") {
+  const auto d = test::scratch_dir("sweep_slurm");
+  const std::string dir = (d / "sw").string();
+  plan_sweep(expand_sweep_spec(tiny_spec(), "spec", ""), dir);
+  auto m = load_sweep(dir);
+  SlurmExecution how;
+  how.binary = "/opt/ppsynth/bin/ppsynth";
+  how.partition = "long";
+  how.sbatch_options = {"--qos=low"};
+  how.max_parallel = 2;
+  std::string s = slurm_script(dir, m, how);
+  CHECK_THAT(s, Catch::Contains("#SBATCH --array=0-2%2\n"));
+  CHECK_THAT(s, Catch::Contains("#SBATCH --cpus-per-task=1\n"));
+  CHECK_THAT(s, Catch::Contains("#SBATCH --mem=4096M\n"));
+  CHECK_THAT(s, Catch::Contains("#SBATCH --time=240\n"));
+  CHECK_THAT(s, Catch::Contains("#SBATCH --partition=long\n"));
+  CHECK_THAT(s, Catch::Contains("#SBATCH --qos=low\n"));
+  CHECK_THAT(s, Catch::Contains("#SBATCH --requeue\n"));
+  CHECK_THAT(s, Catch::Contains("exec /opt/ppsynth/bin/ppsynth sweep task " + fs::absolute(dir).lexically_normal().string() +
+                                " --index \"$SLURM_ARRAY_TASK_ID\""));
+  run_sweep_task(dir, 1, nullptr);
+  CHECK_THAT(slurm_script(dir, m, how), Catch::Contains("#SBATCH --array=0,2%2\n"));
+  run_sweep_task(dir, 0, nullptr);
+  run_sweep_task(dir, 2, nullptr);
+  CHECK(slurm_script(dir, m, how).empty());
+  CHECK(compress_indices({0, 1, 2, 4, 6, 7}) == "0-2,4,6-7");
+}
