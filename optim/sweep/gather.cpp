@@ -96,6 +96,14 @@ std::pair<std::string, std::string> split_key(const std::string& key) {
 
 }  // namespace
 
+ReferenceOutput parse_reference(const std::string& text) {
+  const size_t eq = text.find('=');
+  if (eq == std::string::npos) return {"", text};
+  if (eq == 0 || eq + 1 == text.size())
+    throw InputError("--reference '" + text + "': expected FILE or EXEMPLAR=FILE");
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
 GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptions& options) {
   if (dirs.empty()) throw InputError("gather: name at least one sweep or run directory");
   if (!(options.bound > 0)) throw InputError("--bound: expected a number > 0");
@@ -140,12 +148,40 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
       it->seeds.push_back(run.seed);
     }
   }
+  // Each group's exemplar (the stem of its file) and the reference that belongs to it.
+  std::map<std::string, std::string> exemplar_of;
+  std::set<std::string> exemplars;
+  for (const auto& g : group_order) {
+    const auto first = std::find_if(r.runs.begin(), r.runs.end(), [&](const GatheredRun& x) { return x.group == g; });
+    exemplar_of[g] = fs::path(read_run_json(first->dir + "/config.json").value("exemplar", std::string())).stem().string();
+    exemplars.insert(exemplar_of[g]);
+  }
+  std::map<std::string, std::string> reference_file;  // exemplar stem -> file
+  for (const auto& ref : options.references) {
+    std::string stem = ref.exemplar;
+    if (stem.empty()) {
+      if (exemplars.size() != 1) {
+        std::string names;
+        for (const auto& e : exemplars) names += (names.empty() ? "" : ", ") + e;
+        throw InputError("--reference " + ref.file + ": the runs come from " + std::to_string(exemplars.size()) +
+                         " exemplars (" + names + "); name the one it belongs to: --reference EXEMPLAR=" + ref.file);
+      }
+      stem = *exemplars.begin();
+    } else if (!exemplars.count(stem)) {
+      std::string names;
+      for (const auto& e : exemplars) names += (names.empty() ? "" : ", ") + e;
+      throw InputError("--reference " + stem + "=" + ref.file + ": no gathered run comes from an exemplar named '" + stem +
+                       "' (they come from: " + names + ")");
+    }
+    if (!reference_file.emplace(stem, ref.file).second)
+      throw InputError("--reference: two references for the exemplar '" + stem + "'");
+  }
   for (const auto& g : group_order) {
     std::map<std::string, double> ref;
-    if (!options.reference.empty()) {
+    if (const auto file = reference_file.find(exemplar_of[g]); file != reference_file.end()) {
       const auto first = std::find_if(r.runs.begin(), r.runs.end(), [&](const GatheredRun& x) { return x.group == g; });
       const PointSet exemplar = load_run(first->dir).exemplar;
-      for (const auto& [k, v] : metric_values(evaluate(exemplar, read_points(resolve_data_path(options.reference))))) ref[k] = v;
+      for (const auto& [k, v] : metric_values(evaluate(exemplar, read_points(resolve_data_path(file->second))))) ref[k] = v;
     }
     for (auto& s : by_group[g]) {
       const Summary sum = summarize(s.values);
@@ -172,6 +208,14 @@ std::string num(double v, const char* fmt = "%.6g") {
   return buf;
 }
 std::string opt(const std::optional<double>& v, const char* fmt = "%.6g") { return v ? num(*v, fmt) : ""; }
+
+// "reference FILE" / "references a=FILE, b=FILE" for the reports.
+std::string references_text(const GatherOptions& o) {
+  std::string s = o.references.size() == 1 ? "reference " : "references ";
+  for (size_t i = 0; i < o.references.size(); ++i)
+    s += (i ? ", " : "") + (o.references[i].exemplar.empty() ? "" : o.references[i].exemplar + "=") + o.references[i].file;
+  return s;
+}
 
 std::vector<std::string> summary_header() {
   return {"group", "scope", "metric", "n", "median", "q1", "q3", "min", "max", "reference", "median / reference", "share within bound"};
@@ -218,7 +262,9 @@ nlohmann::json to_json(const GatherResult& r) {
                     {"n", s.values.size()}, {"values", s.values}, {"seeds", s.seeds}, {"median", s.median}, {"q1", s.q1},
                     {"q3", s.q3}, {"min", s.min}, {"max", s.max}, {"reference", optional(s.reference)},
                     {"ratio_of_medians", optional(s.ratio)}, {"share_within_bound", optional(s.within)}});
-  return {{"reference", r.options.reference}, {"bound", r.options.bound}, {"runs", runs}, {"summaries", sums},
+  nlohmann::json refs = nlohmann::json::array();
+  for (const auto& ref : r.options.references) refs.push_back({{"exemplar", ref.exemplar}, {"file", ref.file}});
+  return {{"references", refs}, {"bound", r.options.bound}, {"runs", runs}, {"summaries", sums},
           {"left_out", r.unfinished}};
 }
 
@@ -285,7 +331,7 @@ void write_gather(const GatherResult& r, const std::string& out, bool force) {
     const auto [seed_header, seed_rows] = per_seed_table(r);
     write_table_csv(d + "/per_seed.csv", seed_header, seed_rows);
     std::string md = "# Gathered runs\n\n" + std::to_string(r.runs.size()) + " finished runs" +
-                     (r.options.reference.empty() ? "" : "; reference " + r.options.reference + ", bound " + num(r.options.bound, "%g") + " x") +
+                     (r.options.references.empty() ? "" : "; " + references_text(r.options) + ", bound " + num(r.options.bound, "%g") + " x") +
                      ".\n\n" + table_markdown(summary_header(), summary_rows(r)) + "\n## Per seed\n\n" +
                      table_markdown(seed_header, seed_rows);
     write_text_atomic(d + "/gather.md", md);
@@ -295,8 +341,8 @@ void write_gather(const GatherResult& r, const std::string& out, bool force) {
                        "the first to the third quartile with the median, whiskers to the extremes.");
     std::vector<std::pair<std::string, std::string>> kv = {{"runs", std::to_string(r.runs.size())},
                                                            {"left out (unfinished)", std::to_string(r.unfinished.size())}};
-    if (!r.options.reference.empty()) {
-      kv.push_back({"reference", r.options.reference});
+    if (!r.options.references.empty()) {
+      kv.push_back({"reference", references_text(r.options)});
       kv.push_back({"bound", num(r.options.bound, "%g") + " x the reference's value"});
     }
     html.add_key_values(kv);

@@ -13,9 +13,20 @@
 
 namespace ppsynth {
 
+// A reference output (a published one, say) and the exemplar it was synthesised from: it is
+// evaluated against that exemplar and compared with the groups synthesised from it only.
+struct ReferenceOutput {
+  std::string exemplar;  // the exemplar file's stem ("poisson_n64c2_point"); "" = the only one
+  std::string file;      // the point file ("shared:..." allowed)
+};
+// "FILE" or "EXEMPLAR=FILE" (the command's --reference).
+ReferenceOutput parse_reference(const std::string& text);
+
 struct GatherOptions {
-  std::string reference;  // a point file evaluated against each group's exemplar ("" = none)
-  double bound = 1.25;    // a seed is within when its value <= bound x the reference's
+  // A plain FILE is refused when the runs come from more than one exemplar: a reference of
+  // one pattern judged against another's exemplar would give numbers that mean nothing.
+  std::vector<ReferenceOutput> references;
+  double bound = 1.25;  // a seed is within when its value <= bound x the reference's
 };
 
 // One finished run and the numbers taken from it.

@@ -44,7 +44,7 @@ std::vector<RowStatus> sweep_status(const std::string& sweep_dir, const SweepMan
         s.state = RowState::Done;
         try {
           char buf[32];
-          std::snprintf(buf, sizeof buf, "%.0f s", read_run_json(dir + "/run.json").value("total_seconds", 0.0));
+          std::snprintf(buf, sizeof buf, "%.1f s", read_run_json(dir + "/run.json").value("total_seconds", 0.0));
           s.detail = buf;
         } catch (const InputError&) {
         }

@@ -7,6 +7,8 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <sstream>
 #include <regex>
 
 #include "core/formats/text_table.hpp"
@@ -75,4 +77,32 @@ TEST_CASE("a sweep planned, interrupted, run by local tasks, followed and gather
   CHECK(fs::exists(d / "g" / "index.html"));
   CHECK(std::count(gather.output.begin(), gather.output.end(), '\n') > 10);
   CHECK(run_ppsynth("sweep status " + (d / "g").string()).status == 2);  // not a sweep
+
+  // A reference output belongs to one exemplar: with runs of two, a plain file is refused, and
+  // a named one is compared with that exemplar's runs only.
+  const std::string published = "shared:data/reference/poisson_n64c2_point/output.txt";
+  auto ambiguous = run_ppsynth("gather " + dir + " --reference " + published);
+  CHECK(ambiguous.status == 2);
+  CHECK_THAT(ambiguous.output, Catch::Contains("2 exemplars") && Catch::Contains("EXEMPLAR="));
+  CHECK(run_ppsynth("gather " + dir + " --reference nosuch=" + published).status == 2);
+  auto named = run_ppsynth("gather " + dir + " --reference poisson_n64c2_point=" + published);
+  INFO(named.output);
+  REQUIRE(named.status == 0);
+  bool lines_row = false, poisson_row = false;
+  std::istringstream rows(named.output);
+  for (std::string line; std::getline(rows, line);) {
+    if (line.find(" all ") == std::string::npos || line.find(" pcf_mse ") == std::string::npos) continue;
+    std::istringstream fields(line);
+    std::vector<std::string> f{std::istream_iterator<std::string>(fields), {}};
+    if (line.rfind("lines", 0) == 0) {
+      lines_row = true;
+      CHECK(f.size() == 7);  // no reference, no ratio
+    }
+    if (line.rfind("poisson", 0) == 0) {
+      poisson_row = true;
+      CHECK(f.size() == 9);
+    }
+  }
+  CHECK(lines_row);
+  CHECK(poisson_row);
 }

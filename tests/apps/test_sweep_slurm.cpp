@@ -93,7 +93,7 @@ TEST_CASE("a sweep as a SLURM job array: a task killed and requeued resumes; out
   REQUIRE(cluster.up());
   const std::string env = cluster.env();
 
-  const auto d = ppsynth::test::scratch_dir("sweep_slurm");
+  const auto d = ppsynth::test::scratch_dir("sweep_on_slurm");
   const std::string src = PPSYNTH_SOURCE_DIR;
   // Enough iterations that a task is still running when the test sees its third iteration.
   std::ofstream(d / "spec.json")

@@ -126,7 +126,7 @@ TEST_CASE("tasks run rows, skip finished ones, and gather pools seeds against a 
   CHECK_THROWS_WITH(run_sweep_task(dir, 3, nullptr), Catch::Contains("no row 3"));
 
   GatherOptions o;
-  o.reference = (fs::path(dir) / m.rows[0].dir / "output.txt").string();  // seed 3's own output
+  o.references = {{"", (fs::path(dir) / m.rows[0].dir / "output.txt").string()}};  // seed 3's own output
   const GatherResult g = gather_runs({dir}, o);
   REQUIRE(g.runs.size() == 3);
   const auto pcf = std::find_if(g.summaries.begin(), g.summaries.end(),

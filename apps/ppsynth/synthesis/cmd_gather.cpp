@@ -1,4 +1,4 @@
-// `ppsynth gather DIR... [-o OUT] [--reference FILE] [--bound B] [--force]`
+// `ppsynth gather DIR... [-o OUT] [--reference [EXEMPLAR=]FILE ...] [--bound B] [--force]`
 // Statistics over seeds of every finished run under the directories (sweeps, run directories,
 // folders of them): prints the table; with -o writes gather.csv, gather.md, gather.json,
 // per_seed.csv and index.html (strip plots). The library: optim/sweep/gather.hpp.
@@ -12,7 +12,8 @@ namespace {
 
 struct Opts {
   std::vector<std::string> dirs;
-  std::string out, reference;
+  std::string out;
+  std::vector<std::string> references;
   double bound = 1.25;
   bool force = false;
 };
@@ -22,11 +23,13 @@ ppsynth::app::RunFn setup(CLI::App& cmd) {
   cmd.add_option("dirs", o->dirs, "sweep directories, run directories, or folders of them")->required();
   cmd.add_option("-o,--out", o->out, "write the tables, JSON and HTML page here (new or empty directory)");
   cmd.add_flag("--force", o->force, "replace an earlier gather's directory");
-  cmd.add_option("--reference", o->reference, "a point file (e.g. the published output) evaluated against each group's exemplar");
+  cmd.add_option("--reference", o->references,
+                 "a point file (e.g. the published output), evaluated against its exemplar and compared with the runs "
+                 "from that exemplar: FILE, or EXEMPLAR=FILE when the runs come from several exemplars (repeatable)");
   cmd.add_option("--bound", o->bound, "a seed is within when its value <= BOUND x the reference's (default 1.25)");
   return [o]() -> int {
     ppsynth::GatherOptions opts;
-    opts.reference = o->reference;
+    for (const auto& r : o->references) opts.references.push_back(ppsynth::parse_reference(r));
     opts.bound = o->bound;
     const auto r = ppsynth::gather_runs(o->dirs, opts);
     if (r.runs.empty()) throw ppsynth::InputError("gather: no finished run under the given directories");
