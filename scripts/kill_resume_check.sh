@@ -4,30 +4,34 @@
 # loss.csv's seconds column aside) must be byte-identical. Prints the kill times and the
 # SHA-256 of both runs' files.
 #
-# Usage: scripts/kill_resume_check.sh CONFIG OUT_DIR [--kills N] [--seed S] [-- SYNTHESIZE_ARGS...]
-#   e.g. scripts/kill_resume_check.sh configs/runs/poisson_n64c2_disk.json /tmp/kr --kills 2 \
-#          -- --set method.max_iterations=100
+# Usage: scripts/kill_resume_check.sh CONFIG OUT_DIR --within SECONDS [--kills N] [--seed S]
+#          [-- SYNTHESIZE_ARGS...]
+#   e.g. scripts/kill_resume_check.sh configs/runs/poisson_n64c2_disk.json /tmp/kr \
+#          --within 1100 --kills 2 -- --set method.max_iterations=100
 # Both runs go at once, one thread each (PPSYNTH_THREADS=1: results depend on the thread
-# count in the last bits). The kill times are drawn uniformly from the first 90 % of the
-# uninterrupted run's elapsed time so far (the interrupted run starts with it), so a kill
-# can fall anywhere: mid-stage, at a boundary, before the first checkpoint.
+# count in the last bits). The N kill times are drawn uniformly from (0, SECONDS) of the
+# interrupted run's own running time (the segments added up; give about the run's length, as
+# the progress line's ETA says), so a kill can fall anywhere: mid-stage, at a boundary,
+# before the first checkpoint (then the run starts over).
 # OUT_DIR must not exist; it gets reference/, interrupted/ and kills.txt.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bin="${PPSYNTH_BIN:-$here/build/ppsynth}"
 
-[ $# -ge 2 ] || { sed -n 2,15p "$0"; exit 2; }
+[ $# -ge 2 ] || { sed -n 2,17p "$0"; exit 2; }
 config="$1"; out="$2"; shift 2
-kills=2; seed=""
+kills=2; seed=""; within=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --kills) kills="$2"; shift 2 ;;
     --seed) seed="--seed $2"; shift 2 ;;
+    --within) within="$2"; shift 2 ;;
     --) shift; break ;;
     *) echo "kill_resume_check: unknown option $1" >&2; exit 2 ;;
   esac
 done
 extra=("$@")
+[ -n "$within" ] || { echo "kill_resume_check: give --within SECONDS (about the run's length)" >&2; exit 2; }
 [ ! -e "$out" ] || { echo "kill_resume_check: $out exists; name a new directory" >&2; exit 2; }
 mkdir -p "$out"
 export PPSYNTH_THREADS=1
@@ -43,16 +47,19 @@ seg=0
 "$bin" synthesize "$config" $seed "${extra[@]}" -o "$out/interrupted" > "$out/interrupted.$seg.log" 2>&1 &
 pid=$!
 seg_start=$(date +%s.%N)
-# Killing needs an estimate of the run's length: SIGKILL after a uniform time in
-# [10 %, 90 %] of min(the reference's time so far + 60 s, 1 h), checked each second.
-for k in $(seq 1 "$kills"); do
-  horizon=$(awk -v e="$(elapsed "$start")" 'BEGIN { h = e + 60; if (h > 3600) h = 3600; print h }')
-  at=$(awk -v h="$horizon" -v r="$RANDOM" 'BEGIN { printf "%.1f", h * (0.1 + 0.8 * r / 32767) }')
-  while less_than "$(elapsed "$seg_start")" "$at" && kill -0 "$pid" 2>/dev/null; do sleep 1; done
+ran=0  # the interrupted run's running time before this segment
+times=$(awk -v n="$kills" -v w="$within" -v seed="$RANDOM" 'BEGIN { srand(seed); for (i = 0; i < n; i++) print w * rand() }' | sort -g)
+k=0
+for at in $times; do
+  k=$((k + 1))
+  while less_than "$(awk -v r="$ran" -v e="$(elapsed "$seg_start")" 'BEGIN { print r + e }')" "$at" && kill -0 "$pid" 2>/dev/null; do
+    sleep 0.2
+  done
   if ! kill -0 "$pid" 2>/dev/null; then echo "run finished before kill $k" | tee -a "$out/kills.txt"; break; fi
   kill -9 "$pid"; wait "$pid" || true
   last=$(grep -aoE 'it +[0-9]+/[0-9]+' "$out/interrupted.$seg.log" | tail -1 || true)
-  line="kill $k: SIGKILL after $(printf %.1f "$(elapsed "$seg_start")") s of segment $seg (last progress: ${last:-none})"
+  seg_s=$(elapsed "$seg_start"); ran=$(awk -v r="$ran" -v e="$seg_s" 'BEGIN { print r + e }')
+  line="kill $k: SIGKILL at $(printf %.1f "$ran") s of running time ($(printf %.1f "$seg_s") s into segment $seg; last progress: ${last:-none})"
   echo "$line" | tee -a "$out/kills.txt"
   seg=$((seg + 1))
   if [ -f "$out/interrupted/checkpoint.bin" ]; then

@@ -15,11 +15,11 @@ namespace {
 
 using namespace render;
 
-constexpr double kPad = 12;
-constexpr double kTitleFont = 14.5;
-constexpr double kLabelFont = 12.5;
-constexpr double kTickFont = 11;
-constexpr double kLegendFont = 12;
+constexpr double kPad = kChartPad;
+constexpr double kTitleFont = kChartTitleFont;
+constexpr double kLabelFont = kChartLabelFont;
+constexpr double kTickFont = kChartTickFont;
+constexpr double kLegendFont = kChartLegendFont;
 
 void check_series(const CurvePlot& plot, const std::string& path) {
   for (const auto& s : plot.series)
@@ -28,12 +28,7 @@ void check_series(const CurvePlot& plot, const std::string& path) {
                        " x values but " + std::to_string(s.y.size()) + " y values");
 }
 
-// Values beyond +-1e150 are drawn as gaps like NaN: their differences would overflow the
-// axis arithmetic and hand cairo non-finite coordinates.
-constexpr double kMaxAbs = 1e150;
-bool usable(double x, double y, bool log_y) {
-  return std::isfinite(x) && std::isfinite(y) && std::abs(x) <= kMaxAbs && std::abs(y) <= kMaxAbs && (!log_y || y > 0);
-}
+bool usable(double x, double y, bool log_y) { return plottable(x) && plottable(y) && (!log_y || y > 0); }
 
 // An empty or degenerate range [v, v] (also at 1e20, where v +- 0.5 == v) gets a width.
 void widen(double& lo, double& hi) {
@@ -127,14 +122,7 @@ void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double 
     set_color(cr, kText);
     draw_text(cr, tick_label(t), X(t), bottom + 5, kTickFont, HAlign::Center, VAlign::Top);
   }
-  for (double t : yt) {
-    set_color(cr, kGrid);
-    cairo_move_to(cr, left, std::round(Y(t)) + 0.5);
-    cairo_line_to(cr, right, std::round(Y(t)) + 0.5);
-    cairo_stroke(cr);
-    set_color(cr, kText);
-    draw_text(cr, tick_label(t), left - 6, Y(t), kTickFont, HAlign::Right, VAlign::Middle);
-  }
+  draw_y_grid(cr, yt, left, right, Y);
   set_color(cr, kAxis);
   cairo_rectangle(cr, std::round(left) + 0.5, std::round(top) + 0.5, std::round(pw), std::round(ph));
   cairo_stroke(cr);

@@ -151,4 +151,17 @@ void draw_legend(cairo_t* cr, const std::vector<LegendItem>& items, double x0, d
   }
 }
 
+void draw_y_grid(cairo_t* cr, const std::vector<double>& ticks, double left, double right,
+                 const std::function<double(double)>& y_of) {
+  cairo_set_line_width(cr, 1);
+  for (double t : ticks) {
+    set_color(cr, kGrid);
+    cairo_move_to(cr, left, std::round(y_of(t)) + 0.5);
+    cairo_line_to(cr, right, std::round(y_of(t)) + 0.5);
+    cairo_stroke(cr);
+    set_color(cr, kText);
+    draw_text(cr, tick_label(t), left - 6, y_of(t), kChartTickFont, HAlign::Right, VAlign::Middle);
+  }
+}
+
 }  // namespace ppsynth::render

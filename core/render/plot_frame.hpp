@@ -2,6 +2,8 @@
 // Internal building blocks shared by the point, curve and image plots (not a public API for
 // other modules): a measuring context for layout before the surface exists, "nice" tick
 // positions, number formatting for tick labels, and a wrapping legend of colour swatches.
+#include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -36,6 +38,23 @@ void draw_legend(cairo_t* cr, const std::vector<LegendItem>& items, double x, do
 inline void set_color(cairo_t* cr, const Rgb& c, double alpha = 1.0) {
   cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha);
 }
+
+// The look of the charts with axes (plot_curves, plot_strips): padding and font sizes in px.
+inline constexpr double kChartPad = 12;
+inline constexpr double kChartTitleFont = 14.5;
+inline constexpr double kChartLabelFont = 12.5;
+inline constexpr double kChartTickFont = 11;
+inline constexpr double kChartLegendFont = 12;
+
+// Values beyond +-kMaxPlotValue are left out like NaN: their differences would overflow the
+// axis arithmetic and hand cairo non-finite coordinates.
+inline constexpr double kMaxPlotValue = 1e150;
+inline bool plottable(double v) { return std::isfinite(v) && std::abs(v) <= kMaxPlotValue; }
+
+// Horizontal grid lines at the y `ticks` from `left` to `right`, labelled left of `left`;
+// `y_of` maps a value to its pixel row.
+void draw_y_grid(cairo_t* cr, const std::vector<double>& ticks, double left, double right,
+                 const std::function<double(double)>& y_of);
 
 // Colours of text and lines used everywhere (dark grey text, light grid).
 inline constexpr Rgb kText{0.15, 0.15, 0.15};

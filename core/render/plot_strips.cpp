@@ -14,14 +14,13 @@ namespace {
 
 using namespace render;
 
-constexpr double kPad = 12;
-constexpr double kTitleFont = 14.5;
-constexpr double kLabelFont = 12.5;
-constexpr double kTickFont = 11;
+constexpr double kPad = kChartPad;
+constexpr double kTitleFont = kChartTitleFont;
+constexpr double kLabelFont = kChartLabelFont;
+constexpr double kTickFont = kChartTickFont;
 constexpr double kColumn = 120;  // px per group
-constexpr double kMaxAbs = 1e150;  // as plot_curves: larger values would overflow the axis arithmetic
 
-bool usable(double v) { return std::isfinite(v) && std::abs(v) <= kMaxAbs; }
+bool usable(double v) { return plottable(v); }
 
 // `text` cut to `width` px with an ellipsis.
 std::string fitted(const std::string& text, double width, double font) {
@@ -74,7 +73,7 @@ void plot_strips(const std::string& path, const StripPlot& plot, int height_px) 
     const double left = kPad + (plot.ylabel.empty() ? 0 : kLabelFont * 1.5) + ytw + 8;
     const double right = width - kPad;
     const double top = plot.title.empty() ? kPad : kTitleFont * 2.2;
-    const double leg_h = legend.empty() ? 0 : legend_height(legend, right - left, 12);
+    const double leg_h = legend.empty() ? 0 : legend_height(legend, right - left, kChartLegendFont);
     const double bottom = height_px - kPad - leg_h - 2 * kTickFont * 1.5;
     const double pw = right - left, ph = bottom - top;
     if (pw < 10 || ph < 10) return;
@@ -85,15 +84,7 @@ void plot_strips(const std::string& path, const StripPlot& plot, int height_px) 
     if (!plot.title.empty()) draw_text(cr, plot.title, left, kTitleFont * 1.5, kTitleFont, HAlign::Left, VAlign::Baseline, true);
     if (!plot.ylabel.empty())
       draw_text(cr, plot.ylabel, kPad, top + ph / 2, kLabelFont, HAlign::Center, VAlign::Top, false, -M_PI / 2);
-    cairo_set_line_width(cr, 1);
-    for (double t : yt) {
-      set_color(cr, kGrid);
-      cairo_move_to(cr, left, std::round(Y(t)) + 0.5);
-      cairo_line_to(cr, right, std::round(Y(t)) + 0.5);
-      cairo_stroke(cr);
-      set_color(cr, kText);
-      draw_text(cr, tick_label(t), left - 6, Y(t), kTickFont, HAlign::Right, VAlign::Middle);
-    }
+    draw_y_grid(cr, yt, left, right, Y);
 
     for (size_t g = 0; g < n; ++g) {
       const auto& group = plot.groups[g];
@@ -159,7 +150,7 @@ void plot_strips(const std::string& path, const StripPlot& plot, int height_px) 
     set_color(cr, kAxis);
     cairo_rectangle(cr, std::round(left) + 0.5, std::round(top) + 0.5, std::round(pw), std::round(ph));
     cairo_stroke(cr);
-    if (!legend.empty()) draw_legend(cr, legend, left, height_px - kPad - leg_h, right - left, 12);
+    if (!legend.empty()) draw_legend(cr, legend, left, height_px - kPad - leg_h, right - left, kChartLegendFont);
   });
 }
 

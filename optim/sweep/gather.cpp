@@ -209,9 +209,9 @@ std::string num(double v, const char* fmt = "%.6g") {
 }
 std::string opt(const std::optional<double>& v, const char* fmt = "%.6g") { return v ? num(*v, fmt) : ""; }
 
-// "reference FILE" / "references a=FILE, b=FILE" for the reports.
+// "FILE" or "a=FILE, b=FILE" for the reports.
 std::string references_text(const GatherOptions& o) {
-  std::string s = o.references.size() == 1 ? "reference " : "references ";
+  std::string s;
   for (size_t i = 0; i < o.references.size(); ++i)
     s += (i ? ", " : "") + (o.references[i].exemplar.empty() ? "" : o.references[i].exemplar + "=") + o.references[i].file;
   return s;
@@ -280,12 +280,15 @@ std::vector<std::pair<std::string, std::string>> write_plots(const GatherResult&
     plot.title = scope + ": " + metric;
     plot.ylabel = metric;
     std::set<double> refs;
+    size_t with_reference = 0;
     for (const auto& s : r.summaries)
       if (s.scope == scope && s.metric == metric) {
         plot.groups.push_back(StripGroup{s.group_label, s.values});
-        if (s.reference) refs.insert(*s.reference);
+        if (s.reference) refs.insert(*s.reference), ++with_reference;
       }
-    if (refs.size() == 1) {  // one reference value for every group: draw it and the bound
+    // One reference value that holds for every group of the plot: draw it and the bound (a
+    // line across groups of other exemplars would compare them with a pattern they never had).
+    if (refs.size() == 1 && with_reference == plot.groups.size()) {
       plot.reference = *refs.begin();
       plot.reference_label = "reference";
       plot.bound = r.options.bound * *refs.begin();
@@ -331,7 +334,7 @@ void write_gather(const GatherResult& r, const std::string& out, bool force) {
     const auto [seed_header, seed_rows] = per_seed_table(r);
     write_table_csv(d + "/per_seed.csv", seed_header, seed_rows);
     std::string md = "# Gathered runs\n\n" + std::to_string(r.runs.size()) + " finished runs" +
-                     (r.options.references.empty() ? "" : "; " + references_text(r.options) + ", bound " + num(r.options.bound, "%g") + " x") +
+                     (r.options.references.empty() ? "" : "; reference " + references_text(r.options) + ", bound " + num(r.options.bound, "%g") + " x") +
                      ".\n\n" + table_markdown(summary_header(), summary_rows(r)) + "\n## Per seed\n\n" +
                      table_markdown(seed_header, seed_rows);
     write_text_atomic(d + "/gather.md", md);
