@@ -4,6 +4,7 @@
 //                                     fragment runs on the lines exemplar)
 //   configs/paper                  -> load_reproduce_config + run_reproduction (report)
 //   configs/pptbf                  -> pptbf_params_from_json + render_pptbf (16 x 16)
+//   configs/sweeps                 -> expand_sweep_spec + the first row run as a sweep task
 // and no config lives in a folder this test does not know.
 
 #include <catch2/catch.hpp>
@@ -17,6 +18,8 @@
 #include "optim/reproduce/reproduce_runner.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/run/run_synthesis.hpp"
+#include "optim/sweep/sweep_plan.hpp"
+#include "optim/sweep/sweep_runs.hpp"
 #include "core/config/config.hpp"
 #include "core/log.hpp"
 #include "core/procedural/pptbf.hpp"
@@ -54,7 +57,7 @@ struct QuietLogs {
 }  // namespace
 
 TEST_CASE("every config folder is one this test runs", "[apps][configs]") {
-  const std::set<std::string> known = {"runs", "methods", "paper", "pptbf"};
+  const std::set<std::string> known = {"runs", "methods", "paper", "pptbf", "sweeps"};
   for (auto& e : fs::directory_iterator(kConfigs)) {
     INFO(e.path().string());
     if (e.is_directory()) CHECK(known.count(e.path().filename().string()) == 1);
@@ -149,5 +152,20 @@ TEST_CASE("every PPTBF config parses and renders", "[apps][configs]") {
     } catch (const std::exception& e) {
       FAIL_CHECK(f.string() << ": " << e.what());
     }
+  }
+}
+
+TEST_CASE("every sweep spec (configs/sweeps) plans, and its first run runs with --quick", "[apps][configs][sweep]") {
+  QuietLogs quiet;
+  const auto d = ppsynth::test::scratch_dir("configs_sweeps");
+  for (const auto& f : json_files(kConfigs / "sweeps")) {
+    INFO(f.string());
+    json spec = ppsynth::load_config(f.string());
+    spec["quick"] = true;  // what it plans is checked as written; what it runs, on a tiny grid
+    const auto m = ppsynth::expand_sweep_spec(spec, f.string(), f.parent_path().string());
+    REQUIRE_FALSE(m.rows.empty());
+    const std::string dir = (d / f.stem()).string();
+    ppsynth::plan_sweep(m, dir);
+    CHECK(ppsynth::run_sweep_task(dir, 0, nullptr) == ppsynth::RowState::Done);
   }
 }
