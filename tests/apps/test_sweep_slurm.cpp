@@ -99,7 +99,7 @@ TEST_CASE("a sweep as a SLURM job array: a task killed and requeued resumes; out
   std::ofstream(d / "spec.json")
       << "{\"name\": \"slurm\", \"runs\": [\"" << src << "/configs/runs/lines.json\", \"" << src
       << "/configs/runs/poisson_n64c2_point.json\"], \"seeds\": \"1-4\", \"quick\": true,"
-      << " \"set\": [\"method.quick.max_iterations=40\", \"method.quick.res=16\"],"
+      << " \"set\": [\"method.quick.max_iterations=80\", \"method.quick.res=16\"],"
       << " \"resources\": {\"cpus\": 1, \"memory_mb\": 2000, \"time_minutes\": 20}}";
   const std::string on_slurm = (d / "slurm").string(), here = (d / "local").string();
   for (const auto& dir : {on_slurm, here}) {
