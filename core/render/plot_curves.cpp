@@ -15,12 +15,6 @@ namespace {
 
 using namespace render;
 
-constexpr double kPad = kChartPad;
-constexpr double kTitleFont = kChartTitleFont;
-constexpr double kLabelFont = kChartLabelFont;
-constexpr double kTickFont = kChartTickFont;
-constexpr double kLegendFont = kChartLegendFont;
-
 void check_series(const CurvePlot& plot, const std::string& path) {
   for (const auto& s : plot.series)
     if (s.x.size() != s.y.size())
@@ -82,17 +76,17 @@ void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double 
 
   // --- layout ---
   double ytw = 0;
-  for (double t : yt) ytw = std::max(ytw, measure_text(tick_label(t), kTickFont));
+  for (double t : yt) ytw = std::max(ytw, measure_text(tick_label(t), kChartTickFont));
   std::vector<LegendItem> legend;
   for (size_t k = 0; k < plot.series.size(); ++k)
     if (!plot.series[k].label.empty())
       legend.push_back({plot.series[k].label, class_color(static_cast<int>(k)),
                         plot.series[k].dashed ? Marker::DashedLine : Marker::Line});
-  const double left = bx + kPad + (plot.ylabel.empty() ? 0 : kLabelFont * 1.5) + ytw + 8;
-  const double right = bx + bw - kPad;
-  const double top = by + (plot.title.empty() ? kPad : kTitleFont * 2.2);
-  const double leg_h = legend_height(legend, right - left, kLegendFont);
-  const double bottom = by + bh - kPad - leg_h - (plot.xlabel.empty() ? 0 : kLabelFont * 1.6) - kTickFont * 1.6;
+  const double left = bx + kChartPad + (plot.ylabel.empty() ? 0 : kChartLabelFont * 1.5) + ytw + 8;
+  const double right = bx + bw - kChartPad;
+  const double top = by + (plot.title.empty() ? kChartPad : kChartTitleFont * 2.2);
+  const double leg_h = legend_height(legend, right - left, kChartLegendFont);
+  const double bottom = by + bh - kChartPad - leg_h - (plot.xlabel.empty() ? 0 : kChartLabelFont * 1.6) - kChartTickFont * 1.6;
   const double pw = right - left, ph = bottom - top;
   if (pw < 10 || ph < 10) return;  // too small to draw anything meaningful
 
@@ -105,11 +99,11 @@ void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double 
 
   // --- title and axis labels ---
   set_color(cr, kText);
-  if (!plot.title.empty()) draw_text(cr, plot.title, left, by + kTitleFont * 1.5, kTitleFont, HAlign::Left, VAlign::Baseline, true);
+  if (!plot.title.empty()) draw_text(cr, plot.title, left, by + kChartTitleFont * 1.5, kChartTitleFont, HAlign::Left, VAlign::Baseline, true);
   if (!plot.xlabel.empty())
-    draw_text(cr, plot.xlabel, left + pw / 2, bottom + kTickFont * 1.6 + 4, kLabelFont, HAlign::Center, VAlign::Top);
+    draw_text(cr, plot.xlabel, left + pw / 2, bottom + kChartTickFont * 1.6 + 4, kChartLabelFont, HAlign::Center, VAlign::Top);
   if (!plot.ylabel.empty())
-    draw_text(cr, plot.ylabel, bx + kPad, top + ph / 2, kLabelFont, HAlign::Center, VAlign::Top, false, -M_PI / 2);
+    draw_text(cr, plot.ylabel, bx + kChartPad, top + ph / 2, kChartLabelFont, HAlign::Center, VAlign::Top, false, -M_PI / 2);
 
   // --- grid, ticks ---
   cairo_save(cr);
@@ -120,7 +114,7 @@ void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double 
     cairo_line_to(cr, std::round(X(t)) + 0.5, bottom);
     cairo_stroke(cr);
     set_color(cr, kText);
-    draw_text(cr, tick_label(t), X(t), bottom + 5, kTickFont, HAlign::Center, VAlign::Top);
+    draw_text(cr, tick_label(t), X(t), bottom + 5, kChartTickFont, HAlign::Center, VAlign::Top);
   }
   draw_y_grid(cr, yt, left, right, Y);
   set_color(cr, kAxis);
@@ -168,10 +162,10 @@ void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double 
   cairo_restore(cr);
   if (!has_data) {
     set_color(cr, kAxis);
-    draw_text(cr, "(no data)", left + pw / 2, top + ph / 2, kLabelFont, HAlign::Center, VAlign::Middle);
+    draw_text(cr, "(no data)", left + pw / 2, top + ph / 2, kChartLabelFont, HAlign::Center, VAlign::Middle);
   }
 
-  draw_legend(cr, legend, left, by + bh - kPad - leg_h, right - left, kLegendFont);
+  draw_legend(cr, legend, left, by + bh - kChartPad - leg_h, right - left, kChartLegendFont);
 }
 
 }  // namespace
@@ -265,7 +259,7 @@ void plot_curve_grid(const std::string& path, const std::vector<CurvePlot>& plot
       for (size_t i = l.shown + 1; i < plots.size() && i < l.shown + 3; ++i) note += ", " + plots[i].title;
       if (plots.size() - l.shown > 3) note += ", ...";
       set_color(cr, kText);
-      draw_text(cr, note, kPad, l.header / 2.0, 13, HAlign::Left, VAlign::Middle, true);
+      draw_text(cr, note, kChartPad, l.header / 2.0, 13, HAlign::Left, VAlign::Middle, true);
     }
     for (size_t i = 0; i < l.shown; ++i) {
       cairo_save(cr);

@@ -14,13 +14,7 @@ namespace {
 
 using namespace render;
 
-constexpr double kPad = kChartPad;
-constexpr double kTitleFont = kChartTitleFont;
-constexpr double kLabelFont = kChartLabelFont;
-constexpr double kTickFont = kChartTickFont;
 constexpr double kColumn = 120;  // px per group
-
-bool usable(double v) { return plottable(v); }
 
 // `text` cut to `width` px with an ellipsis.
 std::string fitted(const std::string& text, double width, double font) {
@@ -41,11 +35,11 @@ double dot_offset(size_t i, size_t n, double half_width) {
 
 void plot_strips(const std::string& path, const StripPlot& plot, int height_px) {
   const size_t n = plot.groups.size();
-  const int width = static_cast<int>(std::max(360.0, 2 * kPad + 70 + kColumn * static_cast<double>(std::max<size_t>(n, 1))));
+  const int width = static_cast<int>(std::max(360.0, 2 * kChartPad + 70 + kColumn * static_cast<double>(std::max<size_t>(n, 1))));
 
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   auto include = [&](double v) {
-    if (usable(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+    if (plottable(v)) lo = std::min(lo, v), hi = std::max(hi, v);
   };
   for (const auto& g : plot.groups)
     for (double v : g.values) include(v);
@@ -66,24 +60,24 @@ void plot_strips(const std::string& path, const StripPlot& plot, int height_px) 
 
   render_to_file(path, width, height_px, [&](cairo_t* cr) {
     double ytw = 0;
-    for (double t : yt) ytw = std::max(ytw, measure_text(tick_label(t), kTickFont));
+    for (double t : yt) ytw = std::max(ytw, measure_text(tick_label(t), kChartTickFont));
     std::vector<LegendItem> legend;
     if (plot.reference) legend.push_back({plot.reference_label.empty() ? "reference" : plot.reference_label, kText, Marker::Line});
     if (plot.bound) legend.push_back({plot.bound_label.empty() ? "bound" : plot.bound_label, kText, Marker::DashedLine});
-    const double left = kPad + (plot.ylabel.empty() ? 0 : kLabelFont * 1.5) + ytw + 8;
-    const double right = width - kPad;
-    const double top = plot.title.empty() ? kPad : kTitleFont * 2.2;
+    const double left = kChartPad + (plot.ylabel.empty() ? 0 : kChartLabelFont * 1.5) + ytw + 8;
+    const double right = width - kChartPad;
+    const double top = plot.title.empty() ? kChartPad : kChartTitleFont * 2.2;
     const double leg_h = legend.empty() ? 0 : legend_height(legend, right - left, kChartLegendFont);
-    const double bottom = height_px - kPad - leg_h - 2 * kTickFont * 1.5;
+    const double bottom = height_px - kChartPad - leg_h - 2 * kChartTickFont * 1.5;
     const double pw = right - left, ph = bottom - top;
     if (pw < 10 || ph < 10) return;
     auto Y = [&](double v) { return bottom - (std::clamp(v, lo, hi) - lo) / (hi - lo) * ph; };
     const double col = pw / static_cast<double>(std::max<size_t>(n, 1));
 
     set_color(cr, kText);
-    if (!plot.title.empty()) draw_text(cr, plot.title, left, kTitleFont * 1.5, kTitleFont, HAlign::Left, VAlign::Baseline, true);
+    if (!plot.title.empty()) draw_text(cr, plot.title, left, kChartTitleFont * 1.5, kChartTitleFont, HAlign::Left, VAlign::Baseline, true);
     if (!plot.ylabel.empty())
-      draw_text(cr, plot.ylabel, kPad, top + ph / 2, kLabelFont, HAlign::Center, VAlign::Top, false, -M_PI / 2);
+      draw_text(cr, plot.ylabel, kChartPad, top + ph / 2, kChartLabelFont, HAlign::Center, VAlign::Top, false, -M_PI / 2);
     draw_y_grid(cr, yt, left, right, Y);
 
     for (size_t g = 0; g < n; ++g) {
@@ -91,7 +85,7 @@ void plot_strips(const std::string& path, const StripPlot& plot, int height_px) 
       const double cx = left + col * (static_cast<double>(g) + 0.5);
       std::vector<double> finite;
       for (double v : group.values)
-        if (usable(v)) finite.push_back(v);
+        if (plottable(v)) finite.push_back(v);
       const Summary s = summarize(finite);
       const Rgb c = class_color(static_cast<int>(g));
       const double bw = std::min(col * 0.5, 60.0);
@@ -122,16 +116,16 @@ void plot_strips(const std::string& path, const StripPlot& plot, int height_px) 
         cairo_stroke(cr);
       }
       set_color(cr, kText);
-      const std::string label = fitted(group.label, col - 6, kTickFont);
-      draw_text(cr, label, cx, bottom + 5, kTickFont, HAlign::Center, VAlign::Top);
+      const std::string label = fitted(group.label, col - 6, kChartTickFont);
+      draw_text(cr, label, cx, bottom + 5, kChartTickFont, HAlign::Center, VAlign::Top);
       std::string count = "n = " + std::to_string(s.count);
       if (group.values.size() > s.count) count += " (" + std::to_string(group.values.size() - s.count) + " not finite)";
-      draw_text(cr, fitted(count, col - 6, kTickFont * 0.9), cx, bottom + 5 + kTickFont * 1.4, kTickFont * 0.9, HAlign::Center,
+      draw_text(cr, fitted(count, col - 6, kChartTickFont * 0.9), cx, bottom + 5 + kChartTickFont * 1.4, kChartTickFont * 0.9, HAlign::Center,
                 VAlign::Top);
     }
 
     auto hline = [&](double v, bool dashed) {
-      if (!usable(v)) return;
+      if (!plottable(v)) return;
       cairo_save(cr);
       set_color(cr, kText, 0.8);
       cairo_set_line_width(cr, 1.2);
@@ -150,7 +144,7 @@ void plot_strips(const std::string& path, const StripPlot& plot, int height_px) 
     set_color(cr, kAxis);
     cairo_rectangle(cr, std::round(left) + 0.5, std::round(top) + 0.5, std::round(pw), std::round(ph));
     cairo_stroke(cr);
-    if (!legend.empty()) draw_legend(cr, legend, left, height_px - kPad - leg_h, right - left, kChartLegendFont);
+    if (!legend.empty()) draw_legend(cr, legend, left, height_px - kChartPad - leg_h, right - left, kChartLegendFont);
   });
 }
 
