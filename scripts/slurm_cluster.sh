@@ -27,7 +27,9 @@ node="ppsynth-node"
 die() { echo "slurm_cluster: $*" >&2; exit 2; }
 need() { command -v "$1" >/dev/null 2>&1 || die "$1 not found (scripts/setup.sh installs munge, slurmctld, slurmd, slurm-client)"; }
 
-pid_alive() { [ -f "$1" ] && kill -0 "$(cat "$1")" 2>/dev/null; }
+# pid_alive PIDFILE NAME: the pid file names a live process called NAME (a stale pid file of
+# an earlier session may name a pid the system has given to another process since).
+pid_alive() { [ -f "$1" ] && [ "$(cat "/proc/$(cat "$1")/comm" 2>/dev/null)" = "$2" ]; }
 
 wait_for() {  # wait_for SECONDS DESCRIPTION COMMAND...
   local limit="$1" what="$2"; shift 2
@@ -43,7 +45,8 @@ node_idle() { SLURM_CONF="$conf" sinfo -h -N -n "$node" -o '%t' 2>/dev/null | gr
 start() {
   need munged; need slurmctld; need slurmd; need sinfo
   [ "$(id -u)" -eq 0 ] || die "start needs root (slurmd runs jobs as their users)"
-  if pid_alive "$state/run/slurmctld.pid"; then echo "slurm_cluster: already running ($conf)"; return 0; fi
+  if pid_alive "$state/run/slurmctld.pid" slurmctld && pid_alive "$state/run/slurmd.pid" slurmd; then echo "slurm_cluster: already running ($conf)"; return 0; fi
+  stop >/dev/null  # what is left of a cluster half up (a daemon died, a session ended)
   mkdir -p "$state"/{run,log,spool,ctld,munge}
   chmod 700 "$state" "$state/munge"
 
@@ -104,7 +107,7 @@ EOF
 stop() {
   local d
   for d in slurmd slurmctld munged; do
-    if pid_alive "$state/run/$d.pid"; then
+    if pid_alive "$state/run/$d.pid" "$d"; then
       local pid; pid="$(cat "$state/run/$d.pid")"
       kill "$pid" 2>/dev/null || true
       for _ in $(seq 1 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.2; done
