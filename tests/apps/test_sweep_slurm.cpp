@@ -126,10 +126,12 @@ TEST_CASE("a sweep as a SLURM job array: a task killed and requeued resumes; out
   auto requeue = run_program("scontrol", "requeue " + task, env);
   INFO(requeue.output);
   REQUIRE(requeue.status == 0);
-  // A requeued job waits for a begin time; let it start as soon as a CPU is free.
+  // A requeued job waits for a begin time (about 2 min); once it is pending again (the requeue
+  // takes effect when the task has stopped), let it start as soon as a CPU is free.
   REQUIRE(wait_until(60, [&] {
-    return run_program("scontrol", "update JobId=" + task + " StartTime=now", env).status == 0;
+    return run_program("scontrol", "show job " + task, env).output.find("JobState=PENDING") != std::string::npos;
   }));
+  REQUIRE(run_program("scontrol", "update JobId=" + task + " StartTime=now", env).status == 0);
   REQUIRE(wait_until(600, [&] { return trimmed(run_program("squeue", "-h -j " + job, env).output).empty(); }));
 
   auto status = run_ppsynth("sweep status " + on_slurm);
