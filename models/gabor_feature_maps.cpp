@@ -138,10 +138,12 @@ inline void eval_term(T dx, T dy, T inv2s2, const Phases<T>& P, int64_t i, const
   }
 }
 
+// Filled from GaborMapsOptions by forward() and from the autograd context by backward(): no
+// defaults of its own (those are GaborMapsOptions').
 struct MapsParams {
-  double sigma = 0.05;     // output-grid sigma (already divided by u)
-  double frequency = 1.5;  // f = 1.5 u
-  int k = 30;
+  double sigma = 0;        // output-grid sigma (already divided by u)
+  double frequency = 0;    // f = base_frequency u
+  int k = 0;
   bool periodic = false;
   std::vector<GaborChannel> channels;
 

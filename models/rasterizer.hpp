@@ -23,7 +23,7 @@ class Rasterizer : public torch::nn::Module {
 struct RasterizerArgs {
   int res = 128;        // grid positions per axis of THIS raster (output: u * exemplar res)
   double upscale = 1;   // u
-  int k = 30;           // neighbours (Gabor)
+  int k = 0;            // neighbours (Gabor): the method's "k", which defaults to GaborMapsOptions::k
   bool output = false;  // the raster of the synthesised points (not the exemplar's)
 };
 

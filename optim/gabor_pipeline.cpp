@@ -6,6 +6,7 @@
 #include "core/memory_budget.hpp"
 #include "core/metrics/nearest_neighbor.hpp"
 #include "models/feature_grid.hpp"
+#include "models/gabor_feature_maps.hpp"
 #include "optim/sigma_schedule.hpp"
 
 namespace ppsynth {
@@ -16,7 +17,7 @@ json gabor_defaults() {
       {"c2", 2.6},
       {"num_sigmas", 4},
       {"grid", {{"res", 0}, {"min_res", 128}, {"max_res", 256}}},  // res 0 = clamp(round(9/d))
-      {"k", 30},                                                   // neighbours: min(M, k)
+      {"k", GaborMapsOptions{}.k},                                 // neighbours: min(M, k)
       // M = the exemplar points of the classes in play at a class stage (the published disk
       // and multi-attribute optimisers); false: M = all exemplar points (its point optimiser).
       {"k_per_stage", true},

@@ -24,16 +24,18 @@ json gabor_defaults();
 // The range of each numeric default (core/config/param_bounds.hpp), checked on creation.
 json gabor_bounds();
 
+// Resolved from the method's params by resolve_gabor_settings: the defaults are gabor_defaults()'s
+// and the run config's, declared once there; the zeros below are not values a run can get.
 struct GaborSettings {
   double mean_nn_distance = 0;  // d of the exemplar (all classes)
-  int res = 128;                // exemplar grid; the output grid is u * res
-  int upscale = 2;
-  int k = 30;                   // neighbours per grid position: min(M, k)
+  int res = 0;                  // exemplar grid; the output grid is u * res
+  int upscale = 0;
+  int k = 0;                    // neighbours per grid position: min(M, k)
   bool k_per_stage = true;      // k = min(k, exemplar points of the stage's classes)
   std::vector<double> sigmas;   // coarse -> fine
   std::vector<int> attr_cols;   // attribute columns weighting the maps
   std::vector<int> class_order;
-  int max_iterations = 500;
+  int max_iterations = 0;
   bool jitter = true;
   ConvergenceRule rule;
   json feature_net;             // the net spec after --quick shrinking
