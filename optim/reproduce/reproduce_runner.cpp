@@ -257,18 +257,6 @@ std::string run_seed_sweep(const ReproduceConfig& c, const ReproduceOptions& o) 
   std::vector<std::string> panels;
   for (const auto& p : c.panels) panels.push_back(p.name);
   if (!o.panels.empty()) spec["panels"] = panels;
-  if (o.seeds.find(',') != std::string::npos) {
-    spec["seeds"] = json::array();
-    for (size_t a = 0, b; a <= o.seeds.size(); a = b + 1) {
-      b = o.seeds.find(',', a);
-      if (b == std::string::npos) b = o.seeds.size();
-      const std::string one = o.seeds.substr(a, b - a);
-      if (!one.empty() && one.find_first_not_of("0123456789") == std::string::npos) spec["seeds"].push_back(std::stoull(one));
-      else spec["seeds"].push_back(one);
-    }
-  } else if (!o.seeds.empty() && o.seeds.find_first_not_of("0123456789") == std::string::npos) {
-    spec["seeds"] = std::stoull(o.seeds);
-  }
   const std::string dir = o.sweep_dir.empty() ? "sweeps/" + c.name + (o.quick ? "-quick" : "") : o.sweep_dir;
   const PlanSummary plan = plan_sweep(expand_sweep_spec(spec, c.source, fs::path(c.source).parent_path().string()), dir);
   spdlog::info("[{}] over seeds {}: {} runs in the sweep {}", c.name, o.seeds, plan.rows, plan.dir);

@@ -135,12 +135,23 @@ std::vector<uint64_t> parse_seeds(const nlohmann::json& seeds, const std::string
       add(s.get<uint64_t>());
       continue;
     }
-    unsigned long long a = 0, b = 0;
-    char tail = 0;
-    if (!s.is_string() || std::sscanf(s.get<std::string>().c_str(), "%llu-%llu%c", &a, &b, &tail) != 2 || b < a ||
-        b - a > 100000)
-      throw config_error(kp, "expected a seed >= 0 or a range \"first-last\" (at most 100000 seeds)");
-    for (auto v = a; v <= b; ++v) add(v);
+    const auto bad = [&] {
+      return config_error(kp, "expected a seed >= 0, a range \"first-last\" (at most 100000 seeds) or a list of "
+                              "both separated by commas (\"95,97-98\")");
+    };
+    if (!s.is_string()) throw bad();
+    const std::string text = s.get<std::string>();
+    for (size_t a = 0, comma; a <= text.size(); a = comma + 1) {  // "95,97-98": each part a seed or a range
+      comma = std::min(text.find(',', a), text.size());
+      const std::string part = text.substr(a, comma - a);
+      unsigned long long first = 0, last = 0;
+      char tail = 0;
+      const int n = std::sscanf(part.c_str(), "%llu-%llu%c", &first, &last, &tail);
+      if (n == 1 && part.find_first_not_of("0123456789") == std::string::npos) last = first;
+      else if (n != 2 || part.find_first_not_of("0123456789-") != std::string::npos) throw bad();
+      if (last < first || last - first > 100000) throw bad();
+      for (auto v = first; v <= last; ++v) add(v);
+    }
   }
   if (out.empty()) throw config_error(key, "no seeds");
   return out;

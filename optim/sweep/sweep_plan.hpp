@@ -10,7 +10,7 @@
 //     "figures": ["fig05", ...],                figure configs of configs/paper: each panel's
 //                                               synthesised columns ("ours", registry methods)
 //     "panels": ["a", "b"],                     only these panels of the figures (default all)
-//     "seeds": [95, "96-99"],                   seeds and inclusive ranges
+//     "seeds": [95, "96-99"],                   seeds and inclusive ranges ("95,97-98" too)
 //     "grid": {"method.max_iterations": [40, 100]},  --set axes, every combination
 //     "set": ["method.k=20"],                   --set overrides applied to every run (in figure
 //                                               columns, method.* keys to "ours" only, as reproduce)
@@ -75,7 +75,8 @@ SweepManifest load_sweep(const std::string& dir);
 // A short stable hash of a JSON value (FNV-1a 64 of its compact dump, 12 hex digits).
 std::string json_id(const nlohmann::json& value);
 
-// "95", "96-99", [95, "97-98"] -> seeds, in order, without repeats; key names the config key.
+// 95, "95", "96-99", "95,97-98", [95, "97-98"] -> seeds, in order, without repeats; key names the
+// config key.
 std::vector<uint64_t> parse_seeds(const nlohmann::json& seeds, const std::string& key);
 
 }  // namespace ppsynth

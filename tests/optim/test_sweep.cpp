@@ -43,6 +43,10 @@ std::vector<std::string> ids(const SweepManifest& m) {
 TEST_CASE("seeds: numbers and ranges, in order, without repeats", "[sweep]") {
   CHECK(parse_seeds(json::array({95, "96-98", 95}), "seeds") == std::vector<uint64_t>{95, 96, 97, 98});
   CHECK(parse_seeds(json("7-7"), "seeds") == std::vector<uint64_t>{7});
+  CHECK(parse_seeds(json("95,97-98"), "seeds") == std::vector<uint64_t>{95, 97, 98});
+  CHECK(parse_seeds(json("95"), "seeds") == std::vector<uint64_t>{95});
+  CHECK_THROWS_WITH(parse_seeds(json("95,x"), "seeds"), Catch::Contains("seeds[0]"));
+  CHECK_THROWS_WITH(parse_seeds(json("9--3"), "seeds"), Catch::Contains("seeds[0]"));
   CHECK_THROWS_WITH(parse_seeds(json::array({"9-3"}), "seeds"), Catch::Contains("seeds[0]"));
   CHECK_THROWS_WITH(parse_seeds(json::array({-1}), "seeds"), Catch::Contains("seeds[0]"));
   CHECK_THROWS_WITH(parse_seeds(json::array(), "seeds"), Catch::Contains("no seeds"));
