@@ -12,8 +12,18 @@ class InputError : public std::runtime_error {
   explicit InputError(const std::string& what) : std::runtime_error(what) {}
 };
 
+// An input file that is not there: an InputError a front end can tell apart (the Python
+// package raises FileNotFoundError for it; the command prints it like any other).
+class MissingFileError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 // "path:line: message" (line <= 0 leaves the line out).
 InputError file_error(const std::string& path, long line, const std::string& message);
+// After a failed open of the input file `path` (`what`: "file", "config"): a MissingFileError
+// "path: no such file" when nothing is there, else an InputError "path: cannot open WHAT".
+[[noreturn]] void throw_open_error(const std::string& path, const std::string& what);
 // "config key 'a.b': message".
 InputError config_error(const std::string& key_path, const std::string& message);
 

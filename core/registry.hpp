@@ -44,6 +44,14 @@ class Registry {
       throw std::logic_error("duplicate registration of '" + name + "'");
     return true;
   }
+  // For parts defined while the program runs (a Python callable registered, then redefined in
+  // a notebook): replaces the entry of a name the caller added earlier. The caller keeps track
+  // of which names are its own; compiled-in parts are never replaced.
+  void replace(const std::string& name, Entry e) {
+    auto it = entries_.find(name);
+    if (it == entries_.end()) throw std::logic_error("replace: '" + name + "' is not registered");
+    it->second = std::move(e);
+  }
   bool contains(const std::string& name) const { return entries_.count(name) > 0; }
   const Entry& entry(const std::string& name, const std::string& key_path = "type") const {
     auto it = entries_.find(name);

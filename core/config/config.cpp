@@ -21,7 +21,7 @@ json read_json_file(const std::string& path) {
   // A directory opens as a stream on Linux, then fails mid-read (was "internal error").
   if (fs::is_directory(path, ec)) throw file_error(path, 0, "is a directory, not a config file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw file_error(path, 0, "cannot open config");
+  if (!in) throw_open_error(path, "config");
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw file_error(path, 0, "read error");

@@ -15,6 +15,7 @@
 #include "core/formats/point_synthesis_format.hpp"
 #include "core/formats/text_table.hpp"
 #include "core/log.hpp"
+#include "core/paths.hpp"
 
 namespace ppsynth {
 
@@ -251,7 +252,8 @@ PointSet parse_points(const std::string& text, const std::string& source, const 
   return parse_text(text, source, opts, /*validate_too=*/false);
 }
 
-PointSet read_points(const std::string& path, const ReadOptions& opts) {
+PointSet read_points(const std::string& name, const ReadOptions& opts) {
+  const std::string path = resolve_data_path(name);  // "shared:data/..." wherever a file is read
   PointSet ps = parse_text(read_file_text(path), path, opts, /*validate_too=*/true);
   report_coincident(ps, path);
   spdlog::debug("read {}: {} points, {} classes, {} attributes", path, ps.size(), ps.num_classes(),

@@ -14,7 +14,8 @@
 
 namespace ppsynth {
 
-// Reads a point file. Format::Auto detects it (detect_format). The result is validated
+// Reads a point file ("shared:data/..." names a file of the shared folder, core/paths.hpp).
+// Format::Auto detects it (detect_format). The result is validated
 // (core/point_set.hpp validate: finite, inside the domain, radii > 0, no empty class) and a
 // warning lists coincident points (they are reported, not rejected). Every error names the
 // file (and line) and the format it was read as.

@@ -18,7 +18,7 @@ std::string read_file_text(const std::string& path) {
   // A directory opens as a stream on Linux and reads as empty or fails mid-read.
   if (std::filesystem::is_directory(path, ec)) throw file_error(path, 0, "is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw file_error(path, 0, "cannot open (missing or unreadable file)");
+  if (!in) throw_open_error(path, "file");
   std::ostringstream s;
   s << in.rdbuf();
   if (in.bad()) throw file_error(path, 0, "read error");

@@ -137,7 +137,16 @@ json overlap_json(const PointSet& ps, bool periodic) {
 
 }  // namespace
 
+void check_eval_options(const EvalOptions& opt) {
+  if (opt.pcf.bins < 2 || opt.pcf.bins > 10000) throw InputError("bins (--bins) must be in 2..10000");
+  if (!(opt.pcf.r_max >= 0) || opt.pcf.r_max > 1)
+    throw InputError("r_max (--r-max) must be in (0, 1] (0 = from the exemplar's count)");
+  if (opt.wasserstein_max_pairs < 1 || opt.wasserstein_max_pairs > 400000000)
+    throw InputError("wasserstein_exact_limit (--wasserstein-exact-limit) must be in 1..400000000 pairs (a 3.2 GB cost matrix)");
+}
+
 json evaluate(const PointSet& exemplar, const PointSet& output, const EvalOptions& opt) {
+  check_eval_options(opt);
   if (exemplar.empty()) throw InputError("evaluate: the exemplar is empty");
   if (output.empty()) throw InputError("evaluate: the output is empty");
   check_domain(exemplar, "exemplar");

@@ -48,6 +48,12 @@ struct EvalOptions {
   size_t wasserstein_max_pairs = kWassersteinExactPairs;  // exact assignment up to this many pairs
 };
 
+// Refuses options no evaluation can use (InputError naming the option and the command's
+// flag): bins outside 2..10000, r_max outside [0, 1] (radii reach 2.5 r_max: beyond 1 every
+// pair is within reach and the PCF turns quadratic; NaN too), an exact-Wasserstein limit
+// outside 1..4e8 pairs (a 3.2 GB cost matrix). evaluate() calls it first.
+void check_eval_options(const EvalOptions& opt);
+
 nlohmann::json evaluate(const PointSet& exemplar, const PointSet& output,
                         const EvalOptions& opt = {});
 

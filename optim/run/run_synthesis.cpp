@@ -35,6 +35,7 @@ RunOutcome execute(RunOutcome o, RunDirectory& dir, const std::string& name, con
   SynthesisOptions options;
   options.quick = req.quick;
   options.observers = {&progress, &losses, &snaps};
+  options.observers.insert(options.observers.end(), req.observers.begin(), req.observers.end());
   bool checkpointed = resume_state != nullptr;
   options.save_checkpoint = [&](const std::string& bytes) {
     AtomicFile f(o.dir + "/" + kCheckpoint, std::ios::binary);

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -25,6 +26,9 @@ struct RunRequest {
   // Set (by a signal handler, say) to stop: the method saves a checkpoint at the end of the
   // iteration and RunInterrupted propagates; resume_synthesis continues the run.
   const std::atomic<bool>* stop = nullptr;
+  // Told of every stage and iteration beside the run's own progress log, snapshot writer and
+  // loss recorder (a front end's progress display, say).
+  std::vector<SynthesisObserver*> observers;
 };
 
 // Thrown when request.stop stopped a run: its checkpoint is in `dir`, for resume_synthesis.

@@ -80,8 +80,8 @@ ExecutionSummary execute_local(const std::string& sweep_dir, const LocalExecutio
     if (s.state == RowState::Done || s.state == RowState::Running) ++sum.skipped;
     else queue.push_back(i);
   }
-  spdlog::info("sweep {}: {} runs to do, {} done or running; {} at once, {} threads each", m.name, queue.size(),
-               sum.skipped, how.jobs, threads);
+  spdlog::info("sweep {}: {} runs to do, {} done or running; {} at once, {} thread{} each", m.name, queue.size(),
+               sum.skipped, how.jobs, threads, threads == 1 ? "" : "s");
   std::map<pid_t, std::pair<size_t, std::chrono::steady_clock::time_point>> running;
   bool stopping = false;
   auto stop_all = [&] {

@@ -303,7 +303,8 @@ TEST_CASE("bad input throws InputError naming file and line", "[formats]") {
     const std::string f = t.file("empty.txt", "\n  \n");
     require_input_error([&] { read_points(f, ReadOptions{fm}); }, f, 0, "no points");
   }
-  require_input_error([&] { read_points(t.path("missing.txt")); }, t.path("missing.txt"), 0, "cannot open");
+  require_input_error([&] { read_points(t.path("missing.txt")); }, t.path("missing.txt"), 0, "no such file");
+  REQUIRE_THROWS_AS(read_points(t.path("missing.txt")), MissingFileError);  // FileNotFoundError in Python
   // A class without points (plain ids 0 and 2) fails validation, naming the file.
   const std::string gap = t.file("gap.txt", "# x y class\n0.1 0.1 0\n0.2 0.2 2\n");
   require_input_error([&] { read_points(gap); }, gap, 0, "class 1");

@@ -12,7 +12,6 @@
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/metrics/evaluation.hpp"
-#include "core/paths.hpp"
 
 namespace {
 
@@ -41,16 +40,6 @@ ppsynth::app::RunFn setup(CLI::App& app) {
                  "exact Wasserstein up to this many exemplar x patch point pairs per quadrant (default 4000000, "
                  "~0.5 s each); beyond, a labelled subsample estimate");
   return [a]() {
-    if (a->bins < 2 || a->bins > 10000) throw ppsynth::InputError("--bins must be in 2..10000");
-    // r_max is in unit-square units (radii reach 2.5 r_max): beyond 1 every pair of every
-    // point is within reach and the PCF turns quadratic; NaN/inf are refused too.
-    if (!(a->r_max >= 0) || a->r_max > 1) throw ppsynth::InputError("--r-max must be in (0, 1] (0 = from the exemplar's count)");
-    if (a->wasserstein_pairs < 1 || a->wasserstein_pairs > 400000000)
-      throw ppsynth::InputError("--wasserstein-exact-limit must be in 1..400000000 pairs (a 3.2 GB cost matrix)");
-    ppsynth::ReadOptions ro;
-    ro.format = ppsynth::parse_format(a->format);
-    ppsynth::PointSet ex = ppsynth::read_points(ppsynth::resolve_data_path(a->exemplar), ro);
-    ppsynth::PointSet out = ppsynth::read_points(ppsynth::resolve_data_path(a->output), ro);
     ppsynth::EvalOptions opt;
     opt.include_curves = !a->no_curves;
     opt.spectrum = a->spectrum;
@@ -58,6 +47,11 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     opt.pcf.bins = a->bins;
     opt.pcf.r_max = a->r_max;
     opt.wasserstein_max_pairs = a->wasserstein_pairs;
+    ppsynth::check_eval_options(opt);  // before reading: a bad option is reported first
+    ppsynth::ReadOptions ro;
+    ro.format = ppsynth::parse_format(a->format);
+    ppsynth::PointSet ex = ppsynth::read_points(a->exemplar, ro);
+    ppsynth::PointSet out = ppsynth::read_points(a->output, ro);
     nlohmann::json r = ppsynth::evaluate(ex, out, opt);
     r["exemplar"]["path"] = a->exemplar;
     r["output"]["path"] = a->output;

@@ -1,0 +1,35 @@
+// evaluate(): the evaluation suite of `ppsynth eval` (core/metrics/evaluation.hpp), returned as
+// the same JSON text `eval --json` prints; the package turns its curves into NumPy arrays.
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "core/metrics/evaluation.hpp"
+
+namespace ppsynth::python {
+
+void bind_evaluation(py::module_& m) {
+  m.def(
+      "evaluate_json",
+      [](const py::dict& exemplar, const py::dict& output, int bins, double r_max, bool periodic_pcf, bool curves,
+         bool spectrum, size_t wasserstein_exact_limit) {
+        EvalOptions opt;
+        opt.pcf.bins = bins;
+        opt.pcf.r_max = r_max;
+        opt.pcf.periodic = periodic_pcf;
+        opt.include_curves = curves;
+        opt.spectrum = spectrum;
+        opt.wasserstein_max_pairs = wasserstein_exact_limit;
+        check_eval_options(opt);
+        const PointSet ex = from_python(exemplar, "exemplar");
+        const PointSet out = from_python(output, "output");
+        validate(ex, "exemplar");
+        validate(out, "output");
+        py::gil_scoped_release unlocked;  // seconds on large sets; nothing here touches Python
+        return evaluate(ex, out, opt).dump();
+      },
+      py::arg("exemplar"), py::arg("output"), py::arg("bins"), py::arg("r_max"), py::arg("periodic_pcf"),
+      py::arg("curves"), py::arg("spectrum"), py::arg("wasserstein_exact_limit"));
+  m.attr("WASSERSTEIN_EXACT_PAIRS") = kWassersteinExactPairs;
+}
+
+}  // namespace ppsynth::python

@@ -1,0 +1,277 @@
+// Synthesis from Python on the run library (optim/run): synthesize() in memory, run() and
+// resume() into run directories. The synthesis runs on the caller's thread with the GIL
+// released; at every iteration a PythonWatch takes the GIL for a moment to hand the progress
+// callable its event and to check for Ctrl-C. Either one raising stops the run at the end of
+// the iteration -- the method writes its checkpoint first -- and the exception (a
+// KeyboardInterrupt for Ctrl-C) is raised when the call returns.
+#include <pybind11/stl.h>
+#include <torch/torch.h>
+
+#include <atomic>
+#include <filesystem>
+#include <memory>
+
+#include "bindings.hpp"
+#include "core/atomic_file.hpp"
+#include "core/config/config.hpp"
+#include "core/config/json_text.hpp"
+#include "core/error.hpp"
+#include "core/formats/point_io.hpp"
+#include "core/formats/text_table.hpp"
+#include "optim/run/run_config.hpp"
+#include "optim/run/run_observers.hpp"
+#include "optim/run/run_synthesis.hpp"
+#include "optim/run/runtime.hpp"
+#include "optim/run/synthesize.hpp"
+#include "optim/sweep/sweep_plan.hpp"
+
+namespace fs = std::filesystem;
+
+namespace ppsynth::python {
+
+namespace {
+
+// The process-wide settings of optim/run/runtime.hpp, applied at the first synthesis (never at
+// import); `threads` > 0 overrides PPSYNTH_THREADS for this and later calls.
+int apply_runtime(int threads) {
+  configure_runtime();
+  if (threads < 0 || threads > 1024) throw InputError("threads: expected 0 (all cores, or PPSYNTH_THREADS) to 1024");
+  if (threads > 0) torch::set_num_threads(threads);
+  return at::get_num_threads();
+}
+
+py::dict event_dict(const ProgressEvent& e) {
+  py::dict d;
+  d["stage"] = e.stage;
+  d["stage_index"] = e.stage_index;
+  d["stage_count"] = e.stage_count;
+  d["iteration"] = e.iteration;
+  d["max_iterations"] = e.max_iterations;
+  d["loss"] = e.loss;
+  d["seconds"] = e.seconds;
+  return d;
+}
+
+class PythonWatch : public SynthesisObserver {
+ public:
+  PythonWatch(py::object progress, bool resumable) : progress_(std::move(progress)), resumable_(resumable) {}
+  ~PythonWatch() override {
+    py::gil_scoped_acquire gil;  // the Python objects held here go with the GIL
+    error_.reset();
+    progress_ = py::object();
+  }
+
+  void on_iteration(const ProgressEvent& e) override {
+    py::gil_scoped_acquire gil;
+    if (error_) return;
+    if (PyErr_CheckSignals() != 0) {
+      error_ = std::make_unique<py::error_already_set>();
+    } else if (!progress_.is_none()) {
+      try {
+        progress_(event_dict(e));
+      } catch (py::error_already_set& err) {
+        error_ = std::make_unique<py::error_already_set>(std::move(err));
+      }
+    }
+    if (!error_) return;
+    stop_.store(true);
+    // A method that cannot checkpoint ignores the stop flag: end it here instead.
+    if (!resumable_) throw py::error_already_set(*error_);
+  }
+
+  const std::atomic<bool>* stop() const { return &stop_; }
+  bool stopped() const { return error_ != nullptr; }
+  // With the GIL: raises what stopped the run.
+  [[noreturn]] void raise() { throw py::error_already_set(*error_); }
+
+ private:
+  py::object progress_;
+  bool resumable_;
+  std::atomic<bool> stop_{false};
+  std::unique_ptr<py::error_already_set> error_;
+};
+
+// synthesize(checkpoint_dir=...): the checkpoint of one in-memory synthesis, in a directory
+// the caller names. checkpoint.json holds the key of the synthesis (config, seed, quick,
+// exemplar), so a checkpoint of another synthesis is refused rather than resumed.
+class CheckpointDir {
+ public:
+  CheckpointDir(std::string dir, const json& spec, bool quick, const PointSet& exemplar) : dir_(std::move(dir)) {
+    key_ = json_id({{"synthesis", synthesis_key(spec)}, {"quick", quick}, {"exemplar", format_points(exemplar, Format::Plain)}});
+  }
+  std::string bin() const { return dir_ + "/checkpoint.bin"; }
+  std::string meta() const { return dir_ + "/checkpoint.json"; }
+
+  // The bytes of this synthesis's checkpoint, or nullopt when the directory has none.
+  std::optional<std::string> load() const {
+    if (!fs::exists(bin())) return std::nullopt;
+    const json m = fs::exists(meta()) ? parse_json_text(read_file_text(meta()), meta(), false) : json();
+    if (!m.is_object() || m.value("key", "") != key_)
+      throw InputError("checkpoint_dir " + dir_ + ": its checkpoint belongs to another synthesis (other exemplar, config, "
+                       "seed or quick setting); name another directory, or remove " + bin() + " to start afresh");
+    return read_file_text(bin());
+  }
+  void save(const std::string& bytes) {
+    if (!written_meta_) {
+      fs::create_directories(dir_);
+      write_text_atomic(meta(), json{{"ppsynth", "checkpoint of ppsynth.synthesize"}, {"key", key_}}.dump(2) + "\n");
+      written_meta_ = true;
+    }
+    AtomicFile f(bin(), std::ios::binary);
+    f.stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    f.commit();
+  }
+  // A finished synthesis needs no checkpoint: remove the two files (and nothing else).
+  void finish() {
+    std::error_code ec;
+    fs::remove(bin(), ec);
+    fs::remove(meta(), ec);
+  }
+
+ private:
+  std::string dir_, key_;
+  bool written_meta_ = false;
+};
+
+py::list stage_list(const std::vector<StageResult>& stages) {
+  py::list l;
+  for (const auto& s : stages) {
+    py::dict d;
+    d["stage"] = s.stage;
+    d["iterations"] = s.iterations;
+    d["final_loss"] = s.final_loss;
+    d["seconds"] = s.seconds;
+    l.append(d);
+  }
+  return l;
+}
+
+py::list loss_rows(const LossRecorder& losses) {
+  py::list l;
+  for (const auto& r : losses.rows()) l.append(py::make_tuple(r.stage_index, r.stage, r.iteration, r.loss, r.seconds));
+  return l;
+}
+
+py::dict outcome_dict(const RunOutcome& o) {
+  py::dict d;
+  d["dir"] = o.dir;
+  d["exemplar"] = to_python(o.exemplar);
+  d["initialization"] = to_python(o.initialization);
+  d["output"] = to_python(o.output);
+  d["stats_json"] = o.stats.dump();
+  d["metrics_json"] = o.metrics.dump();
+  d["config_json"] = o.config.dump();
+  d["seconds"] = o.seconds;
+  return d;
+}
+
+py::dict synthesize_in_memory(const py::dict& exemplar_py, const std::string& spec_json, bool quick,
+                              const py::object& initialization_py, const py::object& progress,
+                              const std::string& checkpoint_dir, int threads) {
+  const json spec = parse_json_text(spec_json, "config", false);
+  const PointSet exemplar = from_python(exemplar_py, "exemplar");
+  validate(exemplar, "exemplar");
+  std::optional<PointSet> init;
+  if (!initialization_py.is_none()) {
+    init = from_python(initialization_py, "initialization");
+    validate(*init, "initialization");
+  }
+  const int used_threads = apply_runtime(threads);
+  const bool resumable = can_resume(spec);
+  if (!checkpoint_dir.empty() && !resumable)
+    throw InputError("checkpoint_dir: the method " + spec["method"].value("type", std::string("?")) + " cannot checkpoint");
+
+  LossRecorder losses;
+  PythonWatch watch(progress, resumable);
+  SynthesisOptions options;
+  options.quick = quick;
+  options.observers = {&losses, &watch};
+  options.initialization = init ? &*init : nullptr;
+  options.stop = watch.stop();
+  std::unique_ptr<CheckpointDir> checkpoints;
+  std::optional<std::string> resume_state;
+  if (!checkpoint_dir.empty()) {
+    checkpoints = std::make_unique<CheckpointDir>(checkpoint_dir, spec, quick, exemplar);
+    resume_state = checkpoints->load();
+    options.resume_state = resume_state ? &*resume_state : nullptr;
+    options.save_checkpoint = [&](const std::string& bytes) { checkpoints->save(bytes); };
+  }
+  SynthesisResult r;
+  try {
+    py::gil_scoped_release unlocked;
+    r = synthesize(exemplar, spec, options);
+  } catch (const SynthesisInterrupted&) {
+    if (!watch.stopped()) throw;
+    watch.raise();
+  }
+  if (watch.stopped()) watch.raise();  // stopped during the last iteration: the checkpoint stays
+  if (checkpoints) checkpoints->finish();
+
+  py::dict d;
+  d["output"] = to_python(r.output);
+  d["initialization"] = to_python(r.initialization);
+  d["stages"] = stage_list(r.stages);
+  d["losses"] = loss_rows(losses);
+  d["stats_json"] = r.stats.dump();
+  d["metrics_json"] = r.metrics.dump();
+  d["seconds"] = r.seconds;
+  d["threads"] = used_threads;
+  d["resumed"] = resume_state.has_value();
+  return d;
+}
+
+py::dict run_into_directory(const std::string& spec_json, const std::string& dir, bool quick, bool force,
+                            const py::object& progress, int threads, bool resume) {
+  apply_runtime(threads);
+  RunRequest req;
+  req.dir = dir;
+  req.quick = quick;
+  req.force = force;
+  json spec;
+  if (!resume) spec = parse_json_text(spec_json, "config", false);
+  else spec = read_run_json(dir + "/config.json");
+  PythonWatch watch(progress, can_resume(spec));
+  req.stop = watch.stop();
+  req.observers = {&watch};
+  RunOutcome o;
+  try {
+    py::gil_scoped_release unlocked;
+    o = resume ? resume_synthesis(dir, req) : run_synthesis(spec, req);
+  } catch (const RunInterrupted&) {
+    if (!watch.stopped()) throw;
+    watch.raise();
+  }
+  if (watch.stopped()) watch.raise();
+  return outcome_dict(o);
+}
+
+}  // namespace
+
+void bind_synthesis(py::module_& m) {
+  m.def("load_config", [](const std::string& path) { return load_config(path).dump(); }, py::arg("path"));
+  m.def(
+      "resolve_config",
+      [](const std::string& config_json, const std::vector<std::string>& overrides) {
+        return resolve_run_config(parse_json_text(config_json, "config", false), overrides).dump();
+      },
+      py::arg("config_json"), py::arg("overrides"));
+  m.def("can_resume", [](const std::string& spec_json) { return can_resume(parse_json_text(spec_json, "config", false)); });
+  m.def("load_exemplar", [](const std::string& spec_json) { return to_python(load_exemplar(parse_json_text(spec_json, "config", false))); });
+  m.def("synthesize", &synthesize_in_memory, py::arg("exemplar"), py::arg("spec_json"), py::arg("quick"),
+        py::arg("initialization"), py::arg("progress"), py::arg("checkpoint_dir"), py::arg("threads"));
+  m.def(
+      "run",
+      [](const std::string& spec_json, const std::string& dir, bool quick, bool force, const py::object& progress, int threads) {
+        return run_into_directory(spec_json, dir, quick, force, progress, threads, false);
+      },
+      py::arg("spec_json"), py::arg("dir"), py::arg("quick"), py::arg("force"), py::arg("progress"), py::arg("threads"));
+  m.def(
+      "resume",
+      [](const std::string& dir, const py::object& progress, int threads) {
+        return run_into_directory("", dir, false, false, progress, threads, true);
+      },
+      py::arg("dir"), py::arg("progress"), py::arg("threads"));
+  m.def("threads", [] { return at::get_num_threads(); }, "the intra-op thread count LibTorch uses now");
+}
+
+}  // namespace ppsynth::python

@@ -1,0 +1,43 @@
+"""evaluate() returns the numbers of `ppsynth eval --json`, with NumPy curves."""
+import json
+
+import numpy as np
+import pytest
+
+import ppsynth
+from conftest import GABOR, command
+
+
+def as_lists(node):
+    if isinstance(node, dict):
+        return {k: as_lists(v) for k, v in node.items()}
+    if isinstance(node, list):
+        return [as_lists(v) for v in node]
+    if isinstance(node, np.ndarray):
+        return node.tolist()
+    return node
+
+
+@pytest.mark.parametrize("name", ["poisson_n64c2_disk", "lines"])
+def test_evaluate_equals_eval_json(tmp_path, name):
+    ex = ppsynth.read(GABOR + f"{name}.txt")
+    rng = np.random.default_rng(5)
+    n = 4 * len(ex)
+    out = ppsynth.PointSet(rng.random((n, 2)), np.repeat(ex.classes, 4), np.repeat(ex.attributes, 4, axis=0),
+                           ex.attribute_names, class_labels=ex.class_labels)
+    ppsynth.write(out, tmp_path / "out.txt")
+    r = ppsynth.evaluate(ex, out, bins=40)
+    assert isinstance(r["all"]["pcf"]["output"], np.ndarray) and r["all"]["pcf"]["output"].shape == (40,)
+    _, text, _ = command("eval", "--exemplar", GABOR + f"{name}.txt", "--output", tmp_path / "out.txt", "--json",
+                         "--bins", 40)
+    expected = json.loads(text)
+    del expected["exemplar"]["path"], expected["output"]["path"]
+    assert as_lists(r) == expected
+
+
+def test_evaluate_refuses_impossible_options():
+    ex = ppsynth.read(GABOR + "lines.txt")
+    with pytest.raises(ValueError, match=r"bins \(--bins\) must be in 2..10000"):
+        ppsynth.evaluate(ex, ex, bins=1)
+    with pytest.raises(ValueError, match="r_max"):
+        ppsynth.evaluate(ex, ex, r_max=float("nan"))

@@ -1,0 +1,63 @@
+"""The package as a user meets it: importing has no side effects, it works without torch
+(except Python terms), help() is useful, and the README's example runs."""
+import os
+import subprocess
+import sys
+
+import pytest
+
+from conftest import SOURCE_DIR
+
+
+def python(code, **env):
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env={**os.environ, **env})
+    assert p.returncode == 0, p.stderr
+    return p.stdout
+
+
+def test_import_starts_no_thread_and_loads_no_torch():
+    # NumPy's OpenBLAS starts its thread pool when NumPy loads: count from there.
+    out = python("import re, sys, numpy\n"
+                 "def threads(): return int(re.search(r'Threads:\\s+(\\d+)', open('/proc/self/status').read()).group(1))\n"
+                 "before = threads()\n"
+                 "import ppsynth\n"
+                 "print(before, threads(), 'torch' in sys.modules)")
+    before, after, torch_loaded = out.split()
+    assert after == before and torch_loaded == "False"
+
+
+def test_works_without_torch(tmp_path):
+    out = python("import sys; sys.modules['torch'] = None\n"
+                 "import ppsynth\n"
+                 "ex = ppsynth.read('shared:data/exemplars/gabor-paper/lines.txt')\n"
+                 "r = ppsynth.synthesize(ex, quick=True, threads=1)\n"
+                 "print(len(r.output), ppsynth.evaluate(ex, r.output)['all']['pcf_mse'] >= 0)\n"
+                 "try:\n"
+                 "    ppsynth.register_loss('x', lambda o, t, p: o[0].sum())\n"
+                 "except ImportError as e:\n"
+                 "    print('ImportError', e)\n")
+    lines = out.splitlines()
+    assert lines[0] == "80 True"
+    assert lines[1].startswith("ImportError") and "python3-torch" in lines[1]
+
+
+def test_help_documents_the_api():
+    import ppsynth
+    for f in (ppsynth.synthesize, ppsynth.read, ppsynth.write, ppsynth.evaluate, ppsynth.register_loss,
+              ppsynth.register_point_term, ppsynth.run, ppsynth.resume, ppsynth.generate):
+        assert f.__doc__ and len(f.__doc__) > 200, f.__name__
+    assert "checkpoint_dir" in ppsynth.synthesize.__doc__ and "KeyboardInterrupt" in ppsynth.synthesize.__doc__
+
+
+def test_readme_example_runs(tmp_path):
+    pytest.importorskip("matplotlib")
+    script = os.path.join(SOURCE_DIR, "docs", "examples", "python_quickstart.py")
+    p = subprocess.run([sys.executable, script, str(tmp_path / "lines.png"), "--quick"], capture_output=True, text=True,
+                       env={**os.environ, "PPSYNTH_THREADS": "1"}, cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+    assert "20 -> 80 points" in p.stdout
+    assert (tmp_path / "lines.png").stat().st_size > 10000
+    # The README shows this script.
+    readme = open(os.path.join(SOURCE_DIR, "README.md")).read()
+    body = open(script).read()
+    assert body.split('"""', 2)[2].strip() in readme

@@ -1,0 +1,57 @@
+#!/usr/bin/python3
+"""What a loss term written in Python costs per iteration against the same term compiled.
+
+On `lines` at the published settings (256 x 256 grid), the first stage's iterations are timed
+with the compiled "gram" loss and with the same Gram loss written in Python (python
+registered as "py_gram"), alternating, REPEATS times each; prints the median seconds per
+iteration of each and their ratio. Usage (after scripts/install_python.sh, or with
+PYTHONPATH=build/python):  /usr/bin/python3 scripts/bench_python_terms.py [ITERATIONS] [REPEATS]
+"""
+import statistics
+import sys
+import time
+
+import ppsynth
+
+ITERATIONS = int(sys.argv[1]) if len(sys.argv) > 1 else 30
+REPEATS = int(sys.argv[2]) if len(sys.argv) > 2 else 3
+LINES = "shared:data/exemplars/gabor-paper/lines.txt"
+
+
+@ppsynth.register_loss("py_gram", defaults={"weight": 0.08, "layers": [0, 1, 2]})
+def py_gram(output, target, params):
+    def gram(f):
+        m = f.reshape(f.shape[1], -1)
+        return m @ m.t() / f.numel()
+    return sum((gram(o) - gram(t)).pow(2).sum() for o, t in zip(output, target))
+
+
+def seconds_per_iteration(losses):
+    stamps = []
+
+    def progress(p):
+        if p.stage_index == 0:
+            stamps.append(time.perf_counter())
+        elif len(stamps) >= ITERATIONS:
+            raise StopIteration
+    try:
+        ppsynth.synthesize(LINES, seed=95, progress=progress,
+                           overrides={"evaluate": False, "method.max_iterations": ITERATIONS,
+                                      "method.losses": losses})
+    except StopIteration:
+        pass
+    steps = [b - a for a, b in zip(stamps[1:], stamps[2:])]  # the first iteration builds the targets
+    return statistics.median(steps)
+
+
+compiled = ppsynth.resolve_config({"exemplar": LINES})["method"]["losses"]
+python = [dict(l, type="py_gram") if l["type"] == "gram" else l for l in compiled]
+times = {"compiled": [], "python": []}
+for _ in range(REPEATS):
+    times["compiled"].append(seconds_per_iteration(compiled))
+    times["python"].append(seconds_per_iteration(python))
+c, p = statistics.median(times["compiled"]), statistics.median(times["python"])
+print(f"lines, 256 x 256 grid, {ppsynth.synthesis._native.threads()} threads, {ITERATIONS} iterations x {REPEATS} runs each")
+print(f"  compiled gram      : {c:.4f} s/iteration  (runs: {', '.join(f'{t:.4f}' for t in times['compiled'])})")
+print(f"  gram in Python     : {p:.4f} s/iteration  (runs: {', '.join(f'{t:.4f}' for t in times['python'])})")
+print(f"  Python / compiled  : {p / c:.3f}  (+{1000 * (p - c):.1f} ms per iteration)")
