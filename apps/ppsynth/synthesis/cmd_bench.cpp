@@ -1,8 +1,9 @@
 // `ppsynth bench [CONFIG] [--exemplar FILE] [--reps N] [--json FILE] [--set k=v ...]`
 // Times one synthesis iteration of the Gabor method split into phases (min and median over
 // repetitions), the set-up per sigma (exemplar maps, features, loss targets), the same
-// binary's own 120 -> 120 7x7 convolution throughput, the iteration's convolution floor
-// (network FLOPs / that throughput) and the ratio, and the peak resident memory. Then whole
+// binary's own 120 -> 120 7x7 convolution throughput in float32 and in bfloat16 channels-last
+// (the bf16 network's fast path), the iteration's convolution floor on each (network FLOPs /
+// that throughput) and the iteration's ratio to each, and the peak resident memory. Then whole
 // iterations as a run takes them, through the library's synthesize() (optimiser step,
 // convergence bookkeeping, and a checkpoint written after every iteration: the worst case).
 // A benchmark: it prints numbers; no test asserts on them.
@@ -70,6 +71,25 @@ double net_flops(int in_channels, int channels, int ksize, int depth, int R) {
     conv(channels, channels, h);
   }
   return 2 * f;  // backward to the input costs as much as forward
+}
+
+// The throughput of the network's dominant operation, a 120 -> 120 7x7 convolution on an
+// R x R map, in one precision and memory layout: float32 as the default network lays it out,
+// bfloat16 channels-last as the bf16 network's fast path (the CPU's AVX512_BF16 units).
+struct ConvThroughput {
+  std::string path;
+  double gflops = 0, min_s = 0;
+};
+
+ConvThroughput conv_throughput(const std::string& path, torch::Dtype dtype, bool channels_last, int R, int reps) {
+  const auto layout = channels_last ? at::MemoryFormat::ChannelsLast : at::MemoryFormat::Contiguous;
+  auto w = torch::randn({120, 120, 7, 7}).to(dtype).contiguous(layout);
+  auto x = torch::randn({1, 120, R, R}).to(dtype).contiguous(layout);
+  Timing t = time_it(reps, [&] {
+    torch::NoGradGuard ng;
+    torch::conv2d(x, w, {}, 1, 3);
+  });
+  return {path, 2.0 * 120 * 120 * 49 * double(R) * R / t.min() / 1e9, t.min()};
 }
 
 struct Opts {
@@ -223,14 +243,11 @@ app::RunFn setup(CLI::App& app) {
     const int C = s.feature_net.value("channels", 120), ks = s.feature_net.value("kernel_size", 7),
               depth = s.feature_net.value("depth", 3);
     const int R = u * s.res;
-    auto conv_w = torch::randn({120, 120, 7, 7});
-    auto conv_x = torch::randn({1, 120, R, R});
-    Timing conv = time_it(o->reps, [&] {
-      torch::NoGradGuard ng;
-      torch::conv2d(conv_x, conv_w, {}, 1, 3);
-    });
-    const double conv_gflops = 2.0 * 120 * 120 * 49 * double(R) * R / conv.min() / 1e9;
+    const std::vector<ConvThroughput> paths = {conv_throughput("float32", torch::kFloat32, false, R, o->reps),
+                                               conv_throughput("bfloat16 channels-last", torch::kBFloat16, true, R, o->reps)};
     const double flops = s.feature_net.value("type", "") == "random" ? net_flops(static_cast<int>(maps.size(1)), C, ks, depth, R) : 0;
+    const bool bf16 = s.feature_net.value("precision", "float32") == "bfloat16";
+    const double conv_gflops = paths[bf16 ? 1 : 0].gflops;  // the floor of the path this config runs
     const double floor_s = flops / (conv_gflops * 1e9);
 
     // --- print ---------------------------------------------------------------------------
@@ -246,11 +263,20 @@ app::RunFn setup(CLI::App& app) {
     std::printf("%-42s %10.4f %10.4f\n", "ONE RUN ITERATION (+ step + checkpoint)", engine.min(), engine.median());
     std::printf("  checkpoint: %.1f KiB, written in %.2f ms (median of %zu)\n", checkpoint_bytes / 1024.0,
                 1e3 * checkpoint_write.median(), checkpoint_write.s.size());
-    std::printf("\nconvolution 120->120 7x7 at %dx%d: %.1f GFLOP/s (min %.4f s)\n", R, R, conv_gflops, conv.min());
-    if (flops > 0)
-      std::printf("network FLOPs per iteration (fwd + input grad): %.1f GFLOP -> floor %.3f s; iteration / floor = %.2f; "
-                  "run iteration / floor = %.2f\n",
-                  flops / 1e9, floor_s, full.median() / floor_s, engine.median() / floor_s);
+    std::printf("\nconvolution 120->120 7x7 at %dx%d, network %.1f GFLOP per iteration (fwd + input grad); this config runs "
+                "the %s path:\n",
+                R, R, flops / 1e9, paths[bf16 ? 1 : 0].path.c_str());
+    std::printf("  %-24s %10s %10s %14s %18s\n", "path", "GFLOP/s", "floor [s]", "iter / floor", "run iter / floor");
+    json jfloors = json::array();
+    for (const auto& p : paths) {
+      const double f = flops / (p.gflops * 1e9);
+      std::printf("  %-24s %10.1f %10.3f %14.2f %18.2f\n", p.path.c_str(), p.gflops, f, flops > 0 ? full.median() / f : 0.0,
+                  flops > 0 ? engine.median() / f : 0.0);
+      jfloors.push_back({{"path", p.path}, {"conv_gflops", p.gflops}, {"floor_s", f},
+                         {"iteration_over_floor", flops > 0 ? full.median() / f : 0}});
+    }
+    std::printf("  bfloat16 / float32 throughput: %.2fx\n", paths[1].gflops / paths[0].gflops);
+    out["floors"] = jfloors;
     std::printf("set-up before the first iteration: %.2f s", setup_first);
     if (setup_each.empty()) {
       std::printf(" (per-sigma set-up not timed: --skip-setup)\n");
