@@ -1,5 +1,6 @@
 """Builds the extension module with the checkout's CMake project (the build directory of
-scripts/setup.sh, or PPSYNTH_BUILD_DIR) and packs it with the package's Python files."""
+scripts/setup.sh, or PPSYNTH_BUILD_DIR) and packs it beside the package's Python files."""
+import glob
 import os
 import shutil
 import subprocess
@@ -14,13 +15,14 @@ BUILD = os.environ.get("PPSYNTH_BUILD_DIR", os.path.join(ROOT, "build"))
 
 class BuildWithCMake(build_py):
     def run(self):
+        super().run()  # the Python files of python/ppsynth
         if not os.path.exists(os.path.join(BUILD, "CMakeCache.txt")):
             subprocess.check_call(["cmake", "-S", ROOT, "-B", BUILD, "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release"])
         subprocess.check_call(["cmake", "--build", BUILD, "--target", "ppsynth_python", "-j", str(os.cpu_count() or 1)])
-        src = os.path.join(BUILD, "python", "ppsynth")
-        dst = os.path.join(self.build_lib, "ppsynth")
-        shutil.rmtree(dst, ignore_errors=True)
-        shutil.copytree(src, dst, ignore=shutil.ignore_patterns("__pycache__"))
+        modules = glob.glob(os.path.join(BUILD, "python", "ppsynth", "_ppsynth*.so"))
+        if len(modules) != 1:
+            raise RuntimeError(f"expected one compiled module in {BUILD}/python/ppsynth, found {modules}")
+        shutil.copy2(modules[0], os.path.join(self.build_lib, "ppsynth"))
 
 
 class WithExtension(Distribution):
@@ -28,4 +30,4 @@ class WithExtension(Distribution):
         return True
 
 
-setup(cmdclass={"build_py": BuildWithCMake}, distclass=WithExtension, packages=[])
+setup(cmdclass={"build_py": BuildWithCMake}, distclass=WithExtension, packages=["ppsynth"])

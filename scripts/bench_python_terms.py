@@ -44,6 +44,21 @@ def seconds_per_iteration(losses):
     return statistics.median(steps)
 
 
+def python_gram_alone(reps=5):
+    """The Python Gram's own forward + gradient on the network's layer shapes (channels-last,
+    as the features come), without ppsynth: what the function costs in torch."""
+    import torch
+    shapes = [(1, 120, 256, 256), (1, 120, 128, 128), (1, 120, 64, 64)]
+    out = [torch.randn(s).contiguous(memory_format=torch.channels_last).requires_grad_() for s in shapes]
+    tgt = [torch.randn(s).contiguous(memory_format=torch.channels_last) for s in shapes]
+    times = []
+    for _ in range(reps + 1):
+        a = time.perf_counter()
+        torch.autograd.grad(py_gram(out, tgt, {}), out)
+        times.append(time.perf_counter() - a)
+    return statistics.median(times[1:])
+
+
 compiled = ppsynth.resolve_config({"exemplar": LINES})["method"]["losses"]
 python = [dict(l, type="py_gram") if l["type"] == "gram" else l for l in compiled]
 times = {"compiled": [], "python": []}
@@ -51,7 +66,10 @@ for _ in range(REPEATS):
     times["compiled"].append(seconds_per_iteration(compiled))
     times["python"].append(seconds_per_iteration(python))
 c, p = statistics.median(times["compiled"]), statistics.median(times["python"])
+alone = python_gram_alone()
 print(f"lines, 256 x 256 grid, {ppsynth.synthesis._native.threads()} threads, {ITERATIONS} iterations x {REPEATS} runs each")
 print(f"  compiled gram      : {c:.4f} s/iteration  (runs: {', '.join(f'{t:.4f}' for t in times['compiled'])})")
 print(f"  gram in Python     : {p:.4f} s/iteration  (runs: {', '.join(f'{t:.4f}' for t in times['python'])})")
 print(f"  Python / compiled  : {p / c:.3f}  (+{1000 * (p - c):.1f} ms per iteration)")
+print(f"  the Python Gram alone in torch (forward + gradient, 3 layers): {1000 * alone:.1f} ms per evaluation;")
+print("  compare with `ppsynth bench`'s 'loss gram (forward + backward)' phase for the compiled one")

@@ -62,7 +62,7 @@ def _gradients(torch, v, xs):
     if not v.requires_grad:
         return [torch.zeros_like(x) for x in xs]
     gs = torch.autograd.grad(v, xs, allow_unused=True)
-    return [torch.zeros_like(x) if g is None else g.contiguous() for g, x in zip(gs, xs)]
+    return [torch.zeros_like(x) if g is None else g for g, x in zip(gs, xs)]
 
 
 def _params(cache: dict, text: str) -> dict:

@@ -62,8 +62,9 @@ std::set<std::string>& own_names(const std::string& registry) {
   return (*names)[registry];
 }
 
+// DLPack carries strides: channels-last features cross as they lie, without a copy.
 py::capsule to_capsule(const torch::Tensor& t) {
-  DLManagedTensor* m = at::toDLPack(t.detach().contiguous());
+  DLManagedTensor* m = at::toDLPack(t.detach());
   return py::capsule(m, "dltensor", [](PyObject* o) {
     // A capsule never consumed still owns its tensor (a consumed one is renamed).
     if (PyCapsule_IsValid(o, "dltensor"))

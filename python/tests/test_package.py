@@ -61,3 +61,24 @@ def test_readme_example_runs(tmp_path):
     readme = open(os.path.join(SOURCE_DIR, "README.md")).read()
     body = open(script).read()
     assert body.split('"""', 2)[2].strip() in readme
+
+
+def test_install_into_a_virtual_environment(tmp_path):
+    # What scripts/install_python.sh does after building: a venv that sees Debian's packages,
+    # pip without an index. From a copy of python/, so the checkout stays clean.
+    import shutil
+    from conftest import BINARY
+    shutil.copytree(os.path.join(SOURCE_DIR, "python"), tmp_path / "python",
+                    ignore=shutil.ignore_patterns("build", "*.egg-info", "__pycache__", "tests"))
+    subprocess.run(["/usr/bin/python3", "-m", "venv", "--system-site-packages", str(tmp_path / "venv")], check=True)
+    env = {**os.environ, "PPSYNTH_BUILD_DIR": os.path.dirname(BINARY)}
+    env.pop("PYTHONPATH", None)  # the venv's own copy, not the build tree's
+    p = subprocess.run([str(tmp_path / "venv" / "bin" / "python"), "-m", "pip", "install", "--quiet", "--no-index",
+                        "--no-build-isolation", str(tmp_path / "python")], capture_output=True, text=True, env=env)
+    assert p.returncode == 0, p.stderr
+    p = subprocess.run([str(tmp_path / "venv" / "bin" / "python"), "-c",
+                        "import ppsynth; print(ppsynth.__file__); print(len(ppsynth.generate('uniform', 10)))"],
+                       capture_output=True, text=True, env=env, cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+    where, n = p.stdout.split()
+    assert where.startswith(str(tmp_path / "venv")) and n == "10"
