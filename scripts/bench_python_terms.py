@@ -7,6 +7,7 @@ registered as "py_gram"), alternating, REPEATS times each; prints the median sec
 iteration of each and their ratio. Usage (after scripts/install_python.sh, or with
 PYTHONPATH=build/python):  /usr/bin/python3 scripts/bench_python_terms.py [ITERATIONS] [REPEATS]
 """
+import os
 import statistics
 import sys
 import time
@@ -18,12 +19,11 @@ REPEATS = int(sys.argv[2]) if len(sys.argv) > 2 else 3
 LINES = "shared:data/exemplars/gabor-paper/lines.txt"
 
 
-@ppsynth.register_loss("py_gram", defaults={"weight": 0.08, "layers": [0, 1, 2]})
-def py_gram(output, target, params):
-    def gram(f):
-        m = f.reshape(f.shape[1], -1)
-        return m @ m.t() / f.numel()
-    return sum((gram(o) - gram(t)).pow(2).sum() for o, t in zip(output, target))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs", "examples"))
+import python_terms  # noqa: E402
+
+py_gram = python_terms.gram_loss
+ppsynth.register_loss("py_gram", py_gram, defaults={"weight": 0.08, "layers": [0, 1, 2]})
 
 
 def seconds_per_iteration(losses):

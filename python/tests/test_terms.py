@@ -1,34 +1,23 @@
 """Terms written in Python: a point term and a feature loss join the composite loss like
 compiled parts, their gradients reach the optimiser (checked against finite differences and
 against the compiled Gram loss), and they move the result the way they should."""
+import os
+import sys
+
 import numpy as np
 import pytest
 
 torch = pytest.importorskip("torch")
 
 import ppsynth
-from conftest import GABOR, LINES
+from conftest import GABOR, LINES, SOURCE_DIR
 
 
-@ppsynth.register_point_term("py_repulsion", defaults={"h": 0.05})
-def repulsion(moving, frozen, params, stage):
-    """Gaussian repulsion between every pair of moving points and from the frozen ones."""
-    h2 = params["h"] ** 2
-    d2 = (moving[:, None, :] - moving[None, :, :]).pow(2).sum(-1)
-    n = moving.shape[0]
-    v = torch.exp(-d2 / h2).triu(1).sum() / n
-    if frozen.shape[0]:
-        v = v + torch.exp(-(moving[:, None, :] - frozen[None, :, :]).pow(2).sum(-1) / h2).sum() / n
-    return v
+sys.path.insert(0, os.path.join(SOURCE_DIR, "docs", "examples"))
+import python_terms  # noqa: E402  the example terms of docs/examples
 
-
-@ppsynth.register_loss("py_gram", defaults={"weight": 0.08, "layers": [0, 1, 2]})
-def py_gram(output, target, params):
-    """The paper's Gram loss, written in Python."""
-    def gram(f):
-        m = f.reshape(f.shape[1], -1)
-        return m @ m.t() / f.numel()
-    return sum((gram(o) - gram(t)).pow(2).sum() for o, t in zip(output, target))
+ppsynth.register_point_term("py_repulsion", python_terms.repulsion, defaults={"h": 0.05})
+ppsynth.register_loss("py_gram", python_terms.gram_loss, defaults={"weight": 0.08, "layers": [0, 1, 2]})
 
 
 def closest_pair(points):
