@@ -55,6 +55,21 @@ def test_python_gram_equals_the_compiled_gram_value_and_gradient():
         np.testing.assert_allclose(a, b, rtol=1e-10, atol=1e-14)
 
 
+def test_loss_gradient_matches_finite_differences():
+    rng = np.random.default_rng(2)
+    out = [rng.standard_normal((1, 3, 5, 5)) for _ in range(3)]
+    tgt = [rng.standard_normal((1, 3, 5, 5)) for _ in range(3)]
+    _, grads = ppsynth.loss_value_and_grad("py_gram", out, tgt)
+    eps = 1e-6
+    for layer, index in [(0, (0, 0, 0, 0)), (1, (0, 2, 3, 1)), (2, (0, 1, 4, 4)), (2, (0, 0, 2, 2))]:
+        up = [o.copy() for o in out]
+        down = [o.copy() for o in out]
+        up[layer][index] += eps
+        down[layer][index] -= eps
+        fd = (ppsynth.loss_value_and_grad("py_gram", up, tgt)[0] - ppsynth.loss_value_and_grad("py_gram", down, tgt)[0]) / (2 * eps)
+        assert grads[layer][index] == pytest.approx(fd, rel=1e-6, abs=1e-9)
+
+
 def test_a_repulsion_term_raises_the_closest_pair_distance():
     base = {"evaluate": False}
     plain = ppsynth.synthesize(LINES, seed=5, quick=True, threads=1, overrides=base)
