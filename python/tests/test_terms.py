@@ -44,10 +44,14 @@ def test_point_term_gradient_matches_finite_differences():
     np.testing.assert_allclose(g, fd, rtol=1e-5, atol=1e-7)
 
 
+def random_layers(seed, shape):
+    """Three layers of output and of target features, standard normal."""
+    rng = np.random.default_rng(seed)
+    return [rng.standard_normal(shape) for _ in range(3)], [rng.standard_normal(shape) for _ in range(3)]
+
+
 def test_python_gram_equals_the_compiled_gram_value_and_gradient():
-    rng = np.random.default_rng(1)
-    out = [rng.standard_normal((1, 4, 6, 6)) for _ in range(3)]
-    tgt = [rng.standard_normal((1, 4, 6, 6)) for _ in range(3)]
+    out, tgt = random_layers(1, (1, 4, 6, 6))
     v_py, g_py = ppsynth.loss_value_and_grad("py_gram", out, tgt)
     v_c, g_c = ppsynth.loss_value_and_grad("gram", out, tgt)
     assert v_py == pytest.approx(v_c, rel=1e-12)
@@ -56,9 +60,7 @@ def test_python_gram_equals_the_compiled_gram_value_and_gradient():
 
 
 def test_loss_gradient_matches_finite_differences():
-    rng = np.random.default_rng(2)
-    out = [rng.standard_normal((1, 3, 5, 5)) for _ in range(3)]
-    tgt = [rng.standard_normal((1, 3, 5, 5)) for _ in range(3)]
+    out, tgt = random_layers(2, (1, 3, 5, 5))
     _, grads = ppsynth.loss_value_and_grad("py_gram", out, tgt)
     eps = 1e-6
     for layer, index in [(0, (0, 0, 0, 0)), (1, (0, 2, 3, 1)), (2, (0, 1, 4, 4)), (2, (0, 0, 2, 2))]:
