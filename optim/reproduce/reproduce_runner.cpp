@@ -19,7 +19,6 @@
 #include "core/generators/generator.hpp"
 #include "core/log.hpp"
 #include "core/metrics/evaluation.hpp"
-#include "core/paths.hpp"
 #include "core/run_directory.hpp"
 #include "core/render/plot_curves.hpp"
 #include "core/render/plot_points.hpp"
@@ -190,7 +189,7 @@ void run_panel(const ReproduceConfig& c, const PanelSpec& p, const ReproduceOpti
         r.status = "missing";
       } else {
         r.source = p.reference;
-        r.output = read_points(resolve_data_path(p.reference));
+        r.output = read_points(p.reference);
         r.metrics = evaluate(pr.exemplar, r.output);
       }
       pr.columns.push_back(r);

@@ -5,7 +5,6 @@
 #include "core/config/param_bounds.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
-#include "core/paths.hpp"
 #include "core/run_directory.hpp"
 #include "optim/method.hpp"
 
@@ -51,7 +50,7 @@ PointSet load_exemplar(const json& r) {
   if (sc == "per-axis") o.scaling = AxisScaling::PerAxisMinMax;
   else if (sc == "uniform") o.scaling = AxisScaling::Uniform;
   else throw config_error("scaling", "expected \"per-axis\" or \"uniform\"");
-  PointSet ps = read_points(resolve_data_path(r["exemplar"]), o);
+  PointSet ps = read_points(r["exemplar"].get<std::string>(), o);
   if (r["merge_classes"].get<bool>()) {
     for (size_t i = 0; i < ps.size(); ++i) ps.set_cls(i, 0);
     ps.set_class_labels({});
@@ -62,12 +61,12 @@ PointSet load_exemplar(const json& r) {
 std::optional<PointSet> load_initialization(const json& r) {
   const json& f = r["init_file"];
   if (f.is_null() || (f.is_string() && f.get<std::string>().empty())) return std::nullopt;
-  if (f.is_string()) return read_points(resolve_data_path(f.get<std::string>()));
+  if (f.is_string()) return read_points(f.get<std::string>());
   if (!f.is_array()) throw config_error("init_file", "expected a file name or a list of file names (one per class)");
   PointSet all;
   for (size_t k = 0; k < f.size(); ++k) {
     if (!f[k].is_string()) throw config_error("init_file[" + std::to_string(k) + "]", "expected a file name");
-    PointSet part = read_points(resolve_data_path(f[k].get<std::string>()));
+    PointSet part = read_points(f[k].get<std::string>());
     for (size_t i = 0; i < part.size(); ++i) all.add(part[i], static_cast<int>(k));
   }
   return all;

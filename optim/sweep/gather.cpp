@@ -11,7 +11,6 @@
 #include "core/formats/point_io.hpp"
 #include "core/metrics/evaluation.hpp"
 #include "core/metrics/summary_stats.hpp"
-#include "core/paths.hpp"
 #include "core/render/plot_strips.hpp"
 #include "core/report/html_report.hpp"
 #include "core/run_directory.hpp"
@@ -181,7 +180,7 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
     if (const auto file = reference_file.find(exemplar_of[g]); file != reference_file.end()) {
       const auto first = std::find_if(r.runs.begin(), r.runs.end(), [&](const GatheredRun& x) { return x.group == g; });
       const PointSet exemplar = load_run(first->dir).exemplar;
-      for (const auto& [k, v] : metric_values(evaluate(exemplar, read_points(resolve_data_path(file->second))))) ref[k] = v;
+      for (const auto& [k, v] : metric_values(evaluate(exemplar, read_points(file->second)))) ref[k] = v;
     }
     for (auto& s : by_group[g]) {
       const Summary sum = summarize(s.values);

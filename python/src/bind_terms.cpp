@@ -199,8 +199,6 @@ void register_part(const std::string& kind, const std::string& name, const py::o
   }
 }
 
-torch::Tensor tensor_of(const py::handle& cap, const std::string& what) { return from_capsule(cap, what); }
-
 }  // namespace
 
 void bind_terms(py::module_& m) {
@@ -235,8 +233,8 @@ void bind_terms(py::module_& m) {
         const json spec = parse_json_text(spec_json, "term", false);
         auto term = PointTermRegistry::instance().create(spec, "terms");
         const PointSet ex = from_python(exemplar, "exemplar"), out = from_python(output, "output");
-        torch::Tensor x = tensor_of(moving_xy, "moving").clone().requires_grad_(true);
-        torch::Tensor f = tensor_of(frozen_xy, "frozen").clone();
+        torch::Tensor x = from_capsule(moving_xy, "moving").clone().requires_grad_(true);
+        torch::Tensor f = from_capsule(frozen_xy, "frozen").clone();
         torch::Tensor value;
         {
           py::gil_scoped_release unlocked;
@@ -252,8 +250,8 @@ void bind_terms(py::module_& m) {
         const json spec = parse_json_text(spec_json, "loss", false);
         auto loss = LossRegistry::instance().create(spec, "losses");
         Features out, tgt;
-        for (auto c : output_caps) out.push_back(tensor_of(c, "output").clone().requires_grad_(true));
-        for (auto c : target_caps) tgt.push_back(tensor_of(c, "target").clone());
+        for (auto c : output_caps) out.push_back(from_capsule(c, "output").clone().requires_grad_(true));
+        for (auto c : target_caps) tgt.push_back(from_capsule(c, "target").clone());
         torch::Tensor value;
         {
           py::gil_scoped_release unlocked;

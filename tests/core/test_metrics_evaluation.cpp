@@ -69,8 +69,8 @@ TEST_CASE("evaluate reproduces the reference quadrant numbers", "[metrics]") {
   CHECK(r["all"]["pcf_mse"].get<double>() == Approx(0.0156).epsilon(0.05));
   CHECK(r["all"]["wasserstein"].get<double>() == Approx(0.112).epsilon(0.01));
   CHECK(r["all"]["chamfer"].get<double>() == Approx(0.195).epsilon(0.01));
-  auto p = evaluate(read_points(resolve_data_path("shared:data/exemplars/gabor-paper/poisson_n64c2_point.txt")),
-                    read_points(resolve_data_path("shared:data/reference/poisson_n64c2_point/output.txt")), o);
+  auto p = evaluate(read_points("shared:data/exemplars/gabor-paper/poisson_n64c2_point.txt"),
+                    read_points("shared:data/reference/poisson_n64c2_point/output.txt"), o);
   REQUIRE(p["classes"].size() == 2);
   CHECK(p["classes"][0]["pcf_mse"].get<double>() == Approx(0.0116).epsilon(0.05));
   CHECK(p["classes"][1]["pcf_mse"].get<double>() == Approx(0.0095).epsilon(0.05));

@@ -6,7 +6,6 @@
 #include <ATen/Parallel.h>
 
 #include "core/formats/point_io.hpp"
-#include "core/paths.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/run/run_synthesis.hpp"
 #include "optim/run/synthesize.hpp"
@@ -41,7 +40,7 @@ TEST_CASE("the example of docs/ARCHITECTURE.md builds, runs, and equals synthesi
   const PointSet from_example = read_points((d / "lines_output.txt").string());
 
   REQUIRE(at::get_num_threads() == 1);
-  const PointSet exemplar = read_points(resolve_data_path(kLines));
+  const PointSet exemplar = read_points(kLines);
   const json spec = resolve_run_config({{"seed", 7}}, {"method.max_iterations=20"});
   SynthesisOptions options;
   options.quick = true;

@@ -16,7 +16,6 @@
 #include "core/formats/text_table.hpp"
 #include "core/log.hpp"
 #include "core/metrics/evaluation.hpp"
-#include "core/paths.hpp"
 #include "tests/support/scratch_dir.hpp"
 
 namespace {
@@ -167,7 +166,7 @@ TEST_CASE("a reproduction writes a report whose numbers match an independent eva
   CHECK(column(p, "ours").output.size() == 4 * p.exemplar.size());
 
   // reference and init columns: the same numbers as evaluate() on the files themselves.
-  const auto ref = ppsynth::read_points(ppsynth::resolve_data_path(kLinesRef));
+  const auto ref = ppsynth::read_points(kLinesRef);
   CHECK(column(p, "reference").metrics["all"]["pcf_mse"].get<double>() ==
         Approx(ppsynth::evaluate(p.exemplar, ref)["all"]["pcf_mse"].get<double>()));
   const auto init = ppsynth::read_points((d / "rep/panels/lines/ours/init.txt").string());
