@@ -89,7 +89,7 @@ PointSet PointSet::mapped_to(const Domain& target) const {
   return out;
 }
 
-PointSet PointSet::crop_to_unit(const Domain& window) const {
+PointSet PointSet::crop(const Domain& window) const {
   std::vector<size_t> idx;
   for (size_t i = 0; i < size(); ++i) {
     const auto& p = pos_[i];
@@ -101,8 +101,10 @@ PointSet PointSet::crop_to_unit(const Domain& window) const {
   }
   PointSet out = subset(idx);
   out.domain_ = window;
-  return out.mapped_to(Domain{});
+  return out;
 }
+
+PointSet PointSet::crop_to_unit(const Domain& window) const { return crop(window).mapped_to(Domain{}); }
 
 std::vector<double> PointSet::flat_xy() const {
   std::vector<double> v;

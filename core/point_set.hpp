@@ -75,7 +75,10 @@ class PointSet {
   PointSet subset(const std::vector<size_t>& indices) const;
   // Affine map of the domain onto `target` (positions follow; attributes untouched).
   PointSet mapped_to(const Domain& target) const;
-  // Points inside a sub-rectangle, mapped onto the unit square (the quadrant protocol).
+  // Points inside a sub-rectangle (half-open, but closed on the domain's own far edges, so
+  // a point on a shared edge lands in exactly one window), coordinates kept, domain `window`.
+  PointSet crop(const Domain& window) const;
+  // crop(window) mapped onto the unit square (the quadrant protocol).
   PointSet crop_to_unit(const Domain& window) const;
   // Flat x0,y0,x1,y1,... (for tensors and metrics).
   std::vector<double> flat_xy() const;

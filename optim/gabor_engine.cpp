@@ -19,7 +19,7 @@ double since(std::chrono::steady_clock::time_point t) {
 // initialiser or an explicit initialisation.
 PointSet initial_output(const PointSet& ex, const SynthesisContext& ctx, const Initializer& init,
                         std::vector<std::vector<size_t>>& index_of_class) {
-  const int u = ctx.upscale, K = ex.num_classes();
+  const int u = ctx.output.upscale, K = ex.num_classes();
   PointSet out(Domain{});
   out.set_class_labels(ex.class_labels());
   for (auto& n : ex.attribute_names()) out.add_attribute(n);
@@ -58,7 +58,7 @@ std::vector<size_t> concat(const std::vector<size_t>& a, const std::vector<size_
 GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const SynthesisContext& ctx)
     : p_(params), exemplar_(exemplar), ctx_(ctx), jitter_rng_(ctx.seed ^ 0x9e3779b97f4a7c15ull) {
   validate(exemplar, "exemplar");
-  s_ = resolve_gabor_settings(p_, exemplar, ctx.upscale, ctx.quick);
+  s_ = resolve_gabor_settings(p_, exemplar, ctx.output.upscale, ctx.quick);
   pipe_ = std::make_unique<GaborPipeline>(p_, s_, ctx.seed);
   map_terms_ = create_map_terms(p_["map_terms"]);
   for (auto& t : map_terms_) t.term->begin_run(MapTermRun{p_, s_, exemplar, ctx.seed});

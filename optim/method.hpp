@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/output_shape.hpp"
 #include "core/point_set.hpp"
 #include "core/registry.hpp"
 
@@ -49,7 +50,9 @@ class SynthesisObserver {
 // Everything a method gets besides its own parameters.
 struct SynthesisContext {
   uint64_t seed = 95;
-  int upscale = 2;  // u: output has u*u times the exemplar's points, features 1/u as wide
+  // The output's size and shape (core/output_shape.hpp): the paper's u x u unit square, or
+  // a rectangle in exemplar units (every method returns a PointSet on output.domain()).
+  OutputShape output;
   std::vector<SynthesisObserver*> observers;
   // Optional explicit initialisation (else the method's own initialiser runs).
   const PointSet* initialization = nullptr;
@@ -86,7 +89,7 @@ class SynthesisInterrupted : public std::runtime_error {
 class SynthesisMethod {
  public:
   virtual ~SynthesisMethod() = default;
-  // Returns the output pattern in the unit square; every point keeps its class and attributes.
+  // Returns the output pattern on ctx.output.domain(); every point keeps its class and attributes.
   virtual PointSet synthesize(const PointSet& exemplar, const SynthesisContext& ctx) = 0;
   // True when the method honours the checkpoint fields of SynthesisContext. The others run
   // to the end in one go and cannot be resumed (the run layer says so).

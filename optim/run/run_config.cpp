@@ -5,6 +5,7 @@
 #include "core/config/param_bounds.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
+#include "core/output_shape.hpp"
 #include "core/run_directory.hpp"
 #include "optim/method.hpp"
 
@@ -20,7 +21,8 @@ json run_defaults() {
       {"merge_classes", false},  // treat every point as one class (positions-only synthesis)
       {"init_file", nullptr},    // explicit initialisation: one file (with a class column) or a list, one file per class
       {"seed", 95},
-      {"upscale", 2},            // u: S = u^2 times the exemplar's points
+      {"upscale", 2},            // u: S = u^2 times the exemplar's points (unless "output" gives a size)
+      {"output", output_defaults()},  // a rectangle or a point count in exemplar units (core/output_shape.hpp)
       {"method", {{"type", "gabor"}}},
       {"snapshots", true},       // plot the output after every stage (paper Fig. 4)
       {"evaluate", true},        // run the metrics on the output

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/formats/text_table.hpp"
+#include "core/output_shape.hpp"
 #include "core/run_directory.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/run/run_observers.hpp"
@@ -45,9 +46,9 @@ RunOutcome execute(RunOutcome o, RunDirectory& dir, const std::string& name, con
   };
   options.resume_state = resume_state;
   options.stop = req.stop;
-  spdlog::info("[{}] {} points, {} classes -> {} points ({}), seed {}", name, o.exemplar.size(), o.exemplar.num_classes(),
-               o.exemplar.size() * r["upscale"].get<int>() * r["upscale"].get<int>(), r["method"]["type"].get<std::string>(),
-               r["seed"].get<uint64_t>());
+  const OutputShape shape = resolve_output_shape(r, o.exemplar);
+  spdlog::info("[{}] {} points, {} classes -> {:.0f} points, {} ({}), seed {}", name, o.exemplar.size(), o.exemplar.num_classes(),
+               shape.expected_points(o.exemplar), shape.describe(), r["method"]["type"].get<std::string>(), r["seed"].get<uint64_t>());
   try {
     fs::create_directories(o.dir + "/snapshots");
     SynthesisResult res = synthesize(o.exemplar, r, options);

@@ -34,7 +34,7 @@ SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec,
   auto method = MethodRegistry::instance().create(spec["method"], "method");
   SynthesisContext ctx;
   ctx.seed = spec["seed"].get<uint64_t>();
-  ctx.upscale = spec["upscale"].get<int>();
+  ctx.output = resolve_output_shape(spec, exemplar);
   ctx.quick = options.quick;
   const auto from_file = options.initialization ? std::nullopt : load_initialization(spec);
   ctx.initialization = options.initialization ? options.initialization : from_file ? &*from_file : nullptr;

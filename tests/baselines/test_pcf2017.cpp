@@ -200,7 +200,7 @@ TEST_CASE("pcf2017: the registered method reproduces a blue-noise exemplar's PCF
   auto method = MethodRegistry::instance().create(nlohmann::json{{"type", "pcf2017"}, {"iterations", 150}}, "method");
   SynthesisContext ctx;
   ctx.seed = 11;
-  ctx.upscale = 2;
+  ctx.output.upscale = 2;
   CountingObserver obs;
   ctx.observers.push_back(&obs);
   const PointSet out = method->synthesize(exemplar, ctx);

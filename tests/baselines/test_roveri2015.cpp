@@ -313,7 +313,7 @@ TEST_CASE("roveri2015: expanding a 6x6 lattice gives a lattice", "[roveri2015]")
   const PointSet ex = grid_exemplar(6, 0.0, 1);
   auto method = MethodRegistry::instance().create({{"type", "roveri2015"}}, "method");
   SynthesisContext ctx;
-  ctx.upscale = 2;
+  ctx.output.upscale = 2;
   ctx.seed = 95;
   nlohmann::json stats;
   ctx.stats = &stats;

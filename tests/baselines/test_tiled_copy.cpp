@@ -25,7 +25,7 @@ PointSet exemplar() {
 PointSet run(const nlohmann::json& params, uint64_t seed, int upscale = 2) {
   SynthesisContext ctx;
   ctx.seed = seed;
-  ctx.upscale = upscale;
+  ctx.output.upscale = upscale;
   nlohmann::json spec = {{"type", "tiled_copy"}};
   spec.update(params);
   return MethodRegistry::instance().create(spec, "method")->synthesize(exemplar(), ctx);

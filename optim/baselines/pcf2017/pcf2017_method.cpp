@@ -44,10 +44,10 @@ class Pcf2017Method : public SynthesisMethod {
   PointSet synthesize(const PointSet& exemplar, const SynthesisContext& ctx) override {
     validate(exemplar, "exemplar");
     if (exemplar.size() < 2) throw InputError("pcf2017: the exemplar needs at least 2 points");
-    if (ctx.upscale < 1) throw InputError("pcf2017: upscale must be >= 1");
+    if (ctx.output.upscale < 1) throw InputError("pcf2017: upscale must be >= 1");
     if (exemplar.num_classes() > 1 || exemplar.num_attributes() > 0)
       spdlog::warn("pcf2017: classes and attributes are ignored (single-class PCF synthesis)");
-    const size_t n = size_t(ctx.upscale) * size_t(ctx.upscale) * exemplar.size();
+    const size_t n = size_t(ctx.output.upscale) * size_t(ctx.output.upscale) * exemplar.size();
     const PcfCurve target = pattern_pcf(exemplar, pcf_, exemplar.domain().periodic);
 
     const Domain torus{0, 0, 1, 1, true};

@@ -85,10 +85,10 @@ class Roveri2015Method : public SynthesisMethod {
   PointSet synthesize(const PointSet& exemplar, const SynthesisContext& ctx) override {
     validate(exemplar, "exemplar");
     if (exemplar.size() < 3) throw InputError("roveri2015: the exemplar needs at least 3 points");
-    if (ctx.upscale < 1) throw InputError("roveri2015: upscale must be >= 1");
+    if (ctx.output.upscale < 1) throw InputError("roveri2015: upscale must be >= 1");
     const auto t_start = std::chrono::steady_clock::now();
     const Domain E = exemplar.domain();
-    const double u = ctx.upscale;
+    const double u = ctx.output.upscale;
     const Domain out_domain{E.x0, E.y0, E.x0 + u * E.width(), E.y0 + u * E.height(), p_.periodic_output};
     const Domain unit{0, 0, 1, 1, p_.periodic_output};
 

@@ -28,8 +28,8 @@ class TiledCopyMethod : public SynthesisMethod {
 
   PointSet synthesize(const PointSet& exemplar, const SynthesisContext& ctx) override {
     validate(exemplar, "exemplar");
-    if (ctx.upscale < 1) throw InputError("tiled_copy: upscale must be >= 1");
-    const int u = ctx.upscale;
+    if (ctx.output.upscale < 1) throw InputError("tiled_copy: upscale must be >= 1");
+    const int u = ctx.output.upscale;
     Vec2 off = offset_;
     if (random_) {  // seeded: the same seed gives the same copy
       std::mt19937_64 rng(ctx.seed);

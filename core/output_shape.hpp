@@ -1,0 +1,56 @@
+#pragma once
+// OutputShape: what a synthesis produces (the run config's "upscale" and "output" keys).
+//
+//   the paper's (no "output"):  the unit square holding u^2 times the exemplar's points;
+//                               the pattern is the exemplar's zoomed out by u ("upscale").
+//   {"size": [W, H]}:           the rectangle [0, W] x [0, H] in EXEMPLAR units: points keep
+//                               the exemplar's spacing; each class keeps its density.
+//   {"points": N}:              a square of the area that holds N points at the exemplar's
+//                               density (the exemplar's shape when it is not square: W/H kept).
+//
+// "border" (rectangles only): "clean" synthesises on a canvas padded by "pad" exemplar units
+// on every side and keeps the crop (the points that park on a synthesis border are cut off;
+// counts are then the density's expectation, not exact); "published" synthesises on the
+// rectangle itself and keeps the method's border behaviour. "pad": "auto" = 2 mean
+// nearest-neighbour distances of the exemplar (docs/method.md "Clean borders").
+//
+// Torch-free: every method (optim/method.hpp) gets one in its SynthesisContext.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/point_set.hpp"
+
+namespace ppsynth {
+
+struct OutputShape {
+  int upscale = 2;             // the paper's u (used when !rectangle)
+  bool rectangle = false;      // true: "size" or "points" given (exemplar units)
+  double width = 0, height = 0;  // the output rectangle's size (exemplar units; rectangle only)
+  bool clean_border = true;    // rectangle only: synthesise padded, keep the crop
+  double pad = 0;              // resolved pad (exemplar units; 0 when !clean_border)
+
+  // The domain of the output: the unit square, or [0, W] x [0, H].
+  Domain domain() const;
+  // The domain actually synthesised: domain() grown by `pad` on every side (rectangles with
+  // clean borders), else domain().
+  Domain canvas() const;
+  // Output units per exemplar unit: 1/u for the paper's outputs, 1 for rectangles.
+  double zoom() const { return rectangle ? 1.0 : 1.0 / upscale; }
+  // Points of each exemplar class over `d` (an area in output units) at the exemplar's
+  // density, rounded; at least 1 for a class of the exemplar.
+  std::vector<size_t> class_counts(const PointSet& exemplar, const Domain& d) const;
+  // What the output will hold: u^2 x |exemplar| exactly, or the rectangle's expectation.
+  double expected_points(const PointSet& exemplar) const;
+  // The config's shape in words ("u = 2 (unit square)", "4 x 1 exemplar units, clean border").
+  std::string describe() const;
+};
+
+// The run config's defaults for "output" (declared once, here).
+nlohmann::json output_defaults();
+// From a resolved run config (its "upscale" and "output"); errors name the key.
+// `exemplar` resolves "points" and the automatic pad.
+OutputShape resolve_output_shape(const nlohmann::json& run_config, const PointSet& exemplar);
+
+}  // namespace ppsynth
