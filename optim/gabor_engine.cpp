@@ -1,6 +1,7 @@
 #include "optim/gabor_engine.hpp"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "models/point_tensor.hpp"
@@ -14,32 +15,42 @@ double since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-// The output before optimisation: u^2 points per exemplar point of each class, attributes
-// tiled from the class's exemplar points (radius divided by u), positions from the
+// The output before optimisation: per class, u^2 points per exemplar point (the paper's
+// unit square) or the density's count over the canvas (rectangles); attributes tiled from
+// the class's exemplar points (radius divided by u on the unit square); positions from the
 // initialiser or an explicit initialisation.
 PointSet initial_output(const PointSet& ex, const SynthesisContext& ctx, const Initializer& init,
                         std::vector<std::vector<size_t>>& index_of_class) {
-  const int u = ctx.output.upscale, K = ex.num_classes();
-  PointSet out(Domain{});
+  const OutputShape& shape = ctx.output;
+  const int u = shape.upscale, K = ex.num_classes();
+  const Domain canvas = shape.canvas();
+  PointSet out(canvas);
   out.set_class_labels(ex.class_labels());
   for (auto& n : ex.attribute_names()) out.add_attribute(n);
   const auto radius_col = ex.attribute_index("radius");
+  const auto counts = shape.class_counts(ex, canvas);
   index_of_class.assign(K, {});
   for (int c = 0; c < K; ++c) {
     PointSet ex_c = ex.subset_class(c);
-    const size_t n = ex_c.size() * static_cast<size_t>(u * u);
+    if (ex_c.empty()) continue;
+    const size_t n = shape.rectangle ? counts[c] : ex_c.size() * static_cast<size_t>(u * u);
     PointSet start;
     if (ctx.initialization) {
       start = ctx.initialization->subset_class(c);
       if (start.size() != n)
         throw InputError("the initialisation has " + std::to_string(start.size()) + " points of class " +
                          std::to_string(c) + "; the synthesis needs " + std::to_string(n));
+      for (size_t i = 0; i < n; ++i)
+        if (!canvas.contains(start[i]))
+          throw InputError("the initialisation's point " + std::to_string(i + 1) + " of class " + std::to_string(c) +
+                           " lies outside the synthesis domain [" + std::to_string(canvas.x0) + ", " + std::to_string(canvas.x1) +
+                           "] x [" + std::to_string(canvas.y0) + ", " + std::to_string(canvas.y1) + "]");
     } else {
-      start = init.initialize(n, c, ctx.seed + 1000003ull * (c + 1));
+      start = init.initialize(n, c, ctx.seed + 1000003ull * (c + 1), canvas);
     }
     for (size_t i = 0; i < n; ++i) {
       auto attrs = ex_c.attributes_of(i % ex_c.size());
-      if (radius_col) attrs[*radius_col] /= u;
+      if (radius_col && !shape.rectangle) attrs[*radius_col] /= u;
       index_of_class[c].push_back(out.size());
       out.add(start[i], c, attrs);
     }
@@ -53,12 +64,18 @@ std::vector<size_t> concat(const std::vector<size_t>& a, const std::vector<size_
   return v;
 }
 
+bool inside(const Domain& d, const Vec2& p) { return p.x >= d.x0 && p.x <= d.x1 && p.y >= d.y0 && p.y <= d.y1; }
+
 }  // namespace
 
 GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const SynthesisContext& ctx)
-    : p_(params), exemplar_(exemplar), ctx_(ctx), jitter_rng_(ctx.seed ^ 0x9e3779b97f4a7c15ull) {
+    : p_(params), exemplar_(exemplar), shape_(ctx.output), ctx_(ctx), jitter_rng_(ctx.seed ^ 0x9e3779b97f4a7c15ull) {
   validate(exemplar, "exemplar");
-  s_ = resolve_gabor_settings(p_, exemplar, ctx.output.upscale, ctx.quick);
+  s_ = resolve_gabor_settings(p_, exemplar, shape_, ctx.quick);
+  if (shape_.rectangle && !p_["terms"].empty())  // they assume the unit torus (optim/point_term.hpp)
+    throw config_error("method.terms", "point terms work on the paper's u x u outputs only, not with \"output\"");
+  if (shape_.rectangle && !p_["map_terms"].empty())
+    throw config_error("method.map_terms", "map terms work on the paper's u x u outputs only, not with \"output\"");
   pipe_ = std::make_unique<GaborPipeline>(p_, s_, ctx.seed);
   map_terms_ = create_map_terms(p_["map_terms"]);
   for (auto& t : map_terms_) t.term->begin_run(MapTermRun{p_, s_, exemplar, ctx.seed});
@@ -67,10 +84,24 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
   auto init = InitializerRegistry::instance().create(p_["init"], "method.init");
   std::vector<std::vector<size_t>> out_index;
   out_ = initial_output(exemplar, ctx, *init, out_index);
-  plan_ = class_sigma_plan(exemplar, s_, out_index);
-  stats_ = {{"grid_res", s_.res}, {"output_grid_res", s_.upscale * s_.res}, {"k", s_.k}, {"sigmas", s_.sigmas},
+  if (!shape_.rectangle) {
+    plan_ = class_sigma_plan(exemplar, s_, out_index);
+  } else {
+    layout_ = window_layout(shape_.canvas(), s_.out_scale, s_.window_margin, 3 * s_.sigmas.front(), "method.window");
+    plan_ = window_plan(exemplar, s_, layout_);
+    state_.final_points.assign(out_.size(), 0);
+  }
+  stats_ = {{"grid_res", s_.res}, {"output_grid_res", s_.out_res}, {"k", s_.k}, {"sigmas", s_.sigmas},
             {"mean_nn_distance", s_.mean_nn_distance},
             {"map_terms", json::object()}, {"terms", json::object()}};
+  if (shape_.rectangle) {
+    const Domain c = shape_.canvas();
+    stats_["output"] = shape_.describe();
+    stats_["canvas"] = {c.x0, c.y0, c.x1, c.y1};
+    stats_["canvas_points"] = out_.size();
+    stats_["windows"] = {{"nx", layout_.nx}, {"ny", layout_.ny}, {"side", layout_.side}, {"margin", layout_.margin},
+                         {"grid", s_.out_res}};
+  }
   for (const auto& t : map_terms_) stats_["map_terms"][t.name] = t.weight;
   for (const auto& t : terms_) stats_["terms"][t.name] = t.weight;
 }
@@ -78,8 +109,8 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
 void GaborEngine::restore(const std::string& bytes) {
   state_ = deserialize_state(bytes, "checkpoint");
   if (state_.positions.size() != out_.size() || state_.stage < 0 || state_.stage > static_cast<int>(plan_.size()) ||
-      (state_.moving.defined() && state_.stage < static_cast<int>(plan_.size()) &&
-       state_.moving.size(0) != static_cast<int64_t>(plan_[state_.stage].moving.size())))
+      (state_.moving.defined() && state_.moving.size(0) != static_cast<int64_t>(state_.group_moving.size())) ||
+      state_.final_points.size() != (shape_.rectangle ? out_.size() : 0))
     throw InputError("the checkpoint does not belong to this synthesis (other exemplar, config or plan)");
   for (size_t i = 0; i < out_.size(); ++i) out_[i] = state_.positions[i];
   std::istringstream rng(state_.rng);
@@ -95,6 +126,8 @@ void GaborEngine::restore(const std::string& bytes) {
     ev.max_iterations = s_.max_iterations;
     ev.loss = r.loss;
     ev.seconds = r.seconds;
+    ev.window = plan_.at(r.stage).window.index;
+    ev.windows = plan_.at(r.stage).window.count;
     earlier.push_back(ev);
   }
   ctx_.resumed(earlier);
@@ -107,6 +140,11 @@ PointSet GaborEngine::run() {
   for (; state_.stage < static_cast<int>(plan_.size());) {
     const Stage& stage = plan_[state_.stage];
     if (stage.group != group_) enter_group(stage);
+    if (moving_idx_.empty()) {  // a window without points of this class left to move
+      stage_start_ = Clock::now();
+      finish_stage(stage);
+      continue;
+    }
     enter_stage(stage);
     run_stage(stage);
     finish_stage(stage);
@@ -117,22 +155,91 @@ PointSet GaborEngine::run() {
                              {"loss_forward", phases_.loss}, {"backward", phases_.backward}, {"optimizer_step", phases_.step}};
   stats_["resolved"] = pipe_->resolved();
   if (ctx_.stats) *ctx_.stats = stats_;
-  return out_;
+  if (!shape_.rectangle) return out_;
+  // The canvas's border band (the pad) holds the points that parked on the synthesis border.
+  PointSet out = out_.crop(shape_.domain());
+  out.set_domain(shape_.domain());
+  return out;
 }
 
 void GaborEngine::enter_group(const Stage& stage) {
   group_ = stage.group;
-  const bool fresh_net = p_["fresh_net_per_class"].get<bool>();
-  if (fresh_net && group_ > 0) pipe_->redraw_network(ctx_.seed + 7919ull * group_);
-  const int A = static_cast<int>(s_.attr_cols.size());
-  frozen_ = positions_tensor(out_.subset(stage.frozen));
-  out_weights_ = A > 0 ? normalized_attributes(out_.subset(concat(stage.frozen, stage.moving)), s_.attr_cols) : torch::Tensor();
-  // A group continues one optimisation: its positions come from the checkpoint when resumed
-  // inside it, else from the output (wrapped) as the group starts.
-  if (!state_.moving.defined()) state_.moving = positions_tensor(out_.subset(stage.moving));
+  window_ = stage.window;
+  const int K = exemplar_.num_classes(), class_step = group_ % K;  // window plans: K groups per window
+  if (p_["fresh_net_per_class"].get<bool>() && group_ > 0)
+    pipe_->redraw_network(class_step == 0 ? ctx_.seed : ctx_.seed + 7919ull * class_step);
+  // A group continues one optimisation: its points and positions come from the checkpoint
+  // when resumed inside it, else from the plan (or the window's choice) and the output.
+  const bool fresh = !state_.moving.defined();
+  if (fresh && window_.torus) {
+    state_.group_moving.assign(stage.moving.begin(), stage.moving.end());
+    state_.group_frozen.assign(stage.frozen.begin(), stage.frozen.end());
+  } else if (fresh) {
+    choose_window_points(stage);
+  }
+  moving_idx_.assign(state_.group_moving.begin(), state_.group_moving.end());
+  frozen_idx_.assign(state_.group_frozen.begin(), state_.group_frozen.end());
+  frozen_ = to_local(out_.subset(frozen_idx_));
+  out_weights_ = s_.attr_cols.empty() ? torch::Tensor() : map_weights(concat(frozen_idx_, moving_idx_), stage.target_classes);
+  if (fresh) state_.moving = to_local(out_.subset(moving_idx_));
   state_.moving.set_requires_grad(true);
-  for (auto& t : terms_) t.term->begin_class(ClassStage{exemplar_, out_, stage.moving, stage.frozen, s_.upscale});
+  if (!window_.torus) {
+    const Domain& g = window_.grid;
+    const auto& m = window_.movable;
+    lo_ = torch::tensor({{(m.x0 - g.x0) / g.width(), (m.y0 - g.y0) / g.height()}}, torch::kFloat64).to(state_.moving.scalar_type());
+    hi_ = torch::tensor({{(m.x1 - g.x0) / g.width(), (m.y1 - g.y0) / g.height()}}, torch::kFloat64).to(state_.moving.scalar_type());
+  }
+  for (auto& t : terms_) t.term->begin_class(ClassStage{exemplar_, out_, moving_idx_, frozen_idx_, s_.upscale});
   for (auto& t : map_terms_) t.term->begin_group(stage, out_);
+}
+
+void GaborEngine::choose_window_points(const Stage& stage) {
+  std::vector<char> in_play(exemplar_.num_classes(), 0);
+  for (int c : stage.target_classes) in_play[c] = 1;
+  state_.group_moving.clear();
+  state_.group_frozen.clear();
+  for (size_t i = 0; i < out_.size(); ++i) {
+    const int c = out_.cls(i);
+    if (c < 0 || c >= static_cast<int>(in_play.size()) || !in_play[c]) continue;
+    if (c == stage.own_class && !state_.final_points[i] && inside(window_.movable, out_[i]))
+      state_.group_moving.push_back(static_cast<int64_t>(i));
+    else if (inside(window_.context, out_[i]))
+      state_.group_frozen.push_back(static_cast<int64_t>(i));
+  }
+}
+
+torch::Tensor GaborEngine::to_local(const PointSet& points) const {
+  if (window_.torus) return positions_tensor(points);  // the unit square is its own grid
+  auto xy = positions_tensor(points, torch::kFloat64);
+  const Domain& g = window_.grid;
+  xy = (xy - torch::tensor({{g.x0, g.y0}}, torch::kFloat64)) / g.width();
+  return xy.to(torch::kFloat32);
+}
+
+torch::Tensor GaborEngine::confined(const torch::Tensor& moving) const {
+  if (window_.torus) return wrap_unit(moving);
+  // Kept inside the movable rectangle with an identity gradient (as wrap_unit's): a point
+  // pushed past the edge sits on it, and the loss can still pull it back.
+  return moving + (torch::max(torch::min(moving, hi_), lo_) - moving).detach();
+}
+
+torch::Tensor GaborEngine::map_weights(const std::vector<size_t>& rows, const std::vector<int>& classes) const {
+  // Each column divided by its maximum over every output point of the stage's classes (the
+  // paper's plan: exactly `rows`; a window sees only part of them, the scale stays global).
+  std::vector<char> in_play(exemplar_.num_classes(), 0);
+  for (int c : classes) in_play[c] = 1;
+  const int64_t n = static_cast<int64_t>(rows.size()), A = static_cast<int64_t>(s_.attr_cols.size());
+  auto w = torch::ones({n, A}, torch::kFloat64);
+  auto acc = w.accessor<double, 2>();
+  for (int64_t a = 0; a < A; ++a) {
+    const auto& col = out_.attribute_column(s_.attr_cols[a]);
+    double mx = -std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < out_.size(); ++i)
+      if (in_play[out_.cls(i)]) mx = std::max(mx, col[i]);
+    if (!(mx > 0)) continue;
+    for (int64_t r = 0; r < n; ++r) acc[r][a] = col[rows[r]] / mx;
+  }
+  return w.to(torch::kFloat32);
 }
 
 void GaborEngine::enter_stage(const Stage& stage) {
@@ -158,12 +265,14 @@ ProgressEvent GaborEngine::event(const Stage& stage) const {
   ev.iteration = state_.iteration;
   ev.max_iterations = s_.max_iterations;
   ev.seconds = since(stage_start_);
+  ev.window = stage.window.index;
+  ev.windows = stage.window.count;
   return ev;
 }
 
 torch::Tensor GaborEngine::evaluate(const Stage& stage) {
   const auto ta = Clock::now();
-  const auto mv = wrap_unit(state_.moving);
+  const auto mv = confined(state_.moving);
   const auto jitter = pipe_->draw_jitter(jitter_rng_);
   auto pts = frozen_.size(0) > 0 ? torch::cat({frozen_, mv}) : mv;
   auto maps = pipe_->output_maps(pts, out_weights_, stage.sigma, jitter);
@@ -216,9 +325,11 @@ void GaborEngine::run_stage(const Stage& stage) {
 void GaborEngine::finish_stage(const Stage& stage) {
   {  // the stage's positions, wrapped, into the output (snapshots and later stages see them)
     torch::NoGradGuard ng;
-    auto w = wrap_unit(state_.moving).to(torch::kFloat64);
+    auto w = confined(state_.moving).to(torch::kFloat64);
     auto a = w.accessor<double, 2>();
-    for (size_t i = 0; i < stage.moving.size(); ++i) out_[stage.moving[i]] = Vec2{a[i][0], a[i][1]};
+    const Domain& g = window_.grid;
+    for (size_t i = 0; i < moving_idx_.size(); ++i)
+      out_[moving_idx_[i]] = window_.torus ? Vec2{a[i][0], a[i][1]} : Vec2{g.x0 + g.width() * a[i][0], g.y0 + g.height() * a[i][1]};
   }
   ProgressEvent ev = event(stage);
   state_.stages.push_back({{"stage", stage.label}, {"class", stage.own_class}, {"sigma", stage.sigma}, {"k", stage.k},
@@ -234,7 +345,12 @@ void GaborEngine::finish_stage(const Stage& stage) {
   state_.stage_scale = -1;
   state_.optimizer.clear();
   optimizer_.reset();
-  if (state_.stage >= static_cast<int>(plan_.size()) || plan_[state_.stage].group != stage.group) state_.moving = torch::Tensor();
+  if (state_.stage >= static_cast<int>(plan_.size()) || plan_[state_.stage].group != stage.group) {
+    if (!window_.torus)  // the window's own part is done: no later window moves it
+      for (size_t i : moving_idx_)
+        if (inside(window_.interior, out_[i])) state_.final_points[i] = 1;
+    state_.moving = torch::Tensor();
+  }
 }
 
 void GaborEngine::save_checkpoint() {

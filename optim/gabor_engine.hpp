@@ -4,6 +4,7 @@
 //
 //   stage:  targets <- exemplar classes -> Rasterizer -> FeatureNet -> CompositeLoss target
 //           repeat: wrap(moving) + frozen -> Rasterizer(u) -> FeatureNet -> CompositeLoss
+//                   (windows: confine(moving) + frozen, in the window's coordinates)
 //                   [+ map terms on maps of their own (optim/map_term.hpp); not in the paper]
 //                   [+ point terms on the positions (optim/point_term.hpp); not in the paper]
 //                   -> backward -> PositionOptimizer step        (until the ConvergenceRule)
@@ -12,6 +13,10 @@
 // iteration (SynthesisContext::save_checkpoint) and a run restored from it takes the very
 // same steps. Everything else (targets, networks, rasterizers) is a function of the config,
 // the exemplar, the seed and the stage, and is rebuilt on entering a stage.
+//
+// Two plans: the paper's u x u unit square read as a torus (optim/stage_plan.hpp), and a
+// rectangle in exemplar units synthesised window by window on a canvas padded for clean
+// borders, then cropped (optim/window_plan.hpp; core/output_shape.hpp).
 #include <chrono>
 #include <memory>
 #include <random>
@@ -23,6 +28,7 @@
 #include "optim/position_optimizer.hpp"
 #include "optim/stage_plan.hpp"
 #include "optim/synthesis_state.hpp"
+#include "optim/window_plan.hpp"
 
 namespace ppsynth {
 
@@ -41,6 +47,10 @@ class GaborEngine {
 
   void restore(const std::string& bytes);
   void enter_group(const Stage& stage);   // networks, neighbours, point terms of a new group
+  void choose_window_points(const Stage& stage);  // a window group's moving and frozen points
+  torch::Tensor confined(const torch::Tensor& moving) const;  // wrapped (torus) or kept in the window
+  torch::Tensor to_local(const PointSet& points) const;       // output -> the group's grid coordinates
+  torch::Tensor map_weights(const std::vector<size_t>& rows, const std::vector<int>& classes) const;
   void enter_stage(const Stage& stage);   // targets and a fresh (or restored) optimiser
   void run_stage(const Stage& stage);
   torch::Tensor evaluate(const Stage& stage);  // the loss at the current positions, after backward
@@ -50,6 +60,8 @@ class GaborEngine {
 
   json p_;
   const PointSet& exemplar_;
+  OutputShape shape_;
+  WindowLayout layout_;  // rectangles only
   const SynthesisContext& ctx_;
   GaborSettings s_;
   std::unique_ptr<GaborPipeline> pipe_;
@@ -64,7 +76,10 @@ class GaborEngine {
 
   // The current group and stage (rebuilt from the plan and the state).
   int group_ = -1;
+  StageWindow window_;                   // the group's window (the unit torus for the paper's plan)
+  std::vector<size_t> moving_idx_, frozen_idx_;
   torch::Tensor frozen_, out_weights_;
+  torch::Tensor lo_, hi_;                // the window's movable rectangle, local coordinates (1 x 2)
   std::unique_ptr<PositionOptimizer> optimizer_;
   Clock::time_point stage_start_, last_checkpoint_;
 };

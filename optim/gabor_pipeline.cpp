@@ -39,6 +39,11 @@ json gabor_defaults() {
       // Not in the paper: losses on the positions themselves (optim/point_term.hpp), by
       // registered name: {"separation": {"weight": 1}, "pcf_match": {"weight": 10}}. Empty = the paper.
       {"terms", json::object()},
+      // Rectangle outputs ("output": {"size"} or {"points"}) run window by window
+      // (optim/window_plan.hpp): windows of at most `pixels` grid positions across; a margin
+      // of 3 sigma_max + `receptive_field` positions (the network's half-width) on each side
+      // of an interior ("auto"), or a length in exemplar units.
+      {"window", {{"pixels", 384}, {"margin", "auto"}, {"receptive_field", 16}}},
       // --quick: every knob that sets the cost, shrunk (tests and smoke runs).
       {"quick", {{"res", 24}, {"channels", 8}, {"max_iterations", 4}, {"num_sigmas", 2}}},
   };
@@ -55,6 +60,7 @@ json gabor_bounds() {
       // check_every 0 would divide by zero; a window of 0 compares a loss with itself
       {"convergence", {{"window", "int [1, 1000000000]"}, {"check_every", "int [1, 1000000000]"}, {"threshold", "[0, inf)"}}},
       {"class_order", "int [0, 1000000]"},
+      {"window", {{"pixels", "int [16, 8192]"}, {"receptive_field", "int [0, 1000]"}}},
       {"quick", {{"res", "int [8, 8192]"}, {"channels", "int [1, 4096]"}, {"max_iterations", "int [1, 1000000000]"},
                  {"num_sigmas", "int [1, 64]"}}},
   };
@@ -85,10 +91,10 @@ std::vector<int> map_attribute_columns(const PointSet& ex, const json& spec) {
   return cols;
 }
 
-GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, int upscale, bool quick) {
+GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, const OutputShape& shape, bool quick) {
   GaborSettings s;
-  if (upscale < 1) throw config_error("upscale", "must be >= 1");
-  s.upscale = upscale;
+  if (shape.upscale < 1) throw config_error("upscale", "must be >= 1");
+  s.upscale = shape.rectangle ? 1 : shape.upscale;
   const int K = exemplar.num_classes();
   s.mean_nn_distance = mean_nn_distance(exemplar);
   s.res = get_int(p["grid"], "res", "method.grid");
@@ -113,15 +119,32 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, in
   s.k_per_stage = p["k_per_stage"].get<bool>();
   s.attr_cols = map_attribute_columns(exemplar, p["map_attributes"]);
   s.jitter = p["jitter"].get<bool>();
+  if (!shape.rectangle) {
+    s.out_res = s.upscale * s.res;
+    s.out_scale = s.upscale;
+  } else {  // a window: at most `pixels` across, at most the canvas
+    const Domain c = shape.canvas();
+    const double side = std::min({get_int(p["window"], "pixels", "method.window") / static_cast<double>(s.res), c.width(), c.height()});
+    s.out_res = std::max(8, static_cast<int>(std::lround(side * s.res)));
+    s.out_scale = side;
+    const json& m = p["window"]["margin"];
+    if (m.is_string() && m.get<std::string>() == "auto")
+      s.window_margin = 3 * s.sigmas.front() + get_int(p["window"], "receptive_field", "method.window") / static_cast<double>(s.res);
+    else if (m.is_number() && m.get<double>() >= 0)
+      s.window_margin = m.get<double>();
+    else
+      throw config_error("method.window.margin", "expected \"auto\" or a length >= 0 in exemplar units");
+  }
   {  // one iteration keeps the output grid's maps and every layer's activations and gradients
-    const double cells = std::pow(static_cast<double>(s.upscale) * s.res, 2);
+    const double cells = std::pow(static_cast<double>(s.out_res), 2);
     auto number_or = [&](const char* key, double fallback) {  // the net's own registry checks the types later
       return s.feature_net.contains(key) && s.feature_net[key].is_number() ? s.feature_net[key].get<double>() : fallback;
     };
     const double in_ch = 10.0 * (1 + s.attr_cols.size()), net_ch = number_or("channels", 120), layers = number_or("depth", 3);
     check_memory(cells * 4.0 * (3 * in_ch + 6 * net_ch * layers + s.k * in_ch),
-                 "an output grid of " + std::to_string(s.upscale * s.res) + " x " + std::to_string(s.upscale * s.res) +
-                     " (method.grid.res " + std::to_string(s.res) + " x upscale " + std::to_string(s.upscale) + ")");
+                 "an output grid of " + std::to_string(s.out_res) + " x " + std::to_string(s.out_res) +
+                     (shape.rectangle ? " (method.window.pixels)"
+                                      : " (method.grid.res " + std::to_string(s.res) + " x upscale " + std::to_string(s.upscale) + ")"));
   }
   s.rule = ConvergenceRule{get_int(p["convergence"], "window", "method.convergence"),
                            get_int(p["convergence"], "check_every", "method.convergence"),
@@ -149,7 +172,7 @@ GaborPipeline::GaborPipeline(const json& p, const GaborSettings& s, uint64_t see
 }
 
 void GaborPipeline::build_rasterizers() {
-  RasterizerArgs ex_args{s_.res, 1.0, s_.k}, out_args{s_.upscale * s_.res, static_cast<double>(s_.upscale), s_.k, true};
+  RasterizerArgs ex_args{s_.res, 1.0, s_.k}, out_args{s_.out_res, s_.out_scale, s_.k, true};
   ex_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", ex_args, &resolved_rast_);
   out_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", out_args);
 }
@@ -172,7 +195,7 @@ void GaborPipeline::set_targets(const torch::Tensor& ex_points, const torch::Ten
 
 torch::Tensor GaborPipeline::draw_jitter(std::mt19937_64& rng) const {
   if (!s_.jitter || !out_rast_->uses_jitter()) return {};
-  const int64_t R = static_cast<int64_t>(s_.upscale) * s_.res;
+  const int64_t R = s_.out_res;
   const float amp = 1.0f / static_cast<float>(R + 1);
   std::uniform_real_distribution<float> unif(-1.0f, 1.0f);
   auto j = torch::empty({R * R, 2});

@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "core/output_shape.hpp"
 #include "core/point_set.hpp"
 #include "losses/composite_loss.hpp"
 #include "models/feature_net.hpp"
@@ -28,8 +29,13 @@ json gabor_bounds();
 // and the run config's, declared once there; the zeros below are not values a run can get.
 struct GaborSettings {
   double mean_nn_distance = 0;  // d of the exemplar (all classes)
-  int res = 0;                  // exemplar grid; the output grid is u * res
-  int upscale = 0;
+  int res = 0;                  // exemplar grid (positions per exemplar unit)
+  int upscale = 0;              // the paper's u (1 for rectangle outputs: exemplar units)
+  // The output raster: `out_res` positions across a square of `out_scale` exemplar units.
+  // The paper's: the unit square, u * res across u. Rectangles: one window (optim/window_plan.hpp).
+  int out_res = 0;
+  double out_scale = 0;
+  double window_margin = 0;     // rectangles: exemplar units reserved on each side of a window's interior
   int k = 0;                    // neighbours per grid position: min(M, k)
   bool k_per_stage = true;      // k = min(k, exemplar points of the stage's classes)
   std::vector<double> sigmas;   // coarse -> fine
@@ -41,8 +47,9 @@ struct GaborSettings {
   json feature_net;             // the net spec after --quick shrinking
 };
 
-// Resolves settings from the method's (defaults-merged) params; errors name the key.
-GaborSettings resolve_gabor_settings(const json& params, const PointSet& exemplar, int upscale, bool quick);
+// Resolves settings from the method's (defaults-merged) params for an output of `shape`;
+// errors name the key.
+GaborSettings resolve_gabor_settings(const json& params, const PointSet& exemplar, const OutputShape& shape, bool quick);
 
 class GaborPipeline {
  public:
@@ -55,7 +62,7 @@ class GaborPipeline {
                             const torch::Tensor& jitter) { return out_rast_->forward(points, weights, sigma, jitter); }
   Features features(const torch::Tensor& maps) { return net_->forward(maps); }
   torch::Tensor loss(const Features& f) { return loss_.forward(f); }
-  // Independent uniform offsets in [-1, 1] / (u res + 1) per grid position and axis, or an
+  // Independent uniform offsets in [-1, 1] / (out_res + 1) per grid position and axis, or an
   // undefined tensor when jitter is off or meaningless for the rasterizer.
   torch::Tensor draw_jitter(std::mt19937_64& rng) const;
   // A new random network (the published code draws one per class for attribute scenes).

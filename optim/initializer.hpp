@@ -1,6 +1,6 @@
 #pragma once
 // Initialiser: where the output points of one class start. "best_candidate" (toroidal
-// best-candidate Poisson disk in [margin, 1-margin]^2: the paper's; margin 0.01), "uniform"
+// best-candidate Poisson disk in the domain inset by `margin`: the paper's; margin 0.01), "uniform"
 // (supplement: random initialisation works too), "file" (a given point file, e.g. the
 // published code's own initialisation in shared/data/reference, to reproduce its runs).
 #include <cstdint>
@@ -14,8 +14,9 @@ namespace ppsynth {
 class Initializer {
  public:
   virtual ~Initializer() = default;
-  // n positions for class `cls` (0-based, in the exemplar's class numbering).
-  virtual PointSet initialize(size_t n, int cls, uint64_t seed) const = 0;
+  // n positions for class `cls` (0-based, in the exemplar's class numbering) on `domain`
+  // (the paper's unit square, or a canvas in exemplar units; margins are fractions of it).
+  virtual PointSet initialize(size_t n, int cls, uint64_t seed, const Domain& domain) const = 0;
 };
 
 using InitializerRegistry = Registry<Initializer>;

@@ -8,16 +8,22 @@
 namespace ppsynth {
 namespace {
 
-Domain inset(double margin) {
+void check_margin(double margin) {
   if (!(margin >= 0 && margin < 0.5)) throw config_error("method.init.margin", "must be in [0, 0.5)");
-  return Domain{margin, margin, 1 - margin, 1 - margin};
+}
+
+// `d` shrunk by `margin` (a fraction of its width and height) on every side.
+Domain inset(const Domain& d, double margin) {
+  return Domain{d.x0 + margin * d.width(), d.y0 + margin * d.height(), d.x1 - margin * d.width(), d.y1 - margin * d.height()};
 }
 
 // The paper's: toroidal best-candidate Poisson disk, candidates in [0.01, 0.99]^2.
 class BestCandidateInit : public Initializer {
  public:
   explicit BestCandidateInit(BestCandidateOptions o) : o_(o) {}
-  PointSet initialize(size_t n, int, uint64_t seed) const override { return best_candidate_points(n, seed, Domain{}, o_); }
+  PointSet initialize(size_t n, int, uint64_t seed, const Domain& d) const override {
+    return best_candidate_points(n, seed, d, o_);
+  }
 
  private:
   BestCandidateOptions o_;
@@ -25,19 +31,21 @@ class BestCandidateInit : public Initializer {
 
 class UniformInit : public Initializer {
  public:
-  explicit UniformInit(double margin) : d_(inset(margin)) {}
-  PointSet initialize(size_t n, int, uint64_t seed) const override { return uniform_points(n, seed, d_); }
+  explicit UniformInit(double margin) : margin_(margin) { check_margin(margin); }
+  PointSet initialize(size_t n, int, uint64_t seed, const Domain& d) const override {
+    return uniform_points(n, seed, inset(d, margin_));
+  }
 
  private:
-  Domain d_;
+  double margin_;
 };
 
 // Any registered point generator ({"generator": {"type": "jittered_grid", ...}}).
 class GeneratorInit : public Initializer {
  public:
   explicit GeneratorInit(json spec) : spec_(std::move(spec)) {}
-  PointSet initialize(size_t n, int, uint64_t seed) const override {
-    return generate_points(spec_, n, seed, Domain{}, "method.init.generator");
+  PointSet initialize(size_t n, int, uint64_t seed, const Domain& d) const override {
+    return generate_points(spec_, n, seed, d, "method.init.generator");
   }
 
  private:
@@ -55,7 +63,7 @@ PPSYNTH_REGISTER(ppsynth::InitializerRegistry, "best_candidate", (ppsynth::json{
                    o.m = ppsynth::get_number(p, "m", "method.init");
                    o.margin = ppsynth::get_number(p, "margin", "method.init");
                    if (!(o.m > 0)) throw ppsynth::config_error("method.init.m", "must be > 0");
-                   ppsynth::inset(o.margin);
+                   ppsynth::check_margin(o.margin);
                    return std::make_unique<ppsynth::BestCandidateInit>(o);
                  })
 PPSYNTH_REGISTER(ppsynth::InitializerRegistry, "uniform", (ppsynth::json{{"margin", 0.01}}),

@@ -31,6 +31,8 @@ struct ProgressEvent {
   int max_iterations = 0;   // cap within the stage (0 = unknown)
   double loss = 0;
   double seconds = 0;       // wall time since the stage began
+  int window = 0;           // large outputs: the stage's window (0-based) of `windows`
+  int windows = 1;
 };
 
 class SynthesisObserver {

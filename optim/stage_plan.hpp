@@ -6,8 +6,9 @@
 // unwrapped positions); a new group starts from the output's wrapped positions.
 //
 // The paper's plan (class_sigma_plan): one group per class in class order, one stage per
-// sigma, earlier classes frozen. Another kind of plan (windows of a large canvas, say) is a
-// different function producing stages for the same engine (optim/gabor_engine.hpp).
+// sigma, earlier classes frozen, the maps on the unit square read as a torus. The windows of
+// a large canvas (optim/window_plan.hpp) are another plan for the same engine
+// (optim/gabor_engine.hpp): the same class and sigma stages, once per window.
 #include <string>
 #include <vector>
 
@@ -17,6 +18,20 @@ namespace ppsynth {
 
 struct GaborSettings;
 
+// Where a stage's maps are computed, in output coordinates. The grid covers the square
+// `grid`; positions enter the maps in its local coordinates, (p - corner) / side.
+struct StageWindow {
+  Domain grid{};           // a square
+  bool torus = true;       // the paper: moving positions wrap on the unit square
+  // Windows (torus false) choose their points when their group starts, from the positions
+  // of the moment: the moving ones are the class's points inside `movable` not yet final;
+  // frozen are the other points of the stage's classes inside `context` (the grid and the
+  // reach of the maps beyond it). Moving points stay inside `movable`; the ones inside
+  // `interior` when the group ends are final (no later window moves them).
+  Domain movable{}, interior{}, context{};
+  int index = 0, count = 1;  // window i of n (0-based)
+};
+
 struct Stage {
   std::string label;                   // "class 1/2 (id 0), sigma 1/4": progress and loss curves
   int group = 0;                       // stages of a group continue one optimisation of `moving`
@@ -25,7 +40,8 @@ struct Stage {
   int k = 0;                           // neighbours per grid position
   std::vector<int> target_classes;     // exemplar classes the targets are computed from
   int own_class = -1;                  // the moving class (for per-class terms); -1: none
-  std::vector<size_t> moving, frozen;  // indices into the output
+  StageWindow window;
+  std::vector<size_t> moving, frozen;  // indices into the output (torus plans; windows choose their own)
 };
 
 using SynthesisPlan = std::vector<Stage>;

@@ -8,10 +8,20 @@ namespace ppsynth {
 
 namespace {
 
-const int64_t kFormat = 1;  // bump when the layout changes: old checkpoints are then refused
+const int64_t kFormat = 2;  // 2: the group's points and the final flags (windows)  // bump when the layout changes: old checkpoints are then refused
 
 torch::Tensor doubles(const std::vector<double>& v) {
   return torch::from_blob(const_cast<double*>(v.data()), {static_cast<int64_t>(v.size())}, torch::kFloat64).clone();
+}
+
+torch::Tensor longs(const std::vector<int64_t>& v) {
+  return torch::from_blob(const_cast<int64_t*>(v.data()), {static_cast<int64_t>(v.size())}, torch::kInt64).clone();
+}
+
+template <class T>
+std::vector<T> to_vector_of(const torch::Tensor& t) {
+  auto c = t.contiguous();
+  return std::vector<T>(c.data_ptr<T>(), c.data_ptr<T>() + c.numel());
 }
 
 std::vector<double> to_vector(const torch::Tensor& t) {
@@ -30,6 +40,10 @@ std::string serialize_state(const SynthesisState& s) {
   a.write("has_moving", torch::tensor(int64_t{s.moving.defined() ? 1 : 0}));
   if (s.moving.defined()) a.write("moving", s.moving.detach());
   a.write("stage_losses", doubles(s.stage_losses));
+  a.write("group_moving", longs(s.group_moving));
+  a.write("group_frozen", longs(s.group_frozen));
+  a.write("final_points", torch::from_blob(const_cast<uint8_t*>(s.final_points.data()),
+                                           {static_cast<int64_t>(s.final_points.size())}, torch::kUInt8).clone());
   std::vector<double> losses, seconds;
   nlohmann::json where = nlohmann::json::array();
   for (const auto& r : s.history) {
@@ -74,6 +88,9 @@ SynthesisState deserialize_state(const std::string& bytes, const std::string& so
     for (size_t i = 0; i + 1 < xy.size(); i += 2) s.positions.push_back(Vec2{xy[i], xy[i + 1]});
     if (read("has_moving").item<int64_t>() != 0) s.moving = read("moving");
     s.stage_losses = to_vector(read("stage_losses"));
+    s.group_moving = to_vector_of<int64_t>(read("group_moving"));
+    s.group_frozen = to_vector_of<int64_t>(read("group_frozen"));
+    s.final_points = to_vector_of<uint8_t>(read("final_points"));
     const auto losses = to_vector(read("history_loss")), seconds = to_vector(read("history_seconds"));
     const auto& where = meta.at("history_where");
     for (size_t i = 0; i < losses.size(); ++i)

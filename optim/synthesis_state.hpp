@@ -26,6 +26,10 @@ struct SynthesisState {
   int stage = 0;                     // the stage in progress (or next to start)
   int iteration = 0;                 // iterations done in `stage`
   torch::Tensor moving;              // the group's optimised positions, unwrapped (undefined: none yet)
+  // The group's points (output indices): chosen as the group starts (windows choose by
+  // position, so a resumed run must not choose again), and the points no window moves again.
+  std::vector<int64_t> group_moving, group_frozen;
+  std::vector<uint8_t> final_points;  // windows only (empty otherwise)
   std::string optimizer;             // the optimiser's serialised state ("" at a stage start)
   std::string rng;                   // the jitter generator (std::mt19937_64, text form)
   std::vector<double> stage_losses;  // losses of `stage` so far (the convergence window)

@@ -117,10 +117,12 @@ app::RunFn setup(CLI::App& app) {
     const int u = r["upscale"];
     const uint64_t seed = r["seed"];
     const auto settings_t0 = Clock::now();
-    GaborSettings s = resolve_gabor_settings(p, ex, u, false);
+    OutputShape shape;  // the paper's u x u output: the bench times its iteration
+    shape.upscale = u;
+    GaborSettings s = resolve_gabor_settings(p, ex, shape, false);
     GaborPipeline pipe(p, s, seed);
     auto init = InitializerRegistry::instance().create(p["init"], "method.init");
-    PointSet start = init->initialize(ex.size() * u * u, 0, seed);
+    PointSet start = init->initialize(ex.size() * u * u, 0, seed, Domain{});
     auto ex_pts = positions_tensor(ex);
     auto moving = positions_tensor(start).set_requires_grad(true);
     // Map weights (disks, multi-attribute scenes): the output carries the exemplar's values u^2 times.
