@@ -1,5 +1,7 @@
 #include "core/memory_budget.hpp"
 
+#include <sys/resource.h>
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -48,6 +50,12 @@ void check_memory(double bytes, const std::string& what) {
   const double available = available_memory_bytes();
   if (!(bytes <= available))
     throw InputError(what + " needs about " + gib(bytes) + " of memory; " + gib(available) + " are available");
+}
+
+double peak_resident_mib() {
+  rusage ru{};
+  getrusage(RUSAGE_SELF, &ru);
+  return ru.ru_maxrss / 1024.0;  // KiB on Linux
 }
 
 }  // namespace ppsynth

@@ -14,4 +14,8 @@ double available_memory_bytes();
 // available_memory_bytes(). `what` names the parameter(s) that set the size.
 void check_memory(double bytes, const std::string& what);
 
+// The peak resident memory of this process so far (getrusage's ru_maxrss), MiB: what
+// run.json and `ppsynth bench` report.
+double peak_resident_mib();
+
 }  // namespace ppsynth

@@ -42,8 +42,8 @@ json gabor_defaults() {
       // Rectangle outputs ("output": {"size"} or {"points"}) run window by window
       // (optim/window_plan.hpp): windows of at most `pixels` grid positions across; a margin
       // of 3 sigma_max + `receptive_field` positions (the network's half-width) on each side
-      // of an interior ("auto"), or a length in exemplar units.
-      {"window", {{"pixels", 384}, {"margin", "auto"}, {"receptive_field", 16}}},
+      // of an interior (null or "auto"), or a length in exemplar units.
+      {"window", {{"pixels", 384}, {"margin", nullptr}, {"receptive_field", 16}}},
       // --quick: every knob that sets the cost, shrunk (tests and smoke runs).
       {"quick", {{"res", 24}, {"channels", 8}, {"max_iterations", 4}, {"num_sigmas", 2}}},
   };
@@ -128,12 +128,12 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
     s.out_res = std::max(8, static_cast<int>(std::lround(side * s.res)));
     s.out_scale = side;
     const json& m = p["window"]["margin"];
-    if (m.is_string() && m.get<std::string>() == "auto")
+    if (m.is_null() || (m.is_string() && m.get<std::string>() == "auto"))
       s.window_margin = 3 * s.sigmas.front() + get_int(p["window"], "receptive_field", "method.window") / static_cast<double>(s.res);
     else if (m.is_number() && m.get<double>() >= 0)
       s.window_margin = m.get<double>();
     else
-      throw config_error("method.window.margin", "expected \"auto\" or a length >= 0 in exemplar units");
+      throw config_error("method.window.margin", "expected null (\"auto\") or a length >= 0 in exemplar units");
   }
   {  // one iteration keeps the output grid's maps and every layer's activations and gradients
     const double cells = std::pow(static_cast<double>(s.out_res), 2);

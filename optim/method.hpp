@@ -33,6 +33,7 @@ struct ProgressEvent {
   double seconds = 0;       // wall time since the stage began
   int window = 0;           // large outputs: the stage's window (0-based) of `windows`
   int windows = 1;
+  bool window_ends = true;  // the window's last stage (snapshots and canvas progress then)
 };
 
 class SynthesisObserver {

@@ -19,6 +19,10 @@ std::vector<double> nn_distances(const PointSet& ps, bool periodic, const char* 
 }
 }  // namespace
 
+std::vector<double> nearest_neighbor_distances(const PointSet& ps, bool periodic) {
+  return nn_distances(ps, periodic, "nearest_neighbor_distances");
+}
+
 double packing_radius(size_t n, double area) {
   if (n == 0) return std::numeric_limits<double>::infinity();
   return std::sqrt(area / (2.0 * std::sqrt(3.0) * static_cast<double>(n)));

@@ -10,6 +10,8 @@
 // 1 for a perfect hexagonal lattice, ~0.75 for good blue noise, ~0 for white noise.
 // Fewer than 2 points throw InputError.
 // Cost: one k-d tree k-NN query per point, O(N log N) (torus: 9 images in the tree).
+#include <vector>
+
 #include "core/point_set.hpp"
 
 namespace ppsynth {
@@ -20,6 +22,9 @@ struct NnStats {
   double min = 0, mean = 0;
 };
 NnStats nn_stats(const PointSet& ps, bool periodic = false);
+
+// Each point's distance to its nearest other point, in the set's order.
+std::vector<double> nearest_neighbor_distances(const PointSet& ps, bool periodic = false);
 
 double mean_nn_distance(const PointSet& ps, bool periodic = false);
 double min_nn_distance(const PointSet& ps, bool periodic = false);

@@ -37,6 +37,12 @@ void ProgressLog::on_iteration(const ProgressEvent& e) {
 
 void ProgressLog::on_stage_end(const ProgressEvent& e, const PointSet&) {
   spdlog::info("[{}] {} done: {} iterations in {}", name_, e.stage, e.iteration, fmt_duration(e.seconds));
+  if (e.windows <= 1 || !e.window_ends) return;
+  ++windows_done_here_;  // the ETA assumes the windows still to come cost what these did
+  const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count();
+  const int left = e.windows - e.window - 1;
+  spdlog::info("[{}] canvas: {}/{} windows done ({:.0f} %), {} in this process, ETA {}", name_, e.window + 1, e.windows,
+               100.0 * (e.window + 1) / e.windows, fmt_duration(spent), fmt_duration(spent / windows_done_here_ * left));
 }
 
 void ProgressLog::on_resume(const std::vector<ProgressEvent>& earlier) {
@@ -80,7 +86,7 @@ void LossRecorder::plot(const std::string& png, const std::string& title) const 
 }
 
 void SnapshotWriter::on_stage_end(const ProgressEvent& e, const PointSet& current) {
-  if (!enabled_) return;
+  if (!enabled_ || !e.window_ends) return;  // large outputs: one snapshot per window
   char base[64];
   std::snprintf(base, sizeof base, "/stage%02d", e.stage_index + 1);
   write_points(dir_ + base + ".txt", current, Format::Plain);

@@ -1,8 +1,11 @@
 #pragma once
 // Observers the commands attach to a synthesis (optim never prints or writes files):
-//   ProgressLog     : a line per stage and every few iterations: loss, it/s, ETA.
+//   ProgressLog     : a line per stage and every few iterations: loss, it/s, ETA; for large
+//                     outputs a line per window: windows done / total, canvas ETA.
 //   LossRecorder    : every iteration's loss, per stage, for the CSV and the curve plot.
-//   SnapshotWriter  : the initialisation and the output after every stage (paper Fig. 4).
+//   SnapshotWriter  : the initialisation and the output after every stage (paper Fig. 4), or
+//                     after every window of a large output.
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -21,6 +24,9 @@ class ProgressLog : public SynthesisObserver {
  private:
   std::string name_;
   int every_;
+  // Canvas progress: windows finished since this process began, and when it began.
+  int windows_done_here_ = 0;
+  std::chrono::steady_clock::time_point began_ = std::chrono::steady_clock::now();
 };
 
 class LossRecorder : public SynthesisObserver {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/memory_budget.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
@@ -129,6 +130,7 @@ void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const
                         {"threads", at::get_num_threads()},
                         {"synthesis_seconds", synthesis_seconds},
                         {"total_seconds", o.seconds},
+                        {"peak_rss_mib", peak_resident_mib()},
                         {"method_stats", o.stats}};
   write_text_atomic(dir + "/run.json", run.dump(2) + "\n");
 }

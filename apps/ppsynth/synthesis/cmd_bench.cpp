@@ -18,6 +18,7 @@
 
 #include "apps/ppsynth/command.hpp"
 #include "optim/run/run_config.hpp"
+#include "core/memory_budget.hpp"
 #include "core/atomic_file.hpp"
 #include "core/config/config.hpp"
 #include "models/gabor_feature_maps.hpp"
@@ -51,12 +52,6 @@ Timing time_it(int reps, F&& f) {
     t.s.push_back(std::chrono::duration<double>(Clock::now() - a).count());
   }
   return t;
-}
-
-double peak_rss_mib() {
-  rusage ru{};
-  getrusage(RUSAGE_SELF, &ru);
-  return ru.ru_maxrss / 1024.0;
 }
 
 // FLOPs of forward + input gradient of every convolution the net runs on a 1 x C x R x R input.
@@ -288,7 +283,7 @@ app::RunFn setup(CLI::App& app) {
       for (double x : setup_each) std::printf(" %.2f", x), setup_total += x;
       std::printf(" s (all %zu sigmas %.2f s)\n", setup_each.size(), setup_total);
     }
-    std::printf("peak resident memory: %.0f MiB\n", peak_rss_mib());
+    std::printf("peak resident memory: %.0f MiB\n", peak_resident_mib());
     out["phases"] = jp;
     out["iteration_min_s"] = full.min();
     out["iteration_median_s"] = full.median();
@@ -303,7 +298,7 @@ app::RunFn setup(CLI::App& app) {
     out["checkpoint_write_median_s"] = checkpoint_write.median();
     out["setup_first_s"] = setup_first;
     out["setup_per_sigma_s"] = setup_each;
-    out["peak_rss_mib"] = peak_rss_mib();
+    out["peak_rss_mib"] = peak_resident_mib();
     if (!o->json_out.empty()) write_text_atomic(o->json_out, out.dump(2) + "\n");
     return 0;
   };

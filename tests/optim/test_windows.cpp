@@ -1,0 +1,246 @@
+// Outputs of any size and shape (issue 20): rectangles and point counts in exemplar units,
+// clean borders (a padded canvas, cropped), and synthesis window by window
+// (optim/window_plan.hpp): the layout tiles the canvas, a window run resumes bit for bit, the
+// pattern has no seam at the windows' meeting lines, and the grid (the memory of an
+// iteration) does not grow with the output.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "core/generators/lattices.hpp"
+#include "core/metrics/nearest_neighbor.hpp"
+#include "core/output_shape.hpp"
+#include "optim/gabor_pipeline.hpp"
+#include "optim/method.hpp"
+#include "optim/run/run_config.hpp"
+#include "optim/synthesis_state.hpp"
+#include "optim/window_plan.hpp"
+
+using namespace ppsynth;
+
+namespace {
+
+PointSet exemplar(int classes, bool disks) {
+  PointSet ps;
+  if (disks) ps.add_attribute("radius");
+  for (int c = 0; c < classes; ++c) {
+    auto pts = jittered_grid_points(c == 0 ? 25 : 9, 11 + c);
+    for (size_t i = 0; i < pts.size(); ++i)
+      ps.add(pts[i], c, disks ? std::vector<double>{0.02 + 0.005 * (i % 3) + 0.01 * c} : std::vector<double>{});
+  }
+  return ps;
+}
+
+OutputShape shape_of(const json& output, const PointSet& ex) {
+  json config = resolve_run_config(json{{"output", output}}, {});
+  return resolve_output_shape(config, ex);
+}
+
+struct Run {
+  PointSet output;
+  std::vector<std::string> checkpoints;
+  json stats;
+};
+
+// A tiny Gabor run on `shape`: 16 grid positions per exemplar unit, windows of `pixels`,
+// margins of 0.3 exemplar units (the automatic margin, 3 sigma_max, would need larger windows).
+Run synthesize(const PointSet& ex, const OutputShape& shape, int pixels, int iterations, const std::string* resume = nullptr,
+               bool checkpoints = false) {
+  auto method = MethodRegistry::instance().create(
+      json{{"type", "gabor"},
+           {"window", {{"pixels", pixels}, {"margin", 0.3}}},
+           {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", iterations}, {"num_sigmas", 2}}}},
+      "method");
+  Run run;
+  SynthesisContext ctx;
+  ctx.quick = true;
+  ctx.seed = 3;
+  ctx.output = shape;
+  ctx.stats = &run.stats;
+  if (checkpoints) {
+    ctx.checkpoint_seconds = 0;
+    ctx.save_checkpoint = [&](const std::string& bytes) { run.checkpoints.push_back(bytes); };
+  }
+  ctx.resume_state = resume;
+  run.output = method->synthesize(ex, ctx);
+  return run;
+}
+
+bool same_bits(const PointSet& a, const PointSet& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i].x != b[i].x || a[i].y != b[i].y || a.cls(i) != b.cls(i)) return false;
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("output shapes: the paper's square, rectangles and point counts, with their errors", "[optim][windows]") {
+  const PointSet ex = exemplar(2, false);  // 25 + 9 points on the unit square
+  const OutputShape paper = shape_of(json::object(), ex);
+  CHECK_FALSE(paper.rectangle);
+  CHECK(paper.expected_points(ex) == 4 * 34);
+
+  const OutputShape strip = shape_of(json{{"size", {4, 1}}}, ex);
+  CHECK(strip.rectangle);
+  CHECK(strip.domain().x1 == 4);
+  CHECK(strip.domain().y1 == 1);
+  CHECK(strip.class_counts(ex, strip.domain()) == std::vector<size_t>{100, 36});
+  CHECK(strip.pad == Approx(2 * mean_nn_distance(ex)));
+  CHECK(strip.canvas().x0 == Approx(-strip.pad));
+
+  const OutputShape counted = shape_of(json{{"points", 3400}, {"border", "published"}}, ex);
+  CHECK(counted.width == Approx(10));
+  CHECK(counted.height == Approx(10));
+  CHECK(counted.pad == 0);
+  CHECK(counted.expected_points(ex) == 3400);
+
+  for (const json& bad : {json{{"size", {4}}}, json{{"size", {4, 1}}, {"points", 10}}, json{{"points", 0}},
+                          json{{"size", {0.001, 1}}}, json{{"size", {2, 2}}, {"border", "soft"}}, json{{"size", {2, 2}}, {"pad", -1}}})
+    CHECK_THROWS_WITH(shape_of(bad, ex), Catch::Contains("output"));
+  CHECK_THROWS_WITH(resolve_run_config(json{{"output", {{"sizes", {1, 1}}}}}, {}), Catch::Contains("output.sizes"));
+}
+
+TEST_CASE("window layout: interiors tile the canvas, overlaps hold two margins, the movable part stays in the grid",
+          "[optim][windows]") {
+  const Domain canvas{-0.5, -0.5, 9.5, 4.5};
+  const WindowLayout w = window_layout(canvas, 3.0, 0.5, 0.6, "method.window");
+  CHECK(w.side == 3.0);
+  CHECK(w.nx == 5);  // (10 - 3) / (3 - 1) = 3.5 -> 4 steps
+  CHECK(w.ny == 2);  // (5 - 3) / (3 - 1) = 1 step
+  double area = 0;
+  for (const auto& s : w.windows) {
+    area += s.interior.area();
+    CHECK(s.grid.width() == Approx(3.0));
+    CHECK(s.grid.x0 >= canvas.x0 - 1e-12);
+    CHECK(s.grid.x1 <= canvas.x1 + 1e-12);
+    // a final point never sees a grid border: a margin between interior and grid edge,
+    // except on the canvas's own border
+    if (s.interior.x0 > canvas.x0) CHECK(s.interior.x0 - s.grid.x0 >= 0.5 - 1e-12);
+    if (s.interior.x1 < canvas.x1) CHECK(s.grid.x1 - s.interior.x1 >= 0.5 - 1e-12);
+    if (s.interior.y0 > canvas.y0) CHECK(s.interior.y0 - s.grid.y0 >= 0.5 - 1e-12);
+    if (s.interior.y1 < canvas.y1) CHECK(s.grid.y1 - s.interior.y1 >= 0.5 - 1e-12);
+    CHECK(s.movable.x0 == s.interior.x0);
+    CHECK(s.movable.x1 == s.grid.x1);
+    CHECK(s.context.x0 == Approx(s.grid.x0 - 0.6));
+  }
+  CHECK(area == Approx(canvas.area()));  // and no two interiors overlap:
+  for (size_t a = 0; a < w.windows.size(); ++a)
+    for (size_t b = a + 1; b < w.windows.size(); ++b) {
+      const Domain &p = w.windows[a].interior, &q = w.windows[b].interior;
+      const double ox = std::min(p.x1, q.x1) - std::max(p.x0, q.x0), oy = std::min(p.y1, q.y1) - std::max(p.y0, q.y0);
+      CHECK_FALSE((ox > 1e-9 && oy > 1e-9));
+    }
+  CHECK(window_layout(Domain{0, 0, 2, 2}, 3.0, 0.5, 0.6, "k").windows.size() == 1);
+  CHECK_THROWS_WITH(window_layout(canvas, 1.0, 0.5, 0.6, "method.window"), Catch::Contains("method.window"));
+}
+
+TEST_CASE("a rectangle output: its domain, counts near the density's, classes and radii kept", "[optim][windows]") {
+  const PointSet ex = exemplar(2, true);
+  const OutputShape shape = shape_of(json{{"size", {3, 1.5}}}, ex);
+  const Run run = synthesize(ex, shape, 24, 3);  // 24 positions = 1.5 units: 2 x 1 windows and more
+  const PointSet& out = run.output;
+  CHECK(out.domain().x1 == 3);
+  CHECK(out.domain().y1 == 1.5);
+  CHECK(run.stats["windows"]["nx"].get<int>() >= 2);
+  const auto counts = out.class_counts();
+  REQUIRE(counts.size() == 2);
+  CHECK(std::abs(static_cast<double>(counts[0]) - 25 * 4.5) <= 0.15 * 25 * 4.5);
+  CHECK(std::abs(static_cast<double>(counts[1]) - 9 * 4.5) <= 0.2 * 9 * 4.5);
+  const int r = *out.attribute_index("radius");
+  for (size_t i = 0; i < out.size(); ++i) {
+    CHECK(out.domain().contains(out[i], 0.0));
+    const double radius = out.attr(i, r);  // exemplar units: the exemplar's own radii, not divided by u
+    CHECK(radius >= 0.02 - 1e-12);
+    CHECK(radius <= 0.04 + 1e-12);
+  }
+
+  // A published border keeps the count exact: the canvas is the rectangle.
+  const OutputShape exact = shape_of(json{{"points", 200}, {"border", "published"}}, exemplar(1, false));
+  const Run counted = synthesize(exemplar(1, false), exact, 24, 2);
+  CHECK(counted.output.size() == 200);
+}
+
+TEST_CASE("a window run resumed from any checkpoint ends bit for bit as the uninterrupted one", "[optim][windows][checkpoint]") {
+  const PointSet ex = exemplar(2, true);
+  const OutputShape shape = shape_of(json{{"size", {2.5, 1.2}}}, ex);
+  const Run whole = synthesize(ex, shape, 20, 3, nullptr, true);
+  const size_t n = whole.checkpoints.size();
+  REQUIRE(n > 10);
+  for (size_t i : {size_t{1}, n / 3, n / 2, n - 2}) {
+    const SynthesisState st = deserialize_state(whole.checkpoints[i], "test");
+    INFO("checkpoint " << i << ": stage " << st.stage << ", iteration " << st.iteration);
+    const Run resumed = synthesize(ex, shape, 20, 3, &whole.checkpoints[i], true);
+    CHECK(same_bits(resumed.output, whole.output));
+  }
+}
+
+TEST_CASE("no seam: where windows meet, the pattern's density and spacing are those inside the windows", "[optim][windows]") {
+  // One class of 25 jittered-grid points per unit, a 8 x 3 strip in windows of 3 units with
+  // the automatic margin (3 sigma_max + the 7 x 7 network's reach: about 1 unit at 32 grid
+  // positions per unit): the interiors meet at several x. The points within 0.25 of a meeting
+  // line against the others (both away from the output's border): density, mean
+  // nearest-neighbour distance, and the share of points closer than 0.3 mean spacings.
+  const PointSet ex = exemplar(1, false);
+  auto method = MethodRegistry::instance().create(
+      json{{"type", "gabor"}, {"window", {{"pixels", 96}}},
+           {"quick", {{"res", 32}, {"channels", 8}, {"max_iterations", 30}, {"num_sigmas", 2}}}},
+      "method");
+  SynthesisContext ctx;
+  ctx.quick = true;
+  ctx.seed = 4;
+  ctx.output = shape_of(json{{"size", {8, 3}}}, ex);
+  json stats;
+  ctx.stats = &stats;
+  const PointSet out = method->synthesize(ex, ctx);
+  REQUIRE(stats["windows"]["nx"].get<int>() >= 3);
+  // the meeting lines: half-way in each overlap (window_plan.cpp); recomputed from the layout
+  const WindowLayout layout =
+      window_layout(ctx.output.canvas(), stats["windows"]["side"], stats["windows"]["margin"], 0, "k");
+  std::vector<double> seams;
+  for (int i = 0; i + 1 < layout.nx; ++i) seams.push_back(layout.windows[i].interior.x1);
+  std::vector<size_t> near, far;
+  for (size_t i = 0; i < out.size(); ++i) {
+    double dx = 1e9;
+    for (double s : seams) dx = std::min(dx, std::abs(out[i].x - s));
+    if (out[i].y < 0.3 || out[i].y > 2.7 || out[i].x < 0.3 || out[i].x > 7.7) continue;
+    (dx < 0.25 ? near : far).push_back(i);
+  }
+  REQUIRE(near.size() > 50);
+  const double band = 2.4, near_area = seams.size() * 0.5 * band, far_area = 7.4 * band - near_area;
+  const double density_ratio = (near.size() / near_area) / (far.size() / far_area);
+  const auto nn = nearest_neighbor_distances(out, false);
+  double sn = 0, sf = 0;
+  for (size_t i : near) sn += nn[i];
+  for (size_t i : far) sf += nn[i];
+  const double mean_near = sn / near.size(), mean_far = sf / far.size();
+  double close_near = 0, close_far = 0;
+  for (size_t i : near) close_near += nn[i] < 0.3 * mean_far;
+  for (size_t i : far) close_far += nn[i] < 0.3 * mean_far;
+  close_near /= near.size();
+  close_far /= far.size();
+  INFO("near " << near.size() << " far " << far.size() << " density " << density_ratio << " mean nn " << mean_near << " / "
+               << mean_far << " close " << close_near << " / " << close_far);
+  CHECK(density_ratio > 0.85);
+  CHECK(density_ratio < 1.15);
+  CHECK(mean_near / mean_far > 0.9);
+  CHECK(mean_near / mean_far < 1.1);
+  CHECK(close_near <= close_far + 0.05);
+}
+
+TEST_CASE("the window grid, the memory of an iteration, does not grow with the output", "[optim][windows]") {
+  const PointSet ex = exemplar(1, false);
+  GaborSettings small, large;
+  const json p = [] {
+    json m;
+    MethodRegistry::instance().create(json{{"type", "gabor"}}, "method", &m);
+    return m;
+  }();
+  small = resolve_gabor_settings(p, ex, shape_of(json{{"size", {4, 4}}}, ex), false);
+  large = resolve_gabor_settings(p, ex, shape_of(json{{"points", 1000000}}, ex), false);
+  CHECK(small.out_res == large.out_res);  // one window's grid, whatever the canvas
+  CHECK(large.out_res == 384);
+  // a canvas smaller than a window: the grid shrinks to it
+  const GaborSettings tiny = resolve_gabor_settings(p, ex, shape_of(json{{"size", {1, 1}}}, ex), false);
+  CHECK(tiny.out_res < 384);
+}
