@@ -2,8 +2,21 @@
 // case): target = the exemplar's PCF (Eq. 4.1 over the exemplar window, radii relative to
 // its r_max); output = u^2 M points on the unit torus, descended on Eq. 4.3. Because radii are
 // relative to r_max and r_max scales as 1/sqrt(N), the output's PCF in its own r_max units is
-// the exemplar's PCF at 1/u size. Classes and attributes are not modelled (single class).
+// the exemplar's PCF at 1/u size. On this path classes and attributes are not modelled (single class).
+//
+// Rectangle outputs (core/output_shape.hpp): the canvas, in exemplar units, made a torus;
+// each class is synthesised on its own against its own PCF (cross-class structure is not
+// modelled) with output.class_counts(exemplar, canvas) points, so every class keeps its
+// density, and takes its exemplar points' attributes in turn (i-th point: point i mod M_c).
+// A class whose PCF reaches beyond half a side of a thin canvas descends on a torus grown past
+// the canvas's far edges and is cut to the canvas (its count is then the density's expectation, not exact).
+// A class with fewer than 2 exemplar or output points has no PCF: its points stay uniform.
+// ctx.initialization is then in exemplar units on the canvas with exactly those per-class counts.
+// Border: synthesised on output.canvas(), the crop to output.domain() kept when output.clean_border and pad > 0.
+#include <algorithm>
 #include <chrono>
+#include <string>
+#include <vector>
 
 #include "core/config/config.hpp"
 #include "core/error.hpp"
@@ -44,6 +57,7 @@ class Pcf2017Method : public SynthesisMethod {
   PointSet synthesize(const PointSet& exemplar, const SynthesisContext& ctx) override {
     validate(exemplar, "exemplar");
     if (exemplar.size() < 2) throw InputError("pcf2017: the exemplar needs at least 2 points");
+    if (ctx.output.rectangle) return synthesize_rectangle(exemplar, ctx);
     if (ctx.output.upscale < 1) throw InputError("pcf2017: upscale must be >= 1");
     if (exemplar.num_classes() > 1 || exemplar.num_attributes() > 0)
       spdlog::warn("pcf2017: classes and attributes are ignored (single-class PCF synthesis)");
@@ -100,6 +114,142 @@ class Pcf2017Method : public SynthesisMethod {
   }
 
  private:
+  PointSet synthesize_rectangle(const PointSet& exemplar, const SynthesisContext& ctx) const {
+    const OutputShape& shape = ctx.output;
+    const Domain c = shape.canvas();
+    const Domain torus{c.x0, c.y0, c.x1, c.y1, true};
+    const int K = exemplar.num_classes();
+
+    // Per class: its exemplar points, the torus it descends on (grown: larger than the
+    // canvas) and its positions there.
+    std::vector<PointSet> ex_class(K);
+    std::vector<Domain> on(K, torus);
+    std::vector<char> grown(K, 0);
+    for (int k = 0; k < K; ++k) {
+      ex_class[k] = exemplar.subset_class(k);
+      if (ex_class[k].empty()) continue;
+      on[k] = class_torus(exemplar, shape, k, torus);
+      grown[k] = on[k].x1 != torus.x1 || on[k].y1 != torus.y1;
+      if (ctx.initialization && grown[k])
+        throw InputError("pcf2017: class " + std::to_string(k) + "'s PCF reaches beyond half the canvas side, so it is synthesised on a " +
+                         std::to_string(on[k].width()) + " x " + std::to_string(on[k].height()) +
+                         " torus larger than the canvas, which an initialisation cannot fill; give a larger output.size or no initialisation");
+    }
+    if (ctx.initialization) check_initialization(*ctx.initialization, shape.class_counts(exemplar, torus), torus);
+    std::vector<std::vector<Vec2>> pos(K);
+    for (int k = 0; k < K; ++k) {
+      if (ex_class[k].empty()) continue;
+      // Seeded per class (class 0 with the run's seed, as the paper's path), so classes start independent.
+      pos[k] = ctx.initialization ? ctx.initialization->subset_class(k).positions()
+                                  : uniform_points(shape.class_counts(exemplar, on[k])[k], on[k], ctx.seed + 1000003ull * k);
+    }
+    // The canvas as observers and the result see it: each class's points inside the canvas,
+    // the i-th point of class k with the attributes of the class's exemplar point i mod M_k.
+    const auto assemble = [&] {
+      PointSet ps(torus);
+      ps.set_class_labels(exemplar.class_labels());
+      for (auto& name : exemplar.attribute_names()) ps.add_attribute(name);
+      for (int k = 0; k < K; ++k)
+        for (size_t i = 0; i < pos[k].size(); ++i)
+          if (!grown[k] || (pos[k][i].x < torus.x1 && pos[k][i].y < torus.y1))  // a larger torus extends past the far edges only
+            ps.add(pos[k][i], k, ex_class[k].attributes_of(i % ex_class[k].size()));
+      return ps;
+    };
+    ctx.start(assemble());
+
+    DescentOptions opt = descent_;
+    if (ctx.quick) opt.iterations = std::min(opt.iterations, quick_iterations_);
+    const auto t_run = std::chrono::steady_clock::now();
+    nlohmann::json per_class = nlohmann::json::array();
+    for (int k = 0; k < K; ++k) {
+      ProgressEvent ev;
+      ev.stage = K > 1 ? "class " + std::to_string(k + 1) + "/" + std::to_string(K) + ", pcf2017 gradient descent"
+                       : "pcf2017 gradient descent";
+      ev.stage_index = k;
+      ev.stage_count = K;
+      const size_t n = pos[k].size();
+      const bool has_pcf = ex_class[k].size() >= 2 && n >= 2;
+      ev.max_iterations = has_pcf ? opt.iterations : 0;
+      const auto t0 = std::chrono::steady_clock::now();
+      const auto since = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+      ctx.stage_begin(ev);
+      nlohmann::json cs = {{"class", k}, {"torus", {on[k].x0, on[k].y0, on[k].x1, on[k].y1}}, {"torus_points", n}};
+      if (has_pcf) {
+        const PcfCurve target = pattern_pcf(ex_class[k], pcf_, exemplar.domain().periodic);
+        DescentResult res = synthesize_stationary(target.g, pos[k], on[k], pcf_, opt, [&](int it, double E) {
+          ev.iteration = it + 1;
+          ev.loss = E;
+          ev.seconds = since();
+          ctx.iteration(ev);
+        });
+        pos[k] = std::move(res.points);
+        ev.loss = res.energy.back();
+        cs.update({{"iterations", int(res.energy.size()) - 1},
+                   {"energy_initial", res.energy.front()},
+                   {"energy_final", res.energy.back()},
+                   {"converged", res.converged},
+                   {"target_r_max", target.r_max}});
+      } else if (!ex_class[k].empty()) {
+        spdlog::warn("pcf2017: class {} has {} exemplar and {} output points, too few for a PCF; its points stay uniform",
+                     k, ex_class[k].size(), n);
+      }
+      ev.seconds = since();
+      ctx.stage_end(ev, assemble());
+      per_class.push_back(cs);
+    }
+    const PointSet on_canvas = assemble();
+    const bool crop = shape.clean_border && shape.pad > 0;
+    PointSet out = crop ? on_canvas.crop(shape.domain()) : on_canvas;
+    if (ctx.stats) {
+      (*ctx.stats)["output"] = shape.describe();
+      (*ctx.stats)["canvas"] = {c.x0, c.y0, c.x1, c.y1};
+      (*ctx.stats)["canvas_points"] = on_canvas.size();
+      (*ctx.stats)["points"] = out.size();
+      (*ctx.stats)["classes"] = per_class;
+      (*ctx.stats)["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_run).count();
+    }
+    return out;
+  }
+
+  // The torus class k descends on: the canvas, or (its PCF reaching beyond half a side of a
+  // thin canvas, which PcfEnergy refuses) the canvas extended past its far edges until both
+  // sides are twice the reach; the canvas is then cut out of it. The reach follows the
+  // rounded count, so it is re-measured after each growth (few rounds: the density is fixed).
+  Domain class_torus(const PointSet& exemplar, const OutputShape& shape, int k, const Domain& canvas) const {
+    Domain t = canvas;
+    for (int round = 0; round < 32; ++round) {
+      const size_t n = shape.class_counts(exemplar, t)[k];
+      if (n < 2) return t;  // no PCF to match: the class stays uniform on the canvas
+      const double reach = (pcf_.r_b + pcf_.kernel_cutoff * pcf_.sigma_factor) * rmax_for(double(n), t.area());
+      if (reach <= 0.5 * std::min(t.width(), t.height())) return t;
+      const double side = 2.0 * reach * 1.01;  // 1 % over, so the rounding of the next count rarely needs another round
+      t.x1 = t.x0 + std::max(t.width(), side);
+      t.y1 = t.y0 + std::max(t.height(), side);
+    }
+    throw InputError("pcf2017: no torus found for class " + std::to_string(k) + " (its PCF reach does not settle)");
+  }
+  // An explicit initialisation of a rectangle output: exemplar units, inside the canvas,
+  // the density's count of every class (its file's own domain is not used).
+  static void check_initialization(const PointSet& init, const std::vector<size_t>& counts, const Domain& canvas) {
+    size_t total = 0;
+    for (size_t n : counts) total += n;
+    const std::string where = "the synthesis canvas [" + std::to_string(canvas.x0) + ", " + std::to_string(canvas.x1) +
+                              "] x [" + std::to_string(canvas.y0) + ", " + std::to_string(canvas.y1) + "]";
+    const auto have = init.class_counts();
+    for (size_t k = 0; k < std::max(have.size(), counts.size()); ++k) {
+      const size_t h = k < have.size() ? have[k] : 0, want = k < counts.size() ? counts[k] : 0;
+      if (h != want)
+        throw InputError("pcf2017: the initialisation has " + std::to_string(h) + " points of class " + std::to_string(k) +
+                         "; the synthesis needs " + std::to_string(want) + " (" + std::to_string(total) +
+                         " in all: the exemplar's density of each class over " + where + ")");
+    }
+    for (size_t i = 0; i < init.size(); ++i)
+      if (!canvas.contains(init[i]))
+        throw InputError("pcf2017: the initialisation's point " + std::to_string(i + 1) + " (" + std::to_string(init[i].x) +
+                         ", " + std::to_string(init[i].y) + ") lies outside " + where +
+                         " (output rectangle in exemplar units, plus the clean-border pad)");
+  }
+
   PcfParams pcf_;
   DescentOptions descent_;
   int quick_iterations_ = 30;

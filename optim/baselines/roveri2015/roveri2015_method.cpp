@@ -7,6 +7,11 @@
 // Algorithm 1 (solver.hpp), and finally mapped onto the unit square (structures at 1/u size).
 // Lengths scale with d_nn, the exemplar's mean nearest-neighbour distance: sigma =
 // sigma_factor d_nn, delta_0 = window_factor d_nn (params.hpp).
+// Rectangle outputs (core/output_shape.hpp): the same synthesis with the rectangle as the
+// output domain, in exemplar units and never mapped (its expected count is the exemplar's
+// density times the area); ctx.initialization is then in exemplar units on the canvas.
+// Border: synthesised on output.canvas(), the crop to output.domain() kept when output.clean_border and pad > 0.
+// Snapshots (start, stage ends) show what is synthesised: the unit square, or the canvas.
 // Progress: one ProgressEvent stage per scale ("scale s/N, delta=..."), one iteration event
 // per local-global round (loss = T of Eq. 3.6), a stage_end with the current output.
 #include <chrono>
@@ -85,11 +90,17 @@ class Roveri2015Method : public SynthesisMethod {
   PointSet synthesize(const PointSet& exemplar, const SynthesisContext& ctx) override {
     validate(exemplar, "exemplar");
     if (exemplar.size() < 3) throw InputError("roveri2015: the exemplar needs at least 3 points");
-    if (ctx.output.upscale < 1) throw InputError("roveri2015: upscale must be >= 1");
+    const OutputShape& shape = ctx.output;
+    const bool rect = shape.rectangle;
+    if (!rect && shape.upscale < 1) throw InputError("roveri2015: upscale must be >= 1");
     const auto t_start = std::chrono::steady_clock::now();
     const Domain E = exemplar.domain();
-    const double u = ctx.output.upscale;
-    const Domain out_domain{E.x0, E.y0, E.x0 + u * E.width(), E.y0 + u * E.height(), p_.periodic_output};
+    const double u = shape.upscale;
+    // The paper's: u times the exemplar's window; a rectangle: its canvas (already in exemplar units).
+    const Domain canvas = shape.canvas();
+    const Domain out_domain = rect ? Domain{canvas.x0, canvas.y0, canvas.x1, canvas.y1, p_.periodic_output}
+                                   : Domain{E.x0, E.y0, E.x0 + u * E.width(), E.y0 + u * E.height(), p_.periodic_output};
+    const bool crop = rect && shape.clean_border && shape.pad > 0;
     const Domain unit{0, 0, 1, 1, p_.periodic_output};
 
     const double d_nn = mean_nn_distance(exemplar, false);
@@ -112,17 +123,22 @@ class Roveri2015Method : public SynthesisMethod {
       p.merge_iterations = std::min(p.merge_iterations, 10);
     }
 
-    PointSet init = ctx.initialization ? ctx.initialization->mapped_to(out_domain)
+    PointSet init = ctx.initialization ? (rect ? initialization_on(*ctx.initialization, out_domain)
+                                                : ctx.initialization->mapped_to(out_domain))
                                        : random_patch_copy(exemplar, out_domain,
                                                            p.patch_size * std::min(E.width(), E.height()), ctx.seed);
-    ctx.start(init.mapped_to(unit));
+    ctx.start(rect ? init : init.mapped_to(unit));
     const ChannelEncoder enc(exemplar, p.attribute_weight);
     if (init.num_attributes() != exemplar.num_attributes())
       throw InputError("roveri2015: the initialization has " + std::to_string(init.num_attributes()) +
                        " attribute columns, the exemplar " + std::to_string(exemplar.num_attributes()));
     SynthesisState st(encode_points(exemplar, enc), E, encode_points(init, enc), out_domain, p.periodic_output);
 
-    const auto to_unit = [&](const SynthesisState& s) { return decode_points(s.out, enc, exemplar, out_domain).mapped_to(unit); };
+    // What observers see and what is returned before the crop: the unit square or the canvas.
+    const auto to_unit = [&](const SynthesisState& s) {
+      PointSet ps = decode_points(s.out, enc, exemplar, out_domain);
+      return rect ? ps : ps.mapped_to(unit);
+    };
     ProgressEvent ev;
     auto t_stage = std::chrono::steady_clock::now();
     const auto since = [](std::chrono::steady_clock::time_point t) {
@@ -162,6 +178,7 @@ class Roveri2015Method : public SynthesisMethod {
     };
     solve(st, enc, p, sigma, delta0, ctx.seed ^ 0x9e3779b97f4a7c15ULL, cb);
     PointSet out = to_unit(st);
+    if (crop) out = out.crop(shape.domain());
     if (ctx.stats) {
       auto& j = *ctx.stats;
       j["d_nn"] = d_nn;
@@ -170,7 +187,14 @@ class Roveri2015Method : public SynthesisMethod {
       j["quadrature_points"] = st.quad.size();
       j["initial_points"] = init.size();
       j["points"] = out.size();
-      j["target_points"] = size_t(u * u) * exemplar.size();
+      if (rect) {
+        j["target_points"] = shape.expected_points(exemplar);
+        j["output"] = shape.describe();
+        j["canvas"] = {canvas.x0, canvas.y0, canvas.x1, canvas.y1};
+        j["canvas_points"] = st.out.size();
+      } else {
+        j["target_points"] = size_t(u * u) * exemplar.size();
+      }
       j["scales"] = scales;
       j["seconds"] = since(t_start);
     }
@@ -178,6 +202,21 @@ class Roveri2015Method : public SynthesisMethod {
   }
 
  private:
+  // An explicit initialisation of a rectangle output: its points in exemplar units, inside
+  // the canvas (its file's own domain may be anything, so positions are not mapped).
+  static PointSet initialization_on(const PointSet& init, const Domain& canvas) {
+    for (size_t i = 0; i < init.size(); ++i)
+      if (!canvas.contains(init[i]))
+        throw InputError("roveri2015: the initialisation's point " + std::to_string(i + 1) + " (" +
+                         std::to_string(init[i].x) + ", " + std::to_string(init[i].y) +
+                         ") lies outside the synthesis canvas [" + std::to_string(canvas.x0) + ", " +
+                         std::to_string(canvas.x1) + "] x [" + std::to_string(canvas.y0) + ", " +
+                         std::to_string(canvas.y1) + "] (output rectangle in exemplar units, plus the clean-border pad)");
+    PointSet on = init;
+    on.set_domain(canvas);
+    return on;
+  }
+
   RoveriParams p_;
   int quick_scales_ = 2;
 };

@@ -5,6 +5,13 @@
 // structure: with the default random offset the copies no longer line up with the
 // evaluation's quadrant windows (docs/method.md, "What the per-class criterion measures").
 // An offset of [0, 0] puts one copy in each quadrant (every quadrant metric is then 0).
+//
+// Rectangle outputs (core/output_shape.hpp): copies of the exemplar in exemplar units (no
+// rescaling, radii kept) tiled from the origin of [0, W] x [0, H], shifted by the offset
+// (exemplar units; random = uniform within one tile), the partial tiles at the edges cropped.
+// Border: a tiling has no synthesis border, so a clean-border canvas would crop to these same points; it tiles the rectangle directly.
+// ctx.initialization is ignored (nothing is optimised).
+#include <cmath>
 #include <random>
 
 #include "core/config/config.hpp"
@@ -21,15 +28,14 @@ class TiledCopyMethod : public SynthesisMethod {
     const auto& o = p.at("offset");
     if (o.is_null()) return;
     if (!o.is_array() || o.size() != 2 || !o[0].is_number() || !o[1].is_number())
-      throw config_error("method.offset", "expected null (a seeded random offset) or [x, y] (unit-square units)");
+      throw config_error("method.offset",
+                         "expected null (a seeded random offset) or [x, y] (output units: the unit square, or exemplar units on a rectangle)");
     offset_ = {o[0].get<double>(), o[1].get<double>()};
     random_ = false;
   }
 
   PointSet synthesize(const PointSet& exemplar, const SynthesisContext& ctx) override {
     validate(exemplar, "exemplar");
-    if (ctx.output.upscale < 1) throw InputError("tiled_copy: upscale must be >= 1");
-    const int u = ctx.output.upscale;
     Vec2 off = offset_;
     if (random_) {  // seeded: the same seed gives the same copy
       std::mt19937_64 rng(ctx.seed);
@@ -37,6 +43,9 @@ class TiledCopyMethod : public SynthesisMethod {
       off.x = uni(rng);
       off.y = uni(rng);
     }
+    if (ctx.output.rectangle) return tile_rectangle(exemplar, ctx, off);
+    if (ctx.output.upscale < 1) throw InputError("tiled_copy: upscale must be >= 1");
+    const int u = ctx.output.upscale;
     const PointSet unit = exemplar.mapped_to(Domain{});
     PointSet out(Domain{});
     out.set_class_labels(unit.class_labels());
@@ -55,6 +64,31 @@ class TiledCopyMethod : public SynthesisMethod {
   }
 
  private:
+  // The rectangle [0, W] x [0, H] covered by copies of the exemplar's window E, tile (a, b)
+  // at (a w + s.x, b h + s.y) with the shift s = offset reduced modulo the tile (a random
+  // offset's unit draws scaled to one tile: shifting by a whole tile changes nothing).
+  PointSet tile_rectangle(const PointSet& exemplar, const SynthesisContext& ctx, Vec2 off) const {
+    const Domain D = ctx.output.domain(), E = exemplar.domain();
+    const double w = E.width(), h = E.height();
+    if (!(w > 0 && h > 0)) throw InputError("tiled_copy: the exemplar's domain has no area");
+    if (random_) off = {off.x * w, off.y * h};
+    const double sx = off.x - w * std::floor(off.x / w), sy = off.y - h * std::floor(off.y / h);
+    // Tiles from one left of the origin (the shift leaves a strip there) to past the far edge.
+    const int na = static_cast<int>(std::ceil((D.x1 - sx) / w)), nb = static_cast<int>(std::ceil((D.y1 - sy) / h));
+    PointSet tiled(D);
+    tiled.set_class_labels(exemplar.class_labels());
+    for (auto& n : exemplar.attribute_names()) tiled.add_attribute(n);
+    ctx.start(tiled);
+    for (int a = -1; a < na; ++a)
+      for (int b = -1; b < nb; ++b)
+        for (size_t i = 0; i < exemplar.size(); ++i)
+          tiled.add(Vec2{exemplar[i].x - E.x0 + a * w + sx, exemplar[i].y - E.y0 + b * h + sy}, exemplar.cls(i),
+                    exemplar.attributes_of(i));
+    // crop: half-open at the near edges, closed at the far ones, so a point on a tile edge
+    // is kept once.
+    return tiled.crop(D);
+  }
+
   Vec2 offset_{0, 0};
   bool random_ = true;
 };
@@ -65,7 +99,7 @@ class TiledCopyMethod : public SynthesisMethod {
 
 PPSYNTH_REGISTER(ppsynth::MethodRegistry, "tiled_copy", (nlohmann::json{{"offset", nullptr}}),
                  (nlohmann::json{{"offset", "[-1e6, 1e6]"}}),
-                 "the exemplar tiled u x u, shifted on the torus (offset null = seeded random, or [x, y]): the copy baseline",
+                 "the exemplar tiled u x u (or over an output rectangle), shifted (offset null = seeded random, or [x, y]): the copy baseline",
                  [](const nlohmann::json& p) -> std::unique_ptr<ppsynth::SynthesisMethod> {
                    return std::make_unique<ppsynth::TiledCopyMethod>(p);
                  })
