@@ -1,5 +1,7 @@
 // `ppsynth synthesize [CONFIG] [--exemplar FILE] [-o RUN_DIR] [--set key=value ...]`
 // `ppsynth synthesize --resume RUN_DIR`
+// `--size W H` / `--points N`: an output of that size (exemplar units) or point count instead of
+// the paper's u x u unit square (the config's "output"; core/output_shape.hpp).
 // Runs one synthesis (default method: the paper's, with the published settings) and writes a
 // run directory (see run_synthesis.hpp). SIGINT and SIGTERM stop it at the end of the current
 // iteration with a checkpoint; the command prints how to resume and exits 130 / 143 (a second
@@ -21,7 +23,8 @@ namespace {
 struct Opts {
   std::string config, exemplar, out, method, init, format, resume;
   std::vector<std::string> sets;
-  long long seed = -1;
+  std::vector<double> size;
+  long long seed = -1, points = -1;
   bool quick = false, force = false;
 };
 
@@ -38,6 +41,12 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_option("--seed", o->seed, "random seed");
   app.add_option("--init", o->init, "explicit initialisation point file");
   app.add_flag("--quick", o->quick, "tiny grid and few iterations (smoke test)");
+  auto* size = app.add_option("--size", o->size, "output rectangle W H in exemplar units (clean borders, window by window)")
+                   ->expected(2)
+                   ->check(CLI::PositiveNumber);
+  app.add_option("--points", o->points, "output of about N points (a square at the exemplar's density)")
+      ->check(CLI::PositiveNumber)
+      ->excludes(size);
   return [o]() -> int {
     using namespace ppsynth;
     RunRequest req;
@@ -48,7 +57,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     try {
       if (!o->resume.empty()) {
         if (!o->config.empty() || !o->exemplar.empty() || !o->out.empty() || !o->sets.empty() || o->force || o->seed >= 0 ||
-            !o->method.empty() || !o->init.empty() || !o->format.empty() || o->quick)
+            !o->method.empty() || !o->init.empty() || !o->format.empty() || o->quick || !o->size.empty() || o->points >= 0)
           throw InputError("--resume takes the run directory alone: its config, seed and settings are the run's own");
         ppsynth::app::install_stop_handlers();
         std::cout << resume_synthesis(o->resume, req).dir << "\n";
@@ -60,6 +69,8 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     if (!o->method.empty()) c["method"] = json{{"type", o->method}};
     if (o->seed >= 0) c["seed"] = o->seed;
     if (!o->init.empty()) c["init_file"] = o->init;
+    if (!o->size.empty()) c["output"]["size"] = o->size;
+    if (o->points >= 0) c["output"]["points"] = o->points;
       auto resolved = resolve_run_config(c, o->sets);
       if (can_resume(resolved)) ppsynth::app::install_stop_handlers();  // others stop at once, as without handlers
       std::cout << run_synthesis(resolved, req).dir << "\n";
