@@ -11,6 +11,11 @@
 #include "core/render/plot_frame.hpp"
 
 namespace ppsynth {
+
+namespace {
+int color_of(const Series& s, size_t k) { return s.color >= 0 ? s.color : static_cast<int>(k); }
+}  // namespace
+
 namespace {
 
 using namespace render;
@@ -80,7 +85,7 @@ void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double 
   std::vector<LegendItem> legend;
   for (size_t k = 0; k < plot.series.size(); ++k)
     if (!plot.series[k].label.empty())
-      legend.push_back({plot.series[k].label, class_color(static_cast<int>(k)),
+      legend.push_back({plot.series[k].label, class_color(color_of(plot.series[k], k)),
                         plot.series[k].dashed ? Marker::DashedLine : Marker::Line});
   const double left = bx + kChartPad + (plot.ylabel.empty() ? 0 : kChartLabelFont * 1.5) + ytw + 8;
   const double right = bx + bw - kChartPad;
@@ -130,7 +135,7 @@ void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double 
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   for (size_t k = 0; k < plot.series.size(); ++k) {
     const Series& s = plot.series[k];
-    set_color(cr, class_color(static_cast<int>(k)));
+    set_color(cr, class_color(color_of(plot.series[k], k)));
     cairo_set_line_width(cr, 1.8);
     if (s.dashed) {
       const double d[] = {6, 4};

@@ -14,6 +14,7 @@ struct Series {
   std::string label;
   std::vector<double> x, y;  // same length (InputError otherwise)
   bool dashed = false;
+  int color = -1;            // palette index; -1: the series' own index. An empty label: no legend entry
 };
 
 struct CurvePlot {

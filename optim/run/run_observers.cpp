@@ -74,10 +74,20 @@ void LossRecorder::plot(const std::string& png, const std::string& title) const 
   cp.ylabel = "loss";
   cp.log_y = true;
   std::map<int, Series> by_stage;
+  // Large outputs repeat the same stages in every window: one colour and one legend entry
+  // per stage kind ("sigma 2/4"), not per window (a 10,000-point canvas has 100 stages).
+  const std::string kWindow = "window ";
+  std::map<std::string, int> kinds;
   int x = 0;
   for (auto& r : rows_) {
     auto& s = by_stage[r.stage_index];
-    s.label = r.stage;
+    std::string kind = r.stage;
+    const bool windowed = kind.rfind(kWindow, 0) == 0 && kind.find(", ") != std::string::npos;
+    if (windowed) kind = kind.substr(kind.find(", ") + 2);
+    const auto known = kinds.find(kind);
+    s.color = known != kinds.end() ? known->second : static_cast<int>(kinds.size());
+    s.label = !windowed ? r.stage : known == kinds.end() || s.label == kind ? kind : "";
+    if (known == kinds.end()) kinds.emplace(kind, s.color);
     s.x.push_back(x++);
     s.y.push_back(r.loss);
   }
