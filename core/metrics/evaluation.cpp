@@ -8,10 +8,13 @@
 
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "core/metrics/border.hpp"
 #include "core/metrics/nearest_neighbor.hpp"
 #include "core/metrics/overlap.hpp"
-#include "core/metrics/quadrant.hpp"
+#include "core/metrics/patches.hpp"
+#include "core/metrics/periodogram.hpp"
 #include "core/metrics/spectrum.hpp"
+#include "core/metrics/summary_stats.hpp"
 
 namespace ppsynth {
 
@@ -21,33 +24,8 @@ using nlohmann::json;
 
 json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
-// Points within 1 % of the domain size of its border. The Gabor method's known artefact is
-// points parked on the border (its maps are not periodic, the positions wrap); a uniform
-// pattern puts 1 - 0.98^2 = 3.96 % of its points in that band.
-constexpr double kBorderBand = 0.01;
 // Inputs from this many points (exemplar + output) log their progress.
 constexpr size_t kProgressPoints = 50000;
-
-double border_fraction(const PointSet& ps) {
-  if (ps.size() == 0) return std::nan("");
-  const Domain& d = ps.domain();
-  const double bx = kBorderBand * d.width(), by = kBorderBand * d.height();
-  size_t near = 0;
-  for (const Vec2& p : ps.positions())
-    if (p.x < d.x0 + bx || p.x > d.x1 - bx || p.y < d.y0 + by || p.y > d.y1 - by) ++near;
-  return static_cast<double>(near) / ps.size();
-}
-
-// Points of each class 0..K-1 in one pass (subset_class per class is O(N) each).
-std::vector<PointSet> split_by_class(const PointSet& ps, int K) {
-  std::vector<std::vector<size_t>> idx(std::max(K, 0));
-  for (size_t i = 0; i < ps.size(); ++i)
-    if (ps.cls(i) >= 0 && ps.cls(i) < K) idx[ps.cls(i)].push_back(i);
-  std::vector<PointSet> out;
-  out.reserve(idx.size());
-  for (const auto& v : idx) out.push_back(ps.subset(v));
-  return out;
-}
 
 // The metrics square distances (k-d tree, PCF) and map each set onto the unit square: a
 // domain side outside 1e-100..1e100 overflows or underflows them (a 1e300-wide domain lost
@@ -70,6 +48,7 @@ json set_summary(const PointSet& ps) {
   json j;
   j["count"] = ps.size();
   j["border_fraction"] = num(border_fraction(ps));
+  j["border_fraction_uniform"] = num(uniform_border_fraction(ps.domain()));
   j["class_counts"] = ps.class_counts();
   if (ps.size() >= 2) {
     // One k-NN pass on the torus gives d_min, mean_nn and the relative radius.
@@ -87,7 +66,7 @@ json set_summary(const PointSet& ps) {
   if (ps.num_classes() == 1)
     per.push_back(j["relative_radius"]);  // the one class is the whole set: no second pass
   else
-    for (const PointSet& c : split_by_class(ps, ps.num_classes()))
+    for (const PointSet& c : split_classes(ps, ps.num_classes()))
       per.push_back(c.size() >= 2 ? json(relative_radius(c)) : json(nullptr));
   j["relative_radius_per_class"] = per;
   return j;
@@ -97,15 +76,35 @@ json curves_json(const Curve& ex, const Curve& out) {
   return {{"r", ex.r}, {"exemplar", ex.g}, {"output", out.g}};
 }
 
-json patch_json(const PointSet& ex, const PointSet& out, const EvalOptions& opt) {
+json values_json(const std::vector<double>& v) {
+  json a = json::array();
+  for (double x : v) a.push_back(num(x));
+  return a;
+}
+
+json quartiles_json(const std::vector<double>& v) {
+  return {num(quantile(v, 0.25)), num(quantile(v, 0.5)), num(quantile(v, 0.75))};
+}
+
+// One row: the exemplar (its domain as read) against the patches (on the unit square). With
+// crops the per-crop values and their quartiles join the means (evaluation.hpp).
+json patch_json(const PointSet& ex, const std::vector<PointSet>& patches, const EvalOptions& opt, bool crops) {
   Curve ce, co;
-  PatchMetrics m = quadrant_metrics(ex, out, opt.pcf, &ce, &co, opt.wasserstein_max_pairs);
+  PatchMetrics m = patch_metrics(ex, patches, opt.pcf, &ce, &co, opt.wasserstein_max_pairs);
   json j = {{"pcf_mse", num(m.pcf_mse)}, {"wasserstein", num(m.wasserstein)}, {"chamfer", num(m.chamfer)},
             {"exemplar_points", ex.size()}};
   j["wasserstein_method"] = m.wasserstein_exact ? "exact" : "subsample";
   if (!m.wasserstein_exact) {
     j["wasserstein_estimate"] = num(m.wasserstein_estimate);
     j["wasserstein_sample"] = {m.wasserstein_sample_a, m.wasserstein_sample_b};
+  }
+  if (crops) {
+    j["per_crop"] = {{"pcf_mse", values_json(m.patch_pcf_mse)},
+                     {"wasserstein", values_json(m.patch_wasserstein)},
+                     {"chamfer", values_json(m.patch_chamfer)}};
+    j["pcf_mse_quartiles"] = quartiles_json(m.patch_pcf_mse);
+    j["wasserstein_quartiles"] = quartiles_json(m.patch_wasserstein);
+    j["chamfer_quartiles"] = quartiles_json(m.patch_chamfer);
   }
   if (opt.include_curves) j["pcf"] = curves_json(ce, co);
   return j;
@@ -143,6 +142,14 @@ void check_eval_options(const EvalOptions& opt) {
     throw InputError("r_max (--r-max) must be in (0, 1] (0 = from the exemplar's count)");
   if (opt.wasserstein_max_pairs < 1 || opt.wasserstein_max_pairs > 400000000)
     throw InputError("wasserstein_exact_limit (--wasserstein-exact-limit) must be in 1..400000000 pairs (a 3.2 GB cost matrix)");
+  if (opt.protocol != PatchProtocol::Auto && opt.protocol != PatchProtocol::Quadrants &&
+      opt.protocol != PatchProtocol::Crops)
+    throw InputError("protocol (--protocol) must be auto, quadrants or crops");
+  if (opt.crops < 1 || opt.crops > kMaxCrops)
+    throw InputError("crops (--crops) must be in 1.." + std::to_string(kMaxCrops) + " (got " +
+                     std::to_string(opt.crops) + ")");
+  if (opt.spectrum && (opt.spectrum_frequency < 1 || opt.spectrum_frequency > kMaxPeriodogramFrequencies))
+    throw InputError("spectrum_frequency must be in 1.." + std::to_string(kMaxPeriodogramFrequencies));
 }
 
 json evaluate(const PointSet& exemplar, const PointSet& output, const EvalOptions& opt) {
@@ -157,36 +164,51 @@ json evaluate(const PointSet& exemplar, const PointSet& output, const EvalOption
   r["exemplar"] = set_summary(exemplar);
   r["output"] = set_summary(output);
   r["upscale"] = std::sqrt(static_cast<double>(output.size()) / exemplar.size());
-  progress("all classes: PCF, Chamfer, Wasserstein in 4 quadrants");
-  r["all"] = patch_json(exemplar, output, opt);
+  const ProtocolPlan plan = plan_protocol(exemplar, output, opt.protocol, opt.crops, opt.crop_seed);
+  const bool crops = plan.used == PatchProtocol::Crops;
+  r["protocol"] = protocol_json(plan);
+  progress("all classes: PCF, Chamfer, Wasserstein in {} {}", plan.windows.size(), patch_protocol_name(plan.used));
+  // The output is cut once; the per-class rows and the cross-class PCFs take the patches'
+  // points of each class (the same points as cutting each class's subset).
+  const std::vector<PointSet> patches = cut_patches(output, plan.windows);
+  r["all"] = patch_json(exemplar, patches, opt, crops);
   const int K = exemplar.num_classes();
   json classes = json::array();
+  json cross = json::array();
   if (K > 1) {
-    const auto ex_k = split_by_class(exemplar, K), out_k = split_by_class(output, K);
+    const PatchSplit split = split_patches(exemplar, patches, std::max(K, output.num_classes()));
+    const auto ex_k = split_classes(exemplar, K);
     for (int k = 0; k < K; ++k) {
       progress("class {} of {}", k + 1, K);
-      json c = patch_json(ex_k[k], out_k[k], opt);
+      std::vector<PointSet> class_patches;
+      class_patches.reserve(split.patch_class.size());
+      for (const auto& p : split.patch_class) class_patches.push_back(p[k]);
+      json c = patch_json(ex_k[k], class_patches, opt, crops);
       c["class"] = k;
       c["label"] = exemplar.class_label(k);
       classes.push_back(c);
     }
+    if (K <= kMaxPairClasses) {
+      const size_t n_pairs = static_cast<size_t>(K) * (K - 1) / 2;
+      size_t done = 0;
+      for (int a = 0; a < K; ++a)
+        for (int b = a + 1; b < K; ++b) {
+          if (done++ % 50 == 0) progress("cross-class PCF, pair {} of {}", done, n_pairs);
+          Curve ce, co;
+          std::vector<double> per;
+          const double mse = patch_cross_pcf_mse(split, a, b, opt.pcf, &ce, &co, &per);
+          json c = {{"ci", a}, {"cj", b}, {"pcf_mse", num(mse)}};
+          if (crops) {
+            c["per_crop"] = {{"pcf_mse", values_json(per)}};
+            c["pcf_mse_quartiles"] = quartiles_json(per);
+          }
+          if (opt.include_curves) c["pcf"] = curves_json(ce, co);
+          cross.push_back(c);
+        }
+    }
   }
   r["classes"] = classes;
-  json cross = json::array();
-  if (K > 1 && K <= kMaxPairClasses) {
-    const QuadrantSplit split = split_quadrants(exemplar, output, std::max(K, output.num_classes()));
-    const size_t n_pairs = static_cast<size_t>(K) * (K - 1) / 2;
-    size_t done = 0;
-    for (int a = 0; a < K; ++a)
-      for (int b = a + 1; b < K; ++b) {
-        if (done++ % 50 == 0) progress("cross-class PCF, pair {} of {}", done, n_pairs);
-        Curve ce, co;
-        const double mse = quadrant_cross_pcf_mse(split, a, b, opt.pcf, &ce, &co);
-        json c = {{"ci", a}, {"cj", b}, {"pcf_mse", num(mse)}};
-        if (opt.include_curves) c["pcf"] = curves_json(ce, co);
-        cross.push_back(c);
-      }
-  } else if (K > kMaxPairClasses) {
+  if (K > kMaxPairClasses) {
     r["cross_skipped"] = "the exemplar has " + std::to_string(K) + " classes: the " +
                          std::to_string(static_cast<size_t>(K) * (K - 1) / 2) +
                          " cross-class PCFs and overlap class pairs are computed up to " +
@@ -202,6 +224,11 @@ json evaluate(const PointSet& exemplar, const PointSet& output, const EvalOption
     Spectrum se = power_spectrum(exemplar, opt.spectrum_frequency);
     Spectrum so = power_spectrum(output, opt.spectrum_frequency);
     r["spectrum"] = {{"frequency", se.frequency}, {"exemplar", se.radial_power}, {"output", so.radial_power}};
+    // Repetition (tiles, seams) on a grid in coordinate units of the same size (periodogram.hpp).
+    PeriodogramOptions po;
+    po.frequencies = opt.spectrum_frequency;
+    r["spectrum"]["peak_ratio"] = {{"exemplar", num(spectrum_peak(periodogram(exemplar, po)).ratio)},
+                                   {"output", num(spectrum_peak(periodogram(output, po)).ratio)}};
   }
   r["options"] = {{"bins", opt.pcf.bins},
                   {"r_max_factor", opt.pcf.r_max_factor},
@@ -212,7 +239,8 @@ json evaluate(const PointSet& exemplar, const PointSet& output, const EvalOption
                   {"wasserstein_exact_pairs", opt.wasserstein_max_pairs}};
   r["wasserstein_note"] =
       "exact assignment when exemplar points x patch points <= " + std::to_string(opt.wasserstein_max_pairs) +
-      " (per quadrant); beyond, wasserstein is null and wasserstein_estimate is the exact assignment between "
+      (crops ? " (per crop)" : " (per quadrant)") +
+      "; beyond, wasserstein is null and wasserstein_estimate is the exact assignment between "
       "random subsamples of the sizes in wasserstein_sample (fixed seed): comparable only with estimates of the "
       "same sample sizes, not with exact values";
   progress("done");
@@ -241,8 +269,16 @@ std::string format_evaluation(const json& r) {
                   f(r["output"][key]).c_str());
     os << line;
   }
+  // What uniform points on each domain put in the border band: the value to compare with.
+  if (r["output"].contains("border_fraction_uniform")) {
+    std::snprintf(line, sizeof line, "%-16s%12s %12s\n", "  if uniform", f(r["exemplar"]["border_fraction_uniform"]).c_str(),
+                  f(r["output"]["border_fraction_uniform"]).c_str());
+    os << line;
+  }
   os << "upscale (per axis) " << f(r["upscale"], "%.3f") << "\n\n";
-  os << "quadrant metrics   pcf_mse  wasserstein  chamfer  exemplar points\n";
+  const bool crops = r.contains("protocol") && r["protocol"].value("name", std::string()) == "crops";
+  if (r.contains("protocol")) os << protocol_line(r["protocol"]) << "\n";
+  os << (crops ? "crop means       " : "quadrant metrics ") << "  pcf_mse  wasserstein  chamfer  exemplar points\n";
   size_t fewest = r["all"].value("exemplar_points", size_t(0));
   size_t sample_a = 0, sample_b = 0;  // largest Wasserstein subsamples of the rows
   auto row = [&](const std::string& name, const json& m) {
@@ -265,9 +301,25 @@ std::string format_evaluation(const json& r) {
                   f(c["pcf_mse"], "%.5f").c_str());
     os << line;
   }
+  // Crops: how the pcf_mse spreads over the crops (a mean hides one bad region).
+  if (crops) {
+    os << "pcf_mse over the " << r["protocol"].value("patches", size_t(0)) << " crops:\n";
+    std::snprintf(line, sizeof line, "%-16s %12s %10s %10s\n", "", "q1", "median", "q3");
+    os << line;
+    auto spread = [&](const std::string& name, const json& m) {
+      if (!m.contains("pcf_mse_quartiles")) return;
+      const json& q = m["pcf_mse_quartiles"];
+      std::snprintf(line, sizeof line, "%-16s %12s %10s %10s\n", name.c_str(), f(q[0], "%.5f").c_str(),
+                    f(q[1], "%.5f").c_str(), f(q[2], "%.5f").c_str());
+      os << line;
+    };
+    spread("all classes", r["all"]);
+    for (const auto& c : r["classes"]) spread("class " + std::to_string(c["label"].get<int>()), c);
+    for (const auto& c : r["cross"]) spread("cross " + std::to_string(c["ci"].get<int>()) + "-" + std::to_string(c["cj"].get<int>()), c);
+  }
   if (sample_a > 0)
     os << "~ Wasserstein estimated: exact assignment between random subsamples (up to " << sample_a << " exemplar x "
-       << sample_b << " patch points),\n  as a quadrant exceeds "
+       << sample_b << " patch points),\n  as a " << (crops ? "crop" : "quadrant") << " exceeds "
        << r["options"].value("wasserstein_exact_pairs", size_t(0))
        << " point pairs (exact: O(n^2 m)); comparable only with estimates of the same sample sizes\n";
   if (r.contains("cross_skipped")) os << "note: " << r["cross_skipped"].get<std::string>() << "\n";
@@ -275,7 +327,8 @@ std::string format_evaluation(const json& r) {
   // offsets, scores worse per class than a Poisson-disk pattern (docs/method.md, "What the
   // per-class criterion measures"); 64-point classes are judged reliably.
   if (fewest > 0 && fewest < kFewPoints)
-    os << "note: with fewer than " << kFewPoints << " exemplar points, a row's pcf_mse depends on where the quadrants\n"
+    os << "note: with fewer than " << kFewPoints << " exemplar points, a row's pcf_mse depends on where the "
+       << (crops ? "crops" : "quadrants") << "\n"
        << "      cut the pattern as much as on its structure (scripts/per_class_floor.sh measures it)\n";
   // Overlap is the method's known weakness on disks (paper Fig. 15): every class pair is shown,
   // with the output's share of overlapping pairs and of points that overlap another.

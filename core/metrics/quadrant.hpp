@@ -3,38 +3,27 @@
 // times the exemplar's points) is split into 4 equal quadrants of its domain
 // (PointSet::crop_to_unit: half-open windows, so every point lands in exactly one), each
 // rescaled to the unit square so it holds about as many points as the exemplar; each patch
-// is compared with the exemplar (mapped to the unit square too) and the 4 results averaged:
-//   pcf_mse     : curve_mse(pcf(exemplar), pcf(patch)) (pcf.hpp)
-//   wasserstein : wasserstein_distance(exemplar, patch)  (unit-square units)
-//   chamfer     : chamfer_distance(exemplar, patch)      (unit-square units)
-// PCF radii: both curves use the same r_max, from the exemplar's count in the unit square
-// (unless opt.r_max > 0), and the rectangle estimator unless opt.periodic.
-// An empty patch makes its Wasserstein/Chamfer undefined: it is skipped for those two
-// (PCF of an empty patch = 0) and the average taken over the others; all 4 empty => NaN.
-// Wasserstein beyond the exact limit (wasserstein.hpp: |exemplar| x |patch| above
-// `wasserstein_max_pairs` in any patch): `wasserstein` is NaN, `wasserstein_exact` false and
-// `wasserstein_estimate` the mean of the patches' subsample estimates, with the largest sample
-// sizes used. Otherwise wasserstein_estimate == wasserstein.
-// Cost: O(N log N) for Chamfer and the PCF's radius searches (pcf.hpp), the exact assignment
-// O(n^2 m) up to the limit.
-#include <array>
+// is compared with the exemplar (mapped to the unit square too) and the 4 results averaged
+// (patches.hpp: pcf_mse, wasserstein, chamfer, the empty-patch and Wasserstein-estimate
+// rules). It fits outputs that are squares holding about 4 times the exemplar's points;
+// other outputs (rectangles in exemplar units, 10,000 points) use exemplar-sized crops
+// (crops.hpp), chosen by eval_protocol.hpp.
 #include <vector>
 
+#include "core/metrics/patches.hpp"
 #include "core/metrics/pcf.hpp"
 #include "core/metrics/wasserstein.hpp"
 #include "core/point_set.hpp"
 
 namespace ppsynth {
 
-struct PatchMetrics {
-  double pcf_mse = 0, wasserstein = 0, chamfer = 0;
-  bool wasserstein_exact = true;
-  double wasserstein_estimate = 0;
-  size_t wasserstein_sample_a = 0, wasserstein_sample_b = 0;  // exemplar side, patch side
-};
+// The 4 quadrants of `d` (row-major: lower-left, lower-right, upper-left, upper-right).
+std::vector<Domain> quadrant_windows(const Domain& d);
 
-// `exemplar_pcf` / `output_pcf` (optional) receive the exemplar's curve and the mean of the
-// four patches' curves.
+// The 4 quadrant patches of `ps` (quadrant_windows order), each mapped onto the unit square.
+std::vector<PointSet> quadrant_patches(const PointSet& ps);
+
+// patch_metrics of the exemplar against the output's 4 quadrant patches.
 PatchMetrics quadrant_metrics(const PointSet& exemplar, const PointSet& output,
                               const PcfOptions& opt = {}, Curve* exemplar_pcf = nullptr,
                               Curve* output_pcf = nullptr,
@@ -46,19 +35,11 @@ double quadrant_cross_pcf_mse(const PointSet& exemplar, const PointSet& output, 
                               const PcfOptions& opt = {}, Curve* exemplar_pcf = nullptr,
                               Curve* output_pcf = nullptr);
 
-// The split of an exemplar and an output done once for many class pairs: the exemplar on the
-// unit square and the output's 4 patches, each divided by class (O(N) once instead of O(N)
-// per pair: 465 pairs of 30 classes).
-struct QuadrantSplit {
-  std::vector<PointSet> exemplar_class;               // [class]
-  std::array<std::vector<PointSet>, 4> patch_class;   // [patch][class]
-};
+// The split of an exemplar and an output's 4 quadrants by class, done once for many class
+// pairs (patches.hpp).
+using QuadrantSplit = PatchSplit;
 QuadrantSplit split_quadrants(const PointSet& exemplar, const PointSet& output, int classes);
 double quadrant_cross_pcf_mse(const QuadrantSplit& split, int ci, int cj, const PcfOptions& opt = {},
                               Curve* exemplar_pcf = nullptr, Curve* output_pcf = nullptr);
-
-// The 4 quadrant patches of `ps` (row-major: lower-left, lower-right, upper-left,
-// upper-right in domain coordinates), each mapped onto the unit square.
-std::vector<PointSet> quadrant_patches(const PointSet& ps);
 
 }  // namespace ppsynth

@@ -22,6 +22,9 @@ constexpr double kBottomAxis = 20;  // room for x tick labels
 constexpr double kTitleH = 28;
 constexpr double kTickFont = 10.5;
 constexpr double kColorbarH = 34;
+// readable_plot_px: the mean spacing of the points on screen it aims for, and its largest size.
+constexpr double kReadableSpacingPx = 4;
+constexpr int kMaxReadablePlotPx = 2400;
 
 struct Range {
   double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
@@ -283,6 +286,19 @@ void draw_colorbar(cairo_t* cr, const std::string& name, const Range& r, double 
 
 }  // namespace
 
+int readable_plot_px(const std::vector<const PointSet*>& sets, int base_px) {
+  double need = base_px;
+  for (const PointSet* ps : sets) {
+    if (!ps || ps->empty()) continue;
+    double fw, fh;
+    frame_size(ps->domain(), 1.0, fw, fh);  // the long side 1, the short side the aspect
+    // Long side L px: mean spacing sqrt(L^2 fw fh / N) >= kReadableSpacingPx.
+    const double frame = kReadableSpacingPx * std::sqrt(static_cast<double>(ps->size()) / (fw * fh));
+    need = std::max(need, frame + kLeftAxis + kMargin);
+  }
+  return static_cast<int>(std::ceil(std::min(need, static_cast<double>(std::max(base_px, kMaxReadablePlotPx)))));
+}
+
 void plot_points(const std::string& path, const PointSet& ps, const PointStyle& style, int size_px) {
   plot_panels(path, {{style.title, ps}}, style, size_px, 1);
 }
@@ -307,12 +323,27 @@ void plot_panels(const std::string& path, const std::vector<std::pair<std::strin
   const Range crange = color_range_of(sets, style);
 
   const double side = panel_px - kLeftAxis - kMargin;  // frame fits in side x side
-  const double cell_w = panel_px, cell_h = kTitleH + side + kBottomAxis;
+  // Each row is as tall as its tallest frame: a row of 4 x 1 strips is a quarter of a row of
+  // squares (a fixed square cell left the strips under a tall blank band, their titles far
+  // above them). Frames are top-aligned under their titles.
+  std::vector<double> row_frame_h(rows, 0.0);
+  for (int i = 0; i < n; ++i) {
+    if (blank(panels[i])) continue;
+    double fw, fh;
+    frame_size(panels[i].second.domain(), side, fw, fh);
+    row_frame_h[i / cols] = std::max(row_frame_h[i / cols], fh);
+  }
+  std::vector<double> row_y(rows + 1, 0.0);
+  for (int r = 0; r < rows; ++r) {
+    if (row_frame_h[r] <= 0) row_frame_h[r] = side;  // a row of blank cells keeps its place
+    row_y[r + 1] = row_y[r] + kTitleH + row_frame_h[r] + kBottomAxis;
+  }
+  const double cell_w = panel_px;
   const double width = cols * cell_w + kMargin;
   const double legend_w = width - 2 * kMargin - kLeftAxis;
   const double leg_h = legend_height(legend, legend_w);
   const double cbar_h = style.color_attribute.empty() ? 0 : kColorbarH;
-  const double height = rows * cell_h + leg_h + cbar_h + kMargin;
+  const double height = row_y[rows] + leg_h + cbar_h + kMargin;
 
   if (!render::image_size_ok(std::ceil(width), std::ceil(height)))
     throw InputError("plot " + path + ": " + std::to_string(n) + " panels of " + std::to_string(panel_px) + " px in " +
@@ -325,11 +356,11 @@ void plot_panels(const std::string& path, const std::vector<std::pair<std::strin
     for (int i = 0; i < n; ++i) {
       if (blank(panels[i])) continue;
       const auto& [title, ps] = panels[i];
-      const double cx = (i % cols) * cell_w + kMargin, cy = (i / cols) * cell_h;
+      const double cx = (i % cols) * cell_w + kMargin, cy = row_y[i / cols];
       double fw, fh;
       frame_size(ps.domain(), side, fw, fh);
       const double fx = cx + kLeftAxis + (side - fw) / 2;
-      const double fy = cy + kTitleH + (side - fh);
+      const double fy = cy + kTitleH;
       if (!title.empty()) {
         set_color(cr, kText);
         draw_text(cr, title, fx, cy + kTitleH - 8, 15, HAlign::Left, VAlign::Baseline, true);
@@ -339,7 +370,7 @@ void plot_panels(const std::string& path, const std::vector<std::pair<std::strin
                 HAlign::Right, VAlign::Baseline);
       draw_points_in_frame(cr, ps, style, fx, fy, fw, fh, crange);
     }
-    const double ly = rows * cell_h + 4;
+    const double ly = row_y[rows] + 4;
     draw_legend(cr, legend, kMargin + kLeftAxis, ly, legend_w);
     if (cbar_h > 0) draw_colorbar(cr, style.color_attribute, crange, kMargin + kLeftAxis, ly + leg_h);
   });

@@ -3,9 +3,13 @@
 // The domain is drawn as a square/rectangle with a thin frame (aspect kept); classes get
 // the Tableau-10 palette (render/palette.hpp) with a legend when K > 1.
 //
-// Marker size: auto radius ~ 0.28 * (domain-side / sqrt(N)) on screen, clamped to
-// [0.6, 6] px, so an exemplar with N points in the unit square and an output with u^2*N
-// points look alike (same visual density) when drawn at the same size.
+// Marker size: auto radius 0.2 x the mean spacing on screen (sqrt(frame area / N)), clamped
+// to [0.6, 8] px, so an exemplar with N points in the unit square and an output with u^2*N
+// points look alike (same visual density) when drawn at the same size. Below ~4 px of
+// spacing (10,000+ points in 600 px) markers merge: readable_plot_px gives the image size
+// that keeps them apart, and `ppsynth plot` uses it unless --size is given.
+// Rectangles (a 4 x 1 strip in exemplar units) keep their aspect: the long side spans the
+// panel and each row of panels is as tall as its tallest frame.
 // Points with a "radius" attribute (disk patterns) are drawn as disks of their true radius
 // in domain units when `draw_disks` is set (outline + light fill).
 // Output format by extension: .png, .svg, .pdf (render/canvas.hpp); atomic writes.
@@ -25,6 +29,10 @@ struct PointStyle {
   bool show_frame = true;       // thin frame around the domain
   std::string title;            // drawn above the plot (plot_points only)
 };
+
+// The image (or panel) size for `sets` that keeps their points at least 4 px apart on screen
+// on average: base_px, or more for many points, up to 2400 px.
+int readable_plot_px(const std::vector<const PointSet*>& sets, int base_px);
 
 // One point set in a size_px x size_px image (plus a legend strip when K > 1).
 // Unknown size/color attribute => InputError naming the attribute and the known ones.

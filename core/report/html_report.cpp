@@ -1,6 +1,8 @@
 #include "core/report/html_report.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstdio>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
@@ -54,9 +56,31 @@ std::string mime_for(const std::string& path) {
   throw file_error(path, 0, "cannot embed image with extension '" + ext + "' (use .png, .svg, .jpg or .gif)");
 }
 
-std::string figure(const std::string& path, const std::string& caption, int width_px) {
-  const std::string uri = "data:" + mime_for(path) + ";base64," + base64_encode(read_binary(path));
-  std::string f = "<figure><img src=\"" + uri + "\" alt=\"" + html_escape(caption) + "\"";
+// Width / height of a PNG from its IHDR chunk (bytes 16..23, big-endian); 0 when unknown.
+double png_aspect(const std::string& bytes) {
+  if (bytes.size() < 24 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) return 0;
+  auto be32 = [&](size_t at) {
+    uint32_t v = 0;
+    for (size_t i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(bytes[at + i]);
+    return v;
+  };
+  const uint32_t w = be32(16), h = be32(20);
+  return w > 0 && h > 0 ? static_cast<double>(w) / h : 0;
+}
+
+// In a row, a figure's share of the width follows its aspect (flex grow and basis
+// proportional to width / height), so the figures of a row end up equally tall: a 4 x 1
+// strip beside a square gets 4 times its width instead of being shrunk to a sliver.
+std::string figure(const std::string& path, const std::string& caption, int width_px, bool in_row = false) {
+  const std::string bytes = read_binary(path);
+  const std::string uri = "data:" + mime_for(path) + ";base64," + base64_encode(bytes);
+  std::string f = "<figure";
+  if (const double aspect = in_row ? png_aspect(bytes) : 0; aspect > 0) {
+    char style[96];
+    std::snprintf(style, sizeof style, " style=\"flex: %.3f 1 %.0fpx\"", aspect, 250 * aspect);
+    f += style;
+  }
+  f += "><img src=\"" + uri + "\" alt=\"" + html_escape(caption) + "\"";
   if (width_px > 0) f += " width=\"" + std::to_string(width_px) + "\"";
   f += ">";
   if (!caption.empty()) f += "<figcaption>" + html_escape(caption) + "</figcaption>";
@@ -138,7 +162,7 @@ void HtmlReport::add_image(const std::string& png_path, const std::string& capti
 
 void HtmlReport::add_image_row(const std::vector<std::pair<std::string, std::string>>& images_captions) {
   std::string row = "<div class=\"row\">\n";
-  for (const auto& [path, caption] : images_captions) row += figure(path, caption, 0);
+  for (const auto& [path, caption] : images_captions) row += figure(path, caption, 0, true);
   body_ += row + "</div>\n";
 }
 

@@ -369,3 +369,28 @@ TEST_CASE("an image beyond the size limit is an InputError before any allocation
   CHECK(fs::is_empty(dir));
   fs::remove_all(dir);
 }
+
+TEST_CASE("rectangular domains: frames keep their aspect, rows shrink to them; many points get a larger plot",
+          "[render]") {
+  const auto dir = ppsynth::test::scratch_dir("render_rect");
+  PointSet strip(Domain{0, 0, 4, 1});
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int i = 0; i < 256; ++i) strip.add({4 * u(rng), u(rng)});
+  const fs::path png = dir / "strip.png";
+  plot_points(png.string(), strip, PointStyle{}, 600);
+  cairo_surface_t* s = cairo_image_surface_create_from_png(png.string().c_str());
+  const int w = cairo_image_surface_get_width(s), h = cairo_image_surface_get_height(s);
+  cairo_surface_destroy(s);
+  CHECK(w == 614);
+  CHECK(h < w / 2);  // a 4 x 1 frame, not a square cell with a blank band
+  // Few points: the default size; 100,000 on a 10 x 10 domain: larger, within the cap.
+  PointSet few = random_two_class(100, 1);
+  CHECK(readable_plot_px({&few}, 600) == 600);
+  PointSet many(Domain{0, 0, 10, 10});
+  for (int i = 0; i < 100000; ++i) many.add({10 * u(rng), 10 * u(rng)});
+  const int big = readable_plot_px({&many}, 600);
+  CHECK(big > 1200);
+  CHECK(big <= 2400);
+  fs::remove_all(dir);
+}

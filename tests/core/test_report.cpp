@@ -80,3 +80,29 @@ TEST_CASE("tables as CSV and Markdown are exact", "[report]") {
   CHECK(ss.str() == table_csv(header, rows));
   fs::remove(p);
 }
+
+TEST_CASE("a row of figures gives each a width share by its aspect (a 4 x 1 strip beside a square)", "[report]") {
+  const fs::path dir = fs::temp_directory_path() / "ppsynth_test_report_rect";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  PointSet square, strip(Domain{0, 0, 4, 1});
+  square.add({0.3, 0.4});
+  strip.add({2.5, 0.4});
+  plot_points((dir / "square.png").string(), square, PointStyle{}, 300);
+  plot_points((dir / "strip.png").string(), strip, PointStyle{}, 300);
+  HtmlReport r("rect");
+  r.add_image_row({{(dir / "square.png").string(), "square"}, {(dir / "strip.png").string(), "strip"}});
+  const std::string html = r.html();
+  // flex: <grow = width / height> 1 <basis> for each figure, in order.
+  const size_t a = html.find("<figure style=\"flex: "), b = html.find("<figure style=\"flex: ", a + 1);
+  REQUIRE(a != std::string::npos);
+  REQUIRE(b != std::string::npos);
+  const double grow_square = std::stod(html.substr(a + 21)), grow_strip = std::stod(html.substr(b + 21));
+  CHECK(grow_square == Approx(1.0).epsilon(0.2));
+  CHECK(grow_strip > 2.5 * grow_square);
+  // A single image keeps its plain figure.
+  HtmlReport one("one");
+  one.add_image((dir / "strip.png").string(), "strip");
+  CHECK(one.html().find("<figure style=") == std::string::npos);
+  fs::remove_all(dir);
+}

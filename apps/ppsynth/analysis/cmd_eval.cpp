@@ -1,7 +1,10 @@
-// `ppsynth eval --exemplar E --output O [--json] [--out FILE]`: the evaluation suite
-// (core/metrics/evaluation.hpp) of an output against its exemplar: quadrant PCF MSE,
-// Wasserstein and Chamfer (all classes, per class, cross-class PCF), relative radius, disk
-// overlaps. Human table by default; --json prints the full result (with PCF curves).
+// `ppsynth eval --exemplar E --output O [--json] [--out FILE] [--protocol auto|quadrants|crops]
+// [--crops N] [--crop-seed S]`: the evaluation suite (core/metrics/evaluation.hpp) of an
+// output against its exemplar: PCF MSE, Wasserstein and Chamfer over patches of the output
+// (the paper's 4 quadrants, or N random exemplar-sized crops for rectangles and other sizes:
+// core/metrics/eval_protocol.hpp), all classes, per class, cross-class PCF, relative radius,
+// disk overlaps, border share. Human table by default; --json prints the full result (with
+// PCF curves).
 // Sub-quadratic in the point count (k-d tree searches) except the exact Wasserstein, which
 // is exact up to --wasserstein-exact-limit pairs per quadrant and a labelled subsample
 // estimate beyond (core/metrics/wasserstein.hpp); inputs of 50,000+ points log progress.
@@ -16,7 +19,9 @@
 namespace {
 
 struct Args {
-  std::string exemplar, output, out_file, format = "auto";
+  std::string exemplar, output, out_file, format = "auto", protocol = "auto";
+  int crops = ppsynth::kDefaultCrops;
+  uint64_t crop_seed = ppsynth::kDefaultCropSeed;
   bool json = false, no_curves = false, spectrum = false, periodic = false;
   int bins = 100;
   double r_max = 0;
@@ -39,8 +44,17 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_option("--wasserstein-exact-limit", a->wasserstein_pairs,
                  "exact Wasserstein up to this many exemplar x patch point pairs per quadrant (default 4000000, "
                  "~0.5 s each); beyond, a labelled subsample estimate");
+  app.add_option("--protocol", a->protocol,
+                 "patches compared with the exemplar: auto (quadrants for a square output of 3-5 x the exemplar's "
+                 "points, else crops), quadrants (the paper's), crops (random exemplar-sized crops)")
+      ->capture_default_str();
+  app.add_option("--crops", a->crops, "crops protocol: number of crops, 1..10000")->capture_default_str();
+  app.add_option("--crop-seed", a->crop_seed, "crops protocol: seed of the crop positions")->capture_default_str();
   return [a]() {
     ppsynth::EvalOptions opt;
+    opt.protocol = ppsynth::parse_patch_protocol(a->protocol);
+    opt.crops = a->crops;
+    opt.crop_seed = a->crop_seed;
     opt.include_curves = !a->no_curves;
     opt.spectrum = a->spectrum;
     opt.pcf.periodic = a->periodic;
@@ -67,4 +81,4 @@ ppsynth::app::RunFn setup(CLI::App& app) {
 
 }  // namespace
 
-PPSYNTH_COMMAND("eval", "metrics of an output against its exemplar (quadrant PCF, Wasserstein, Chamfer, ...)", setup)
+PPSYNTH_COMMAND("eval", "metrics of an output against its exemplar (PCF, Wasserstein, Chamfer over quadrants or crops, ...)", setup)

@@ -20,7 +20,7 @@ struct PlotArgs {
   std::string input, output, format, size_attr, color_attr, title;
   std::vector<std::string> compare;
   bool no_disks = false;
-  int size_px = 0;  // 0 = 600 for one plot, 400 per panel
+  int size_px = 0;  // 0 = 600 for one plot, 400 per panel, more for many points (readable_plot_px)
   int columns = 0;
 };
 
@@ -34,14 +34,17 @@ int run(const PlotArgs& a) {
   st.title = a.title;
   if (a.size_px != 0 && (a.size_px < 80 || a.size_px > 8000)) throw InputError("--size must be in 80..8000 px");
   if (a.compare.empty()) {
-    plot_points(a.output, read_points(a.input, ro), st, a.size_px ? a.size_px : 600);
+    const PointSet ps = read_points(a.input, ro);
+    plot_points(a.output, ps, st, a.size_px ? a.size_px : readable_plot_px({&ps}, 600));
   } else {
     std::vector<std::pair<std::string, PointSet>> panels;
     panels.emplace_back(a.title.empty() ? std::filesystem::path(a.input).stem().string() : a.title,
                         read_points(a.input, ro));
     for (const auto& f : a.compare) panels.emplace_back(std::filesystem::path(f).stem().string(), read_points(f, ro));
     st.title.clear();
-    plot_panels(a.output, panels, st, a.size_px ? a.size_px : 400, a.columns);
+    std::vector<const PointSet*> sets;
+    for (const auto& p : panels) sets.push_back(&p.second);
+    plot_panels(a.output, panels, st, a.size_px ? a.size_px : readable_plot_px(sets, 400), a.columns);
   }
   spdlog::info("wrote {}", a.output);
   return 0;
@@ -57,7 +60,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_flag("--no-disks", a->no_disks, "draw points with a radius attribute as plain markers");
   app.add_option("--title", a->title, "plot title (with --compare: title of the first panel)");
   app.add_option("--compare", a->compare, "more point files, drawn side by side")->expected(1, -1);
-  app.add_option("--size", a->size_px, "image (or panel) size in px (default 600, panels 400)");
+  app.add_option("--size", a->size_px, "image (or panel) size in px (default 600, panels 400; larger for 10,000+ points so they stay apart)");
   app.add_option("--columns", a->columns, "panels per row with --compare (0 = one row)");
   return [a]() { return run(*a); };
 }

@@ -1,0 +1,115 @@
+#include "core/metrics/eval_protocol.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "core/metrics/crops.hpp"
+#include "core/metrics/quadrant.hpp"
+
+namespace ppsynth {
+
+namespace {
+
+// The paper's protocol: a square output with u^2 = 4 times the exemplar's points; 3..5
+// leaves room for outputs whose counts are the density's expectation.
+constexpr double kQuadrantMinRatio = 3, kQuadrantMaxRatio = 5;
+constexpr double kSquareTolerance = 1e-9;
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+// Whether auto picks quadrants, and why (or why not) in words.
+bool quadrants_fit(const PointSet& exemplar, const PointSet& output, std::string& why) {
+  const Domain& d = output.domain();
+  const double ratio = static_cast<double>(output.size()) / static_cast<double>(exemplar.size());
+  const bool square = std::abs(d.width() - d.height()) <= kSquareTolerance * std::max(d.width(), d.height());
+  if (!square) {
+    why = "auto: the output domain is " + fmt(d.width()) + " x " + fmt(d.height()) + ", not square";
+    return false;
+  }
+  if (ratio < kQuadrantMinRatio || ratio > kQuadrantMaxRatio) {
+    why = "auto: the output holds " + fmt(ratio) + " x the exemplar's points (quadrants need " +
+          fmt(kQuadrantMinRatio) + " to " + fmt(kQuadrantMaxRatio) + " x)";
+    return false;
+  }
+  why = "auto: square output holding " + fmt(ratio) + " x the exemplar's points";
+  return true;
+}
+
+}  // namespace
+
+PatchProtocol parse_patch_protocol(const std::string& name) {
+  if (name == "auto") return PatchProtocol::Auto;
+  if (name == "quadrants") return PatchProtocol::Quadrants;
+  if (name == "crops") return PatchProtocol::Crops;
+  throw InputError("protocol (--protocol) must be auto, quadrants or crops (got '" + name + "')");
+}
+
+const char* patch_protocol_name(PatchProtocol p) {
+  switch (p) {
+    case PatchProtocol::Auto: return "auto";
+    case PatchProtocol::Quadrants: return "quadrants";
+    case PatchProtocol::Crops: return "crops";
+  }
+  return "?";
+}
+
+ProtocolPlan plan_protocol(const PointSet& exemplar, const PointSet& output, PatchProtocol requested, int crops,
+                           uint64_t seed) {
+  ProtocolPlan p;
+  p.requested = requested;
+  p.zoom = density_zoom(exemplar, output);
+  if (requested == PatchProtocol::Auto) {
+    p.used = quadrants_fit(exemplar, output, p.reason) ? PatchProtocol::Quadrants : PatchProtocol::Crops;
+  } else {
+    p.used = requested;
+    p.reason = "requested";
+  }
+  if (p.used == PatchProtocol::Quadrants) {
+    p.windows = quadrant_windows(output.domain());
+    p.patch_width = 0.5 * output.domain().width();
+    p.patch_height = 0.5 * output.domain().height();
+    return p;
+  }
+  CropPlan c = plan_crops(exemplar, output, crops, seed);
+  p.windows = std::move(c.windows);
+  p.patch_width = c.width;
+  p.patch_height = c.height;
+  p.seed = seed;
+  return p;
+}
+
+nlohmann::json protocol_json(const ProtocolPlan& plan) {
+  nlohmann::json j = {{"name", patch_protocol_name(plan.used)},
+                      {"requested", patch_protocol_name(plan.requested)},
+                      {"reason", plan.reason},
+                      {"patches", plan.windows.size()},
+                      {"crop_size", {plan.patch_width, plan.patch_height}},
+                      {"zoom", plan.zoom}};
+  if (plan.used == PatchProtocol::Crops) {
+    j["seed"] = plan.seed;
+    nlohmann::json w = nlohmann::json::array();
+    for (const Domain& d : plan.windows) w.push_back({d.x0, d.y0, d.x1, d.y1});
+    j["windows"] = w;
+  }
+  return j;
+}
+
+std::string protocol_line(const nlohmann::json& p) {
+  std::ostringstream s;
+  const std::string name = p.value("name", std::string("quadrants"));
+  const auto& size = p["crop_size"];
+  s << "protocol: " << name << ", " << p.value("patches", size_t(0)) << (name == "crops" ? " crops" : " quadrants")
+    << " of " << fmt(size[0].get<double>()) << " x " << fmt(size[1].get<double>()) << " output units (zoom "
+    << fmt(p.value("zoom", 1.0)) << " output units per exemplar unit";
+  if (name == "crops") s << ", seed " << p.value("seed", uint64_t(0));
+  s << "); " << p.value("reason", std::string());
+  return s.str();
+}
+
+}  // namespace ppsynth
