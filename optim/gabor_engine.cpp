@@ -293,7 +293,7 @@ ProgressEvent GaborEngine::event(const Stage& stage) const {
   ev.window = stage.window.index;
   ev.windows = stage.window.count;
   const size_t next = static_cast<size_t>(state_.stage) + 1;
-  ev.window_ends = next >= plan_.size() || plan_[next].window.index != stage.window.index;
+  ev.window_ends = stage.window.count <= 1 || next >= plan_.size() || plan_[next].window.index != stage.window.index;
   return ev;
 }
 

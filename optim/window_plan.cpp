@@ -37,7 +37,9 @@ WindowLayout window_layout(const Domain& canvas, double max_side, double margin,
   w.side = std::min({max_side, canvas.width(), canvas.height()});
   w.margin = margin;
   w.reach = reach;
-  if (!(w.side > 2 * margin * 1.25))
+  // One window over the whole canvas has no neighbour to protect: any margin will do.
+  const bool one_window = canvas.width() <= w.side * (1 + 1e-12) && canvas.height() <= w.side * (1 + 1e-12);
+  if (!one_window && !(w.side > 2 * margin * 1.25))
     throw config_error(key, "a window of " + std::to_string(w.side) + " exemplar units cannot hold two margins of " +
                                 std::to_string(margin) + " and an interior (the maps' reach and the network's receptive " +
                                 "field); use larger windows or a larger output");

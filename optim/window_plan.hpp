@@ -37,7 +37,8 @@ struct WindowLayout {
 
 // Windows of at most `max_side` on `canvas`. side = min(max_side, canvas width, height);
 // one window per axis when it covers the axis, else the fewest whose overlaps are >= 2 margins.
-// Throws InputError naming `key` when the side cannot hold two margins.
+// Throws InputError naming `key` when the side cannot hold two margins (and more than one
+// window is needed).
 WindowLayout window_layout(const Domain& canvas, double max_side, double margin, double reach, const std::string& key);
 
 // The stages of every window: the paper's class / sigma stages (class_sigma_plan's labels,

@@ -9,6 +9,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "core/output_shape.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -82,12 +84,16 @@ TEST_CASE("every run config runs with --quick", "[apps][configs]") {
         req.dir = run_dir.string();
         req.quick = true;
         auto o = ppsynth::run_synthesis(r, req);
-        const int u = r["upscale"];
-        const double target = double(o.exemplar.size() * u * u);
+        const ppsynth::OutputShape shape = ppsynth::resolve_output_shape(r, o.exemplar);
+        const double target = shape.expected_points(o.exemplar);
         if (r["method"]["type"] == "roveri2015")  // sampling control (Eq. 3.7) adapts the count
           CHECK(std::abs(double(o.output.size()) - target) <= 0.25 * target);
+        else if (shape.rectangle && shape.clean_border)  // the crop of a padded canvas: the density's expectation
+          CHECK(std::abs(double(o.output.size()) - target) <= 3 * std::sqrt(target) + 1);
         else
-          CHECK(o.output.size() == o.exemplar.size() * u * u);
+          CHECK(double(o.output.size()) == target);
+        CHECK(o.output.domain().x1 == shape.domain().x1);
+        CHECK(o.output.domain().y1 == shape.domain().y1);
         // The Gabor method keeps every class; the baselines document that they pool them.
         if (r["method"]["type"] == "gabor") CHECK(o.output.num_classes() == o.exemplar.num_classes());
         CHECK(count_points(run_dir / "output.txt") == o.output.size());
