@@ -28,19 +28,24 @@ def _arrays(node):
 
 def evaluate(exemplar, output, bins: int = 100, r_max: float = 0.0, periodic_pcf: bool = False,
              curves: bool = True, spectrum: bool = False,
-             wasserstein_exact_limit: int = _native.WASSERSTEIN_EXACT_PAIRS) -> dict:
+             wasserstein_exact_limit: int = _native.WASSERSTEIN_EXACT_PAIRS,
+             protocol: str = "auto", crops: int = 20, crop_seed: int = 1) -> dict:
     """Metrics of ``output`` against ``exemplar`` (PointSets, arrays or file names), the
     numbers of ``ppsynth eval --json`` on the same points.
 
-    The paper's four-quadrant protocol: the output's quadrants are compared with the
-    exemplar. Keys:
+    ``protocol``: ``"quadrants"`` (the paper's: the output's four quadrants are compared with
+    the exemplar), ``"crops"`` (``crops`` random exemplar-sized crops placed from
+    ``crop_seed``, for outputs of other sizes and shapes; rows then carry ``per_crop`` values
+    and ``pcf_mse_quartiles``), or ``"auto"`` (quadrants for a square output holding 3-5
+    times the exemplar's points, else crops; ``"protocol"`` in the result says which). Keys:
 
     - ``"all"``: all classes together: ``pcf_mse``, ``wasserstein``, ``chamfer`` and ``pcf``
       with NumPy arrays ``r`` (in r_max units), ``exemplar`` and ``output`` (mean of the
       quadrants' curves);
     - ``"classes"``: the same per class; ``"cross"``: the cross-PCF of every class pair;
     - ``"exemplar"``, ``"output"``: counts, closest pair ``d_min``, mean nearest-neighbour
-      distance, ``border_fraction`` (share of points within 1 % of the border);
+      distance, ``border_fraction`` (share of points within 1 % of the shorter side of the
+      border) and ``border_fraction_uniform`` (what uniform points would give there);
     - ``"overlap"`` (disk patterns), ``"spectrum"`` (``spectrum=True``), ``"options"``.
 
     ``bins`` (2..10000) and ``r_max`` (0 derives it from the exemplar's count) set the PCF;
@@ -49,5 +54,6 @@ def evaluate(exemplar, output, bins: int = 100, r_max: float = 0.0, periodic_pcf
     ex = _as_points(exemplar, "exemplar")
     out = _as_points(output, "output")
     text = _native.evaluate_json(ex._to_native(), out._to_native(), int(bins), float(r_max), bool(periodic_pcf),
-                                 bool(curves), bool(spectrum), int(wasserstein_exact_limit))
+                                 bool(curves), bool(spectrum), int(wasserstein_exact_limit), str(protocol), int(crops),
+                                 int(crop_seed))
     return _arrays(json.loads(text))

@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "core/metrics/eval_protocol.hpp"
 #include "core/metrics/evaluation.hpp"
 
 namespace ppsynth::python {
@@ -11,7 +12,7 @@ void bind_evaluation(py::module_& m) {
   m.def(
       "evaluate_json",
       [](const py::dict& exemplar, const py::dict& output, int bins, double r_max, bool periodic_pcf, bool curves,
-         bool spectrum, size_t wasserstein_exact_limit) {
+         bool spectrum, size_t wasserstein_exact_limit, const std::string& protocol, int crops, uint64_t crop_seed) {
         EvalOptions opt;
         opt.pcf.bins = bins;
         opt.pcf.r_max = r_max;
@@ -19,6 +20,9 @@ void bind_evaluation(py::module_& m) {
         opt.include_curves = curves;
         opt.spectrum = spectrum;
         opt.wasserstein_max_pairs = wasserstein_exact_limit;
+        opt.protocol = parse_patch_protocol(protocol);
+        opt.crops = crops;
+        opt.crop_seed = crop_seed;
         check_eval_options(opt);
         const PointSet ex = from_python(exemplar, "exemplar");
         const PointSet out = from_python(output, "output");
@@ -28,7 +32,8 @@ void bind_evaluation(py::module_& m) {
         return evaluate(ex, out, opt).dump();
       },
       py::arg("exemplar"), py::arg("output"), py::arg("bins"), py::arg("r_max"), py::arg("periodic_pcf"),
-      py::arg("curves"), py::arg("spectrum"), py::arg("wasserstein_exact_limit"));
+      py::arg("curves"), py::arg("spectrum"), py::arg("wasserstein_exact_limit"), py::arg("protocol"), py::arg("crops"),
+      py::arg("crop_seed"));
   m.attr("WASSERSTEIN_EXACT_PAIRS") = kWassersteinExactPairs;
 }
 

@@ -41,3 +41,20 @@ def test_evaluate_refuses_impossible_options():
         ppsynth.evaluate(ex, ex, bins=1)
     with pytest.raises(ValueError, match="r_max"):
         ppsynth.evaluate(ex, ex, r_max=float("nan"))
+
+
+def test_evaluate_crops_equals_eval_json_on_a_rectangle(tmp_path):
+    # A 4 x 1 strip in exemplar units (as `synthesize --size 4 1` makes): exemplar-sized crops.
+    ex = ppsynth.read(GABOR + "lines.txt")
+    rng = np.random.default_rng(6)
+    out = ppsynth.PointSet(rng.random((80, 2)) * [4.0, 1.0], domain=(0, 0, 4, 1))
+    ppsynth.write(out, tmp_path / "strip.txt")
+    r = ppsynth.evaluate(ex, out, bins=40, protocol="crops", crops=7, crop_seed=3)
+    assert r["protocol"]["name"] == "crops" and r["protocol"]["patches"] == 7
+    _, text, _ = command("eval", "--exemplar", GABOR + "lines.txt", "--output", tmp_path / "strip.txt", "--json",
+                         "--bins", 40, "--protocol", "crops", "--crops", 7, "--crop-seed", 3)
+    expected = json.loads(text)
+    del expected["exemplar"]["path"], expected["output"]["path"]
+    assert as_lists(r) == expected
+    with pytest.raises(ValueError, match="protocol"):
+        ppsynth.evaluate(ex, out, protocol="halves")
