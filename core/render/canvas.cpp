@@ -130,4 +130,17 @@ double text_width(cairo_t* cr, const std::string& text, double size_px, bool bol
   return te.x_advance;
 }
 
+void paint_image_nearest(cairo_t* cr, cairo_surface_t* image, double x, double y, double w, double h, double scale) {
+  cairo_save(cr);
+  cairo_rectangle(cr, x, y, w, h);
+  cairo_clip(cr);
+  cairo_translate(cr, x, y);
+  cairo_scale(cr, scale, scale);
+  cairo_set_source_surface(cr, image, 0, 0);
+  cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_NEAREST);
+  cairo_paint(cr);
+  cairo_restore(cr);
+  cairo_surface_destroy(image);
+}
+
 }  // namespace ppsynth::render

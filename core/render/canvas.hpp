@@ -41,5 +41,9 @@ void draw_text(cairo_t* cr, const std::string& text, double x, double y, double 
                double angle_rad = 0.0);
 // Width in px of `text` at `size_px`.
 double text_width(cairo_t* cr, const std::string& text, double size_px, bool bold = false);
+// Paints `image` scaled by `scale` with its corner at (x, y), clipped to w x h, one block of
+// pixels per image pixel (nearest neighbour: heat maps and rasters stay sharp). Takes
+// ownership of `image`.
+void paint_image_nearest(cairo_t* cr, cairo_surface_t* image, double x, double y, double w, double h, double scale);
 
 }  // namespace ppsynth::render

@@ -58,16 +58,7 @@ void draw_image(cairo_t* cr, const GrayImage& im, const MinMax& r, ColorMap cmap
   const double scale = side / std::max(im.width, im.height);
   const double w = im.width * scale, h = im.height * scale;
   const double ox = x + (side - w) / 2, oy = y + (side - h) / 2;
-  cairo_save(cr);
-  cairo_rectangle(cr, ox, oy, w, h);
-  cairo_clip(cr);
-  cairo_translate(cr, ox, oy);
-  cairo_scale(cr, scale, scale);
-  cairo_set_source_surface(cr, s, 0, 0);
-  cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_NEAREST);
-  cairo_paint(cr);
-  cairo_restore(cr);
-  cairo_surface_destroy(s);
+  paint_image_nearest(cr, s, ox, oy, w, h, scale);
   cairo_save(cr);
   set_color(cr, kAxis);
   cairo_set_line_width(cr, 0.8);

@@ -75,18 +75,8 @@ void plot_spectrum(const std::string& path, const Periodogram& p, const std::str
     set_color(cr, kText);
     draw_text(cr, title.empty() ? "power spectrum" : title, fx0, kTop - 12, 14, HAlign::Left, VAlign::Baseline, true);
     // Heat map: one square per frequency (nearest neighbour), centred on its frequency.
-    cairo_surface_t* img = heat_image(p, range);
     const double scale = side / p.side();
-    cairo_save(cr);
-    cairo_rectangle(cr, fx0, fy0, side, side);
-    cairo_clip(cr);
-    cairo_translate(cr, fx0, fy0);
-    cairo_scale(cr, scale, scale);
-    cairo_set_source_surface(cr, img, 0, 0);
-    cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_NEAREST);
-    cairo_paint(cr);
-    cairo_restore(cr);
-    cairo_surface_destroy(img);
+    paint_image_nearest(cr, heat_image(p, range), fx0, fy0, side, side, scale);
     // Axes: frequency f maps to the centre of its square.
     auto X = [&](double f) { return fx0 + (f / p.step + p.F + 0.5) * scale; };
     auto Y = [&](double f) { return fy0 + (p.F - f / p.step + 0.5) * scale; };

@@ -10,8 +10,10 @@
 #include "core/generators/lattices.hpp"
 #include "optim/method.hpp"
 #include "optim/synthesis_state.hpp"
+#include "tests/support/same_bits.hpp"
 
 using namespace ppsynth;
+using ppsynth::test::same_bits;
 
 namespace {
 
@@ -48,12 +50,6 @@ Run synthesize(const PointSet& ex, const std::string* resume = nullptr, const st
   return run;
 }
 
-bool same_bits(const PointSet& a, const PointSet& b) {
-  if (a.size() != b.size()) return false;
-  for (size_t i = 0; i < a.size(); ++i)
-    if (a[i].x != b[i].x || a[i].y != b[i].y || a.cls(i) != b.cls(i)) return false;
-  return true;
-}
 
 }  // namespace
 

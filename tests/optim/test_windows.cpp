@@ -14,9 +14,11 @@
 #include "optim/method.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/synthesis_state.hpp"
+#include "tests/support/same_bits.hpp"
 #include "optim/window_plan.hpp"
 
 using namespace ppsynth;
+using ppsynth::test::same_bits;
 
 namespace {
 
@@ -66,12 +68,6 @@ Run synthesize(const PointSet& ex, const OutputShape& shape, int pixels, int ite
   return run;
 }
 
-bool same_bits(const PointSet& a, const PointSet& b) {
-  if (a.size() != b.size()) return false;
-  for (size_t i = 0; i < a.size(); ++i)
-    if (a[i].x != b[i].x || a[i].y != b[i].y || a.cls(i) != b.cls(i)) return false;
-  return true;
-}
 
 }  // namespace
 
