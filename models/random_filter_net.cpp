@@ -63,7 +63,9 @@ RandomFilterNet::RandomFilterNet(RandomFilterNetOptions o) : opt_(o) {
   }
   freeze(*this);
   if (o.dtype != torch::kFloat32) this->to(o.dtype);
-  if (o.fast_cpu && o.dtype == torch::kFloat32)
+  // The fast path in float32 and in bfloat16 (oneDNN's channels-last bf16 convolutions run on
+  // the CPU's AVX512_BF16 units: ~2x the float32 rate on the bench's 120 -> 120 7x7).
+  if (o.fast_cpu && (o.dtype == torch::kFloat32 || o.dtype == torch::kBFloat16))
     for (auto& c : convs_) {
       w_cl_.push_back(c->weight.contiguous(kChannelsLast));
       w_grad_cl_.push_back(c->weight.transpose(0, 1).flip({2, 3}).contiguous(kChannelsLast));
@@ -72,7 +74,7 @@ RandomFilterNet::RandomFilterNet(RandomFilterNetOptions o) : opt_(o) {
 
 bool RandomFilterNet::use_fast_path(const torch::Tensor& maps) const {
   return !w_cl_.empty() && maps.scalar_type() == torch::kFloat32 && maps.dim() == 4 && maps.size(0) == 1 &&
-         maps.device().is_cpu() && convs_[0]->weight.scalar_type() == torch::kFloat32;
+         maps.device().is_cpu();
 }
 
 torch::Tensor RandomFilterNet::activate(const torch::Tensor& x, bool fast) const {
@@ -93,7 +95,8 @@ Features RandomFilterNet::forward(const torch::Tensor& maps) {
   Features out;
   const bool cast = opt_.dtype != maps.scalar_type() && opt_.dtype != torch::kFloat32;
   const bool fast = use_fast_path(maps);
-  torch::Tensor x = cast ? maps.to(opt_.dtype) : fast ? maps.contiguous(kChannelsLast) : maps;
+  torch::Tensor x = cast ? maps.to(opt_.dtype) : maps;
+  if (fast) x = x.contiguous(kChannelsLast);
   size_t next_block = 0;
   for (size_t i = 0; i < convs_.size(); ++i) {
     auto& c = convs_[i];

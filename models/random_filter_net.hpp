@@ -24,9 +24,10 @@ struct RandomFilterNetOptions {
   // convolutions are ~2x faster on CPUs with AVX512_BF16; features return as float32, so the
   // losses stay in float32). Weights are drawn in float32 from the seed either way.
   torch::Dtype dtype = torch::kFloat32;
-  // CPU fast path for float32, batch 1 (the synthesis): channels-last activations and an
-  // input-gradient-only backward (see random_filter_net.cpp). Same features and gradients
-  // within float rounding (tests/models/test_feature_nets.cpp); off = LibTorch's plain path.
+  // CPU fast path for float32 and bfloat16, batch 1 (the synthesis): channels-last
+  // activations and an input-gradient-only backward (see random_filter_net.cpp). Same
+  // features and gradients as the plain path within the precision's rounding
+  // (tests/models/test_feature_nets.cpp); off = LibTorch's plain path.
   bool fast_cpu = true;
 };
 

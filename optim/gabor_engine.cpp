@@ -105,6 +105,7 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
   map_terms_ = create_map_terms(p_["map_terms"]);
   for (auto& t : map_terms_) t.term->begin_run(MapTermRun{p_, s_, exemplar, ctx.seed});
   terms_ = create_point_terms(p_["terms"]);
+  rule_ = StoppingRuleRegistry::instance().create(p_["convergence"], "method.convergence");
   OptimizerRegistry::instance().entry(p_["optimizer"].value("type", ""), "method.optimizer.type");
   auto init = InitializerRegistry::instance().create(p_["init"], "method.init");
   std::vector<std::vector<size_t>> out_index;
@@ -274,6 +275,7 @@ void GaborEngine::enter_stage(const Stage& stage) {
   const PointSet ex_active = exemplar_.subset_classes(stage.target_classes);
   pipe_->set_targets(positions_tensor(ex_active), A > 0 ? normalized_attributes(ex_active, s_.attr_cols) : torch::Tensor(),
                      stage.sigma);
+  rule_->begin_stage(ex_active);
   for (auto& t : map_terms_) t.term->begin_stage(stage);
   phases_.targets += since(t0);
   optimizer_ = OptimizerRegistry::instance().create(p_["optimizer"], "method.optimizer", state_.moving, stage.sigma_index);
@@ -340,7 +342,9 @@ void GaborEngine::run_stage(const Stage& stage) {
     ev.loss = lv;
     state_.history.push_back({state_.stage, it, lv, ev.seconds});
     ctx_.iteration(ev);
-    if (s_.rule.converged(state_.stage_losses, it)) break;
+    if (rule_->converged(StageView{state_.stage_losses, it, [this] { return points_in_play(); }, window_.torus},
+                         state_.stage_watch))
+      break;
     if (ctx_.stop_requested()) {
       save_checkpoint();
       throw SynthesisInterrupted();
@@ -369,6 +373,7 @@ void GaborEngine::finish_stage(const Stage& stage) {
   ++state_.stage;
   state_.iteration = 0;
   state_.stage_losses.clear();
+  state_.stage_watch.clear();
   state_.stage_scale = -1;
   state_.optimizer.clear();
   optimizer_.reset();
@@ -378,6 +383,20 @@ void GaborEngine::finish_stage(const Stage& stage) {
         if (inside(window_.interior, out_[i])) state_.final_points[i] = 1;
     state_.moving = torch::Tensor();
   }
+}
+
+PointSet GaborEngine::points_in_play() const {
+  torch::NoGradGuard ng;
+  const auto mv = confined(state_.moving);
+  const auto local = (frozen_.size(0) > 0 ? torch::cat({frozen_, mv}) : mv).to(torch::kFloat64);
+  const auto a = local.accessor<double, 2>();
+  const Domain& g = window_.grid;
+  PointSet ps(window_.torus ? Domain{} : g);
+  for (int64_t i = 0; i < local.size(0); ++i) {
+    const Vec2 p = window_.torus ? Vec2{a[i][0], a[i][1]} : Vec2{g.x0 + g.width() * a[i][0], g.y0 + g.height() * a[i][1]};
+    if (inside(ps.domain(), p)) ps.add(p);  // a window's frozen context beyond its grid is not its pattern
+  }
+  return ps;
 }
 
 void GaborEngine::save_checkpoint() {

@@ -7,7 +7,7 @@
 //                   (windows: confine(moving) + frozen, in the window's coordinates)
 //                   [+ map terms on maps of their own (optim/map_term.hpp); not in the paper]
 //                   [+ point terms on the positions (optim/point_term.hpp); not in the paper]
-//                   -> backward -> PositionOptimizer step        (until the ConvergenceRule)
+//                   -> backward -> PositionOptimizer step        (until the StoppingRule)
 //
 // Everything that changes while it runs lives in the state, so the state can be saved at any
 // iteration (SynthesisContext::save_checkpoint) and a run restored from it takes the very
@@ -27,6 +27,7 @@
 #include "optim/point_term.hpp"
 #include "optim/position_optimizer.hpp"
 #include "optim/stage_plan.hpp"
+#include "optim/stopping_rule.hpp"
 #include "optim/synthesis_state.hpp"
 #include "optim/window_plan.hpp"
 
@@ -56,6 +57,7 @@ class GaborEngine {
   torch::Tensor evaluate(const Stage& stage);  // the loss at the current positions, after backward
   void finish_stage(const Stage& stage);
   void save_checkpoint();
+  PointSet points_in_play() const;  // the stage's moving and frozen points on its domain
   ProgressEvent event(const Stage& stage) const;
 
   json p_;
@@ -67,6 +69,7 @@ class GaborEngine {
   std::unique_ptr<GaborPipeline> pipe_;
   std::vector<WeightedMapTerm> map_terms_;
   std::vector<WeightedPointTerm> terms_;
+  std::unique_ptr<StoppingRule> rule_;
   SynthesisPlan plan_;
   PointSet out_;
   SynthesisState state_;

@@ -28,7 +28,9 @@ json gabor_defaults() {
                               json{{"type", "correlation"}, {"layers", {2}}, {"weight", 1.0}}})},
       {"optimizer", {{"type", "adam"}}},
       {"max_iterations", 500},
-      {"convergence", {{"window", 100}, {"check_every", 10}, {"threshold", 0.01}}},
+      // When a sigma stage stops before max_iterations (optim/stopping_rule.hpp): "loss" (the
+      // paper's) or "pattern" (the PCF stops improving).
+      {"convergence", {{"type", "loss"}}},
       {"init", {{"type", "best_candidate"}}},
       {"class_order", json::array()},  // empty = file order
       {"map_attributes", nullptr},  // null or "auto": every non-constant attribute; or a list of names ([] = none)
@@ -57,8 +59,6 @@ json gabor_bounds() {
       {"grid", {{"res", "int [0, 8192]"}, {"min_res", "int [8, 8192]"}, {"max_res", "int [8, 8192]"}}},
       {"k", "int [1, 1000000]"},
       {"max_iterations", "int [1, 1000000000]"},
-      // check_every 0 would divide by zero; a window of 0 compares a loss with itself
-      {"convergence", {{"window", "int [1, 1000000000]"}, {"check_every", "int [1, 1000000000]"}, {"threshold", "[0, inf)"}}},
       {"class_order", "int [0, 1000000]"},
       {"window", {{"pixels", "int [16, 8192]"}, {"receptive_field", "int [0, 1000]"}}},
       {"quick", {{"res", "int [8, 8192]"}, {"channels", "int [1, 4096]"}, {"max_iterations", "int [1, 1000000000]"},
@@ -146,9 +146,6 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
                      (shape.rectangle ? " (method.window.pixels)"
                                       : " (method.grid.res " + std::to_string(s.res) + " x upscale " + std::to_string(s.upscale) + ")"));
   }
-  s.rule = ConvergenceRule{get_int(p["convergence"], "window", "method.convergence"),
-                           get_int(p["convergence"], "check_every", "method.convergence"),
-                           get_number(p["convergence"], "threshold", "method.convergence")};
   for (auto& c : p["class_order"]) {
     if (!c.is_number_integer() || c.get<int>() < 0 || c.get<int>() >= K)
       throw config_error("method.class_order", "class ids are 0.." + std::to_string(K - 1));

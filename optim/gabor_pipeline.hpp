@@ -16,7 +16,6 @@
 #include "losses/composite_loss.hpp"
 #include "models/feature_net.hpp"
 #include "models/rasterizer.hpp"
-#include "optim/convergence.hpp"
 
 namespace ppsynth {
 
@@ -43,7 +42,6 @@ struct GaborSettings {
   std::vector<int> class_order;
   int max_iterations = 0;
   bool jitter = true;
-  ConvergenceRule rule;
   json feature_net;             // the net spec after --quick shrinking
 };
 

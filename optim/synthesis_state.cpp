@@ -8,7 +8,9 @@ namespace ppsynth {
 
 namespace {
 
-const int64_t kFormat = 2;  // 2: the group's points and the final flags (windows)  // bump when the layout changes: old checkpoints are then refused
+// Bump when the layout changes: old checkpoints are then refused. 2: the group's points and
+// the final flags (windows); 3: the stopping rule's record of the stage.
+const int64_t kFormat = 3;
 
 torch::Tensor doubles(const std::vector<double>& v) {
   return torch::from_blob(const_cast<double*>(v.data()), {static_cast<int64_t>(v.size())}, torch::kFloat64).clone();
@@ -40,6 +42,7 @@ std::string serialize_state(const SynthesisState& s) {
   a.write("has_moving", torch::tensor(int64_t{s.moving.defined() ? 1 : 0}));
   if (s.moving.defined()) a.write("moving", s.moving.detach());
   a.write("stage_losses", doubles(s.stage_losses));
+  a.write("stage_watch", doubles(s.stage_watch));
   a.write("group_moving", longs(s.group_moving));
   a.write("group_frozen", longs(s.group_frozen));
   a.write("final_points", torch::from_blob(const_cast<uint8_t*>(s.final_points.data()),
@@ -88,6 +91,7 @@ SynthesisState deserialize_state(const std::string& bytes, const std::string& so
     for (size_t i = 0; i + 1 < xy.size(); i += 2) s.positions.push_back(Vec2{xy[i], xy[i + 1]});
     if (read("has_moving").item<int64_t>() != 0) s.moving = read("moving");
     s.stage_losses = to_vector(read("stage_losses"));
+    s.stage_watch = to_vector(read("stage_watch"));
     s.group_moving = to_vector_of<int64_t>(read("group_moving"));
     s.group_frozen = to_vector_of<int64_t>(read("group_frozen"));
     s.final_points = to_vector_of<uint8_t>(read("final_points"));

@@ -8,6 +8,7 @@
 #include "core/output_shape.hpp"
 #include "core/run_directory.hpp"
 #include "optim/method.hpp"
+#include "optim/run/presets.hpp"
 
 namespace ppsynth {
 
@@ -20,6 +21,7 @@ json run_defaults() {
       {"scaling", "per-axis"},   // Point-Synthesis files: per-axis (published) | uniform
       {"merge_classes", false},  // treat every point as one class (positions-only synthesis)
       {"init_file", nullptr},    // explicit initialisation: one file (with a class column) or a list, one file per class
+      {"preset", nullptr},       // a named preset under the config's own keys (optim/run/presets.hpp): "fast"
       {"seed", 95},
       {"upscale", 2},            // u: S = u^2 times the exemplar's points (unless "output" gives a size)
       {"output", output_defaults()},  // a rectangle or a point count in exemplar units (core/output_shape.hpp)
@@ -32,7 +34,7 @@ json run_defaults() {
 
 json resolve_run_config(json config, const std::vector<std::string>& overrides) {
   for (auto& o : overrides) set_override(config, o);
-  json r = apply_defaults(run_defaults(), config, "");
+  json r = apply_defaults(run_defaults(), apply_preset(config), "");
   if (!r["seed"].is_number_integer() || r["seed"].get<long long>() < 0) throw config_error("seed", "expected an integer >= 0");
   check_bounds(r, json{{"upscale", "int [1, 64]"}, {"checkpoint_seconds", "(0, inf)"}}, "");  // u: u^2 copies of the exemplar
   json resolved_method;

@@ -91,6 +91,40 @@ TEST_CASE("RandomFilterNet fast CPU path equals the plain path", "[models][net]"
     }
 }
 
+TEST_CASE("RandomFilterNet bfloat16 fast path equals its plain path within bf16 rounding", "[models][net]") {
+  // The bf16 network takes the channels-last path too (issue 21): same features and input
+  // gradient as LibTorch's plain bf16 path, up to bf16's 8-bit mantissa.
+  RandomFilterNetOptions o;
+  o.channels = 16;
+  o.dtype = torch::kBFloat16;
+  auto x = torch::rand({1, 10, 32, 32}) * 3;
+  auto probe = [&](bool fast, torch::Tensor& grad) {
+    o.fast_cpu = fast;
+    RandomFilterNet net(o);
+    auto xi = x.clone().set_requires_grad(true);
+    auto f = net.forward(xi);
+    torch::Tensor loss;
+    for (auto& fl : f) {
+      auto t = gram_matrix(fl).pow(2).sum();
+      loss = loss.defined() ? loss + t : t;
+    }
+    loss.backward();
+    grad = xi.grad();
+    return f;
+  };
+  torch::Tensor g_fast, g_plain;
+  auto fast = probe(true, g_fast), plain = probe(false, g_plain);
+  REQUIRE(fast.size() == plain.size());
+  CHECK(fast[0].is_contiguous(at::MemoryFormat::ChannelsLast));
+  CHECK_FALSE(plain[0].is_contiguous(at::MemoryFormat::ChannelsLast));
+  for (size_t l = 0; l < fast.size(); ++l) {
+    CHECK(fast[l].scalar_type() == torch::kFloat32);
+    CHECK(((fast[l] - plain[l]).norm() / plain[l].norm()).item<double>() < 0.03);
+  }
+  CHECK(g_fast.scalar_type() == torch::kFloat32);
+  CHECK(((g_fast - g_plain).norm() / g_plain.norm()).item<double>() < 0.05);
+}
+
 TEST_CASE("Feature nets from the registry: fixed banks and identity", "[models][net]") {
   auto& reg = FeatureNetRegistry::instance();
   auto x = torch::rand({1, 10, 16, 16});

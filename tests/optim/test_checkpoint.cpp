@@ -33,9 +33,11 @@ struct Run {
   json stats;
 };
 
-Run synthesize(const PointSet& ex, const std::string* resume = nullptr, const std::atomic<bool>* stop = nullptr) {
-  auto method = MethodRegistry::instance().create(
-      json{{"type", "gabor"}, {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 7}, {"num_sigmas", 2}}}}, "method");
+const json kQuickMethod{{"type", "gabor"}, {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 7}, {"num_sigmas", 2}}}};
+
+Run synthesize(const PointSet& ex, const std::string* resume = nullptr, const std::atomic<bool>* stop = nullptr,
+               const json& method_spec = kQuickMethod) {
+  auto method = MethodRegistry::instance().create(method_spec, "method");
   REQUIRE(method->can_resume());
   Run run;
   SynthesisContext ctx;
@@ -76,13 +78,32 @@ TEST_CASE("a run resumed from any checkpoint ends bit for bit as the uninterrupt
   }
 }
 
+TEST_CASE("a stage stopped by the pattern rule resumes to the same stopping iteration", "[optim][checkpoint]") {
+  // The rule's record of the stage (its PCF checks) is in the checkpoint: resumed mid-stage,
+  // the stage stops where the uninterrupted one did, before its cap.
+  json spec = kQuickMethod;
+  spec["quick"]["max_iterations"] = 80;
+  spec["convergence"] = {{"type", "pattern"}, {"window", 10}, {"check_every", 5}, {"threshold", 0.5}, {"min_iterations", 0}};
+  const PointSet ex = exemplar(1, false);
+  const Run whole = synthesize(ex, nullptr, nullptr, spec);
+  REQUIRE(whole.stats["stages"].size() == 2);
+  const int first_stage = whole.stats["stages"][0]["iterations"];
+  CHECK(first_stage < 80);  // stopped by the rule, not the cap
+  for (size_t i : {size_t{7}, size_t{12}, whole.checkpoints.size() / 2}) {
+    INFO("checkpoint " << i);
+    const Run resumed = synthesize(ex, &whole.checkpoints[i], nullptr, spec);
+    CHECK(same_bits(resumed.output, whole.output));
+    CHECK(resumed.stats["stages"][0]["iterations"] == first_stage);
+    CHECK(resumed.stats["stages"][1]["iterations"] == whole.stats["stages"][1]["iterations"]);
+  }
+}
+
 TEST_CASE("the stop flag saves a checkpoint and throws; resuming from it finishes the run", "[optim][checkpoint]") {
   const PointSet ex = exemplar(2, false);
   const Run whole = synthesize(ex);
   std::atomic<bool> stop{true};  // stop at the end of the first iteration
   Run stopped;
-  auto method = MethodRegistry::instance().create(
-      json{{"type", "gabor"}, {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 7}, {"num_sigmas", 2}}}}, "method");
+  auto method = MethodRegistry::instance().create(kQuickMethod, "method");
   SynthesisContext ctx;
   ctx.quick = true;
   ctx.seed = 5;

@@ -12,6 +12,7 @@
 #include "optim/map_term.hpp"
 #include "optim/point_term.hpp"
 #include "optim/position_optimizer.hpp"
+#include "optim/stopping_rule.hpp"
 
 namespace {
 
@@ -38,5 +39,6 @@ TEST_CASE("every registered part declares the range of each numeric parameter", 
   check_registry<ppsynth::InitializerRegistry>("init");
   check_registry<ppsynth::PointTermRegistry>("term");
   check_registry<ppsynth::MapTermRegistry>("map_term");
+  check_registry<ppsynth::StoppingRuleRegistry>("convergence");
   check_registry<ppsynth::GeneratorRegistry>("generator");
 }

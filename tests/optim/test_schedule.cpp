@@ -1,6 +1,9 @@
 #include <catch2/catch.hpp>
 
-#include "optim/convergence.hpp"
+#include <cmath>
+#include <random>
+
+#include "optim/stopping_rule.hpp"
 #include "optim/gabor_pipeline.hpp"
 #include "optim/sigma_schedule.hpp"
 
@@ -15,21 +18,76 @@ TEST_CASE("Sigma schedule: d/c1 down to d/c2, evenly spaced", "[optim]") {
   CHECK_THROWS_AS(sigma_schedule(0.1, 0.0, 2.6), InputError);
 }
 
+namespace {
+
+// The "loss" rule's verdict after the losses L (the last one from iteration L.size() - 1).
+bool loss_rule_stops(StoppingRule& rule, const std::vector<double>& L) {
+  std::vector<double> record;
+  return rule.converged(StageView{L, static_cast<int>(L.size()) - 1, {}, true}, record);
+}
+
+}  // namespace
+
 TEST_CASE("Convergence rule as the published code checks it", "[optim]") {
-  ConvergenceRule rule;
+  auto rule = StoppingRuleRegistry::instance().create(json{{"type", "loss"}}, "method.convergence");
   std::vector<double> L;
   // Fast decay then flat: fires at the first check after 100 iterations.
   for (int i = 0; i < 200; ++i) L.push_back(i < 10 ? 1.0 - 0.09 * i : 0.1);
   std::vector<double> prefix(L.begin(), L.begin() + 100);
-  CHECK_FALSE(rule.converged(prefix, 99));  // not more than 100 yet
+  CHECK_FALSE(loss_rule_stops(*rule, prefix));  // not more than 100 yet
   std::vector<double> p111(L.begin(), L.begin() + 111);
-  CHECK(rule.converged(p111, 110));
+  CHECK(loss_rule_stops(*rule, p111));
   std::vector<double> p112(L.begin(), L.begin() + 112);
-  CHECK_FALSE(rule.converged(p112, 111));  // only every 10th iteration
+  CHECK_FALSE(loss_rule_stops(*rule, p112));  // only every 10th iteration
   // Steady linear decrease: 100 of 110 iterations' worth of decrease is far above 1%.
   std::vector<double> lin;
   for (int i = 0; i < 111; ++i) lin.push_back(1.0 - 0.001 * i);
-  CHECK_FALSE(rule.converged(lin, 110));
+  CHECK_FALSE(loss_rule_stops(*rule, lin));
+  CHECK_THROWS_WITH(StoppingRuleRegistry::instance().create(json{{"type", "loss"}, {"check_every", 0}}, "method.convergence"),
+                    Catch::Contains("method.convergence.check_every"));
+  CHECK_THROWS_WITH(StoppingRuleRegistry::instance().create(json{{"type", "loss"}, {"patience", 3}}, "method.convergence"),
+                    Catch::Contains("method.convergence.patience"));
+}
+
+TEST_CASE("The pattern rule stops when the PCF stops improving, not while it improves", "[optim]") {
+  // Exemplar: a jittered 8 x 8 grid. The "stage" moves a uniform pattern towards a 16 x 16
+  // jittered grid on the torus (blend t), then holds it: the rule must wait while the PCF
+  // improves and stop within one window of the hold.
+  auto rule = StoppingRuleRegistry::instance().create(
+      json{{"type", "pattern"}, {"window", 30}, {"check_every", 10}, {"threshold", 0.02}, {"min_iterations", 0}},
+      "method.convergence");
+  auto jittered = [](int n, double amp, uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-0.5, 0.5);
+    std::vector<Vec2> v;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) v.push_back({(i + 0.5 + amp * u(rng)) / n, (j + 0.5 + amp * u(rng)) / n});
+    return v;
+  };
+  PointSet ex;
+  for (auto p : jittered(8, 0.3, 1)) ex.add(p);
+  rule->begin_stage(ex);
+  const auto goal = jittered(16, 0.3, 2), start = jittered(16, 2.0, 3);  // start: nearly uniform
+  std::vector<double> losses, record;
+  int stopped_at = -1;
+  const int hold_from = 150;
+  for (int it = 0; it < 400 && stopped_at < 0; ++it) {
+    losses.push_back(1.0 / (it + 1));  // a loss that keeps falling: only the pattern may stop it
+    const double t = std::min(1.0, it / double(hold_from));
+    auto points = [&] {
+      PointSet ps;
+      for (size_t i = 0; i < goal.size(); ++i) {
+        Vec2 p{start[i].x + t * (goal[i].x - start[i].x), start[i].y + t * (goal[i].y - start[i].y)};
+        ps.add({p.x - std::floor(p.x), p.y - std::floor(p.y)});
+      }
+      return ps;
+    };
+    if (rule->converged(StageView{losses, it, points, true}, record)) stopped_at = it;
+  }
+  INFO("stopped at iteration " << stopped_at << ", " << record.size() << " checks");
+  CHECK(stopped_at >= hold_from);
+  CHECK(stopped_at <= hold_from + 30 + 10);
+  CHECK(record.front() > 2 * record.back());  // it watched the pattern improve
 }
 
 TEST_CASE("Toroidal wrap as published", "[optim]") {

@@ -1,0 +1,47 @@
+#pragma once
+// StoppingRule: when a sigma stage has converged (besides its iteration cap), by registered
+// name under "method.convergence": {"type": name, ...params}.
+//
+//   "loss"     the paper's rule as the published code checks it (§5: the loss fell by less
+//              than 1 % of the stage's whole decrease over the last 100 iterations);
+//              the default (optim/loss_stopping_rule.cpp).
+//   "pattern"  watches the pattern instead of the loss: the PCF of the stage's points
+//              against the exemplar's stops improving (optim/pattern_stopping_rule.cpp;
+//              issue 21: the loss keeps falling slowly after the points have stopped
+//              changing what any metric sees).
+//
+// A rule is asked after every iteration. What it remembers of the stage goes into `record`,
+// which the engine keeps in the checkpoint (optim/synthesis_state.hpp), so a resumed stage
+// stops at the same iteration as one never interrupted.
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "core/point_set.hpp"
+#include "core/registry.hpp"
+
+namespace ppsynth {
+
+// The stage as a rule sees it after one iteration.
+struct StageView {
+  const std::vector<double>& losses;  // the stage's losses so far; losses.back() is this iteration's
+  int iteration = 0;                  // 0-based index of this iteration in the stage
+  // The stage's points in play now (moving and frozen points of its classes) on the
+  // stage's domain; built only when called (a copy of the positions).
+  std::function<PointSet()> points;
+  bool periodic = false;  // the domain is a torus (the paper's unit square)
+};
+
+class StoppingRule {
+ public:
+  virtual ~StoppingRule() = default;
+  // A stage starts (or resumes): the exemplar's points of the stage's classes.
+  virtual void begin_stage(const PointSet& exemplar_in_play) { (void)exemplar_in_play; }
+  // After each iteration: true when the stage has converged. `record` is this rule's memory
+  // of the stage so far (empty at the stage's start; checkpointed).
+  virtual bool converged(const StageView& view, std::vector<double>& record) = 0;
+};
+
+using StoppingRuleRegistry = Registry<StoppingRule>;
+
+}  // namespace ppsynth
