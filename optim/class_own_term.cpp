@@ -25,6 +25,7 @@ void ClassOwnMapTerm::begin_group(const Stage& stage, const PointSet& output) {
 
 void ClassOwnMapTerm::begin_stage(const Stage& stage) {
   if (!active(stage)) return;
+  pipe_->set_grid(stage.sigma_index);  // the joint pipeline's grid of this sigma (its jitter's size)
   const PointSet ex_own = exemplar_->subset_class(stage.own_class);
   pipe_->set_targets(positions_tensor(ex_own),
                      settings_.attr_cols.empty() ? torch::Tensor() : normalized_attributes(ex_own, settings_.attr_cols),

@@ -117,7 +117,8 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
     plan_ = window_plan(exemplar, s_, layout_);
     state_.final_points.assign(out_.size(), 0);
   }
-  stats_ = {{"grid_res", s_.res}, {"output_grid_res", s_.out_res}, {"k", s_.k}, {"sigmas", s_.sigmas},
+  stats_ = {{"grid_res", s_.res}, {"output_grid_res", s_.out_res}, {"grid_res_per_sigma", s_.sigma_res},
+            {"output_grid_res_per_sigma", s_.sigma_out_res}, {"k", s_.k}, {"sigmas", s_.sigmas},
             {"mean_nn_distance", s_.mean_nn_distance},
             {"map_terms", json::object()}, {"terms", json::object()}};
   if (shape_.rectangle) {
@@ -272,6 +273,7 @@ void GaborEngine::enter_stage(const Stage& stage) {
   const int A = static_cast<int>(s_.attr_cols.size());
   const auto t0 = Clock::now();
   pipe_->set_neighbours(stage.k);
+  pipe_->set_grid(stage.sigma_index);
   const PointSet ex_active = exemplar_.subset_classes(stage.target_classes);
   pipe_->set_targets(positions_tensor(ex_active), A > 0 ? normalized_attributes(ex_active, s_.attr_cols) : torch::Tensor(),
                      stage.sigma);

@@ -16,7 +16,9 @@ json gabor_defaults() {
       {"c1", 1.0},
       {"c2", 2.6},
       {"num_sigmas", 4},
-      {"grid", {{"res", 0}, {"min_res", 128}, {"max_res", 256}}},  // res 0 = clamp(round(9/d))
+      // res 0 = clamp(round(9/d), min_res, max_res); per_sigma: coarser grids at the coarser
+      // sigmas (GaborSettings::sigma_res), the finest stage's grid unchanged
+      {"grid", {{"res", 0}, {"min_res", 128}, {"max_res", 256}, {"per_sigma", false}}},
       {"k", GaborMapsOptions{}.k},                                 // neighbours: min(M, k)
       // M = the exemplar points of the classes in play at a class stage (the published disk
       // and multi-attribute optimisers); false: M = all exemplar points (its point optimiser).
@@ -119,18 +121,26 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   s.k_per_stage = p["k_per_stage"].get<bool>();
   s.attr_cols = map_attribute_columns(exemplar, p["map_attributes"]);
   s.jitter = p["jitter"].get<bool>();
+  const bool per_sigma = get_bool(p["grid"], "per_sigma", "method.grid");
+  for (double sigma : s.sigmas)  // at most res; the finest sigma gets res itself
+    s.sigma_res.push_back(per_sigma ? std::max(8, static_cast<int>(std::ceil(s.res * s.sigmas.back() / sigma - 1e-9))) : s.res);
   if (!shape.rectangle) {
     s.out_res = s.upscale * s.res;
     s.out_scale = s.upscale;
+    for (int r : s.sigma_res) s.sigma_out_res.push_back(s.upscale * r);
   } else {  // a window: at most `pixels` across, at most the canvas
     const Domain c = shape.canvas();
     const double side = std::min({get_int(p["window"], "pixels", "method.window") / static_cast<double>(s.res), c.width(), c.height()});
     s.out_res = std::max(8, static_cast<int>(std::lround(side * s.res)));
     s.out_scale = side;
+    for (int r : s.sigma_res) s.sigma_out_res.push_back(std::max(8, static_cast<int>(std::lround(side * r))));
     const json& m = p["window"]["margin"];
-    if (m.is_null() || (m.is_string() && m.get<std::string>() == "auto"))
-      s.window_margin = 3 * s.sigmas.front() + get_int(p["window"], "receptive_field", "method.window") / static_cast<double>(s.res);
-    else if (m.is_number() && m.get<double>() >= 0)
+    if (m.is_null() || (m.is_string() && m.get<std::string>() == "auto")) {
+      // The maps' reach plus the network's receptive field, at the stage where they reach farthest.
+      const int rf = get_int(p["window"], "receptive_field", "method.window");
+      for (size_t i = 0; i < s.sigmas.size(); ++i)
+        s.window_margin = std::max(s.window_margin, 3 * s.sigmas[i] + rf / static_cast<double>(s.sigma_res[i]));
+    } else if (m.is_number() && m.get<double>() >= 0)
       s.window_margin = m.get<double>();
     else
       throw config_error("method.window.margin", "expected null (\"auto\") or a length >= 0 in exemplar units");
@@ -162,14 +172,14 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
 }
 
 GaborPipeline::GaborPipeline(const json& p, const GaborSettings& s, uint64_t seed)
-    : p_(p), s_(s), seed_(seed), loss_(p["losses"], "method.losses") {
+    : p_(p), s_(s), seed_(seed), loss_(p["losses"], "method.losses"), res_(s.sigma_res.at(0)), out_res_(s.sigma_out_res.at(0)) {
   build_rasterizers();
   in_channels_ = ex_rast_->channels(static_cast<int>(s.attr_cols.size()));
   redraw_network(seed);
 }
 
 void GaborPipeline::build_rasterizers() {
-  RasterizerArgs ex_args{s_.res, 1.0, s_.k}, out_args{s_.out_res, s_.out_scale, s_.k, true};
+  RasterizerArgs ex_args{res_, 1.0, s_.k}, out_args{out_res_, s_.out_scale, s_.k, true};
   ex_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", ex_args, &resolved_rast_);
   out_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", out_args);
 }
@@ -177,6 +187,14 @@ void GaborPipeline::build_rasterizers() {
 void GaborPipeline::set_neighbours(int k) {
   if (k == s_.k) return;
   s_.k = k;
+  build_rasterizers();
+}
+
+void GaborPipeline::set_grid(int sigma_index) {
+  const int r = s_.sigma_res.at(sigma_index), o = s_.sigma_out_res.at(sigma_index);
+  if (r == res_ && o == out_res_) return;
+  res_ = r;
+  out_res_ = o;
   build_rasterizers();
 }
 
@@ -192,7 +210,7 @@ void GaborPipeline::set_targets(const torch::Tensor& ex_points, const torch::Ten
 
 torch::Tensor GaborPipeline::draw_jitter(std::mt19937_64& rng) const {
   if (!s_.jitter || !out_rast_->uses_jitter()) return {};
-  const int64_t R = s_.out_res;
+  const int64_t R = out_res_;
   const float amp = 1.0f / static_cast<float>(R + 1);
   std::uniform_real_distribution<float> unif(-1.0f, 1.0f);
   auto j = torch::empty({R * R, 2});

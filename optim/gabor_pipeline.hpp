@@ -35,6 +35,11 @@ struct GaborSettings {
   int out_res = 0;
   double out_scale = 0;
   double window_margin = 0;     // rectangles: exemplar units reserved on each side of a window's interior
+  // The grid of each sigma stage (coarse -> fine): `res` and `out_res` at every stage, or with
+  // method.grid.per_sigma coarser grids at the coarser sigmas, keeping the finest stage's
+  // grid positions per sigma (the Gabor frequencies scale with 1/sigma, so each stage's
+  // maps are sampled as finely as the finest stage's).
+  std::vector<int> sigma_res, sigma_out_res;
   int k = 0;                    // neighbours per grid position: min(M, k)
   bool k_per_stage = true;      // k = min(k, exemplar points of the stage's classes)
   std::vector<double> sigmas;   // coarse -> fine
@@ -67,6 +72,9 @@ class GaborPipeline {
   void redraw_network(uint64_t seed);
   // Neighbours per grid position for the next stage (rebuilds the rasterizers if it changes).
   void set_neighbours(int k);
+  // The grid of sigma stage `sigma_index` (GaborSettings::sigma_res; rebuilds if it changes).
+  void set_grid(int sigma_index);
+  int output_grid() const { return out_res_; }
 
   const CompositeLoss& composite() const { return loss_; }
   json resolved() const;  // rasterizer, feature net and losses with every default filled in
@@ -80,6 +88,7 @@ class GaborPipeline {
   CompositeLoss loss_;
   json resolved_rast_, resolved_net_;
   int in_channels_ = 10;
+  int res_ = 0, out_res_ = 0;  // the current stage's grids
   void build_rasterizers();
 };
 

@@ -21,8 +21,8 @@ nlohmann::json presets() {
        {{"description", "the default's quality in a fraction of the time: bf16 network, 40 filters, the 9/d grid, stop when the pattern stops improving"},
         {"config",
          {{"method",
-           {{"feature_net", {{"channels", 40}, {"precision", "bfloat16"}}},
-            {"grid", {{"min_res", 32}}},
+           {{"feature_net", {{"precision", "bfloat16"}}},
+            {"grid", {{"per_sigma", true}}},
             {"convergence", {{"type", "pattern"}}}}}}}}},
   };
 }

@@ -80,14 +80,17 @@ TEST_CASE("a run resumed from any checkpoint ends bit for bit as the uninterrupt
 
 TEST_CASE("a stage stopped by the pattern rule resumes to the same stopping iteration", "[optim][checkpoint]") {
   // The rule's record of the stage (its PCF checks) is in the checkpoint: resumed mid-stage,
-  // the stage stops where the uninterrupted one did, before its cap.
+  // the stage stops where the uninterrupted one did, before its cap. Per-sigma grids: the
+  // grid changes between the stages and is rebuilt the same on resuming.
   json spec = kQuickMethod;
   spec["quick"]["max_iterations"] = 80;
+  spec["grid"] = {{"per_sigma", true}};
   spec["convergence"] = {{"type", "pattern"}, {"window", 10}, {"check_every", 5}, {"threshold", 0.5}, {"min_iterations", 0}};
   const PointSet ex = exemplar(1, false);
   const Run whole = synthesize(ex, nullptr, nullptr, spec);
   REQUIRE(whole.stats["stages"].size() == 2);
   const int first_stage = whole.stats["stages"][0]["iterations"];
+  CHECK(whole.stats["output_grid_res_per_sigma"][0] < whole.stats["output_grid_res_per_sigma"][1]);
   CHECK(first_stage < 80);  // stopped by the rule, not the cap
   for (size_t i : {size_t{7}, size_t{12}, whole.checkpoints.size() / 2}) {
     INFO("checkpoint " << i);

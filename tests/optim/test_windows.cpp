@@ -240,3 +240,33 @@ TEST_CASE("the window grid, the memory of an iteration, does not grow with the o
   const GaborSettings tiny = resolve_gabor_settings(p, ex, shape_of(json{{"size", {1, 1}}}, ex), false);
   CHECK(tiny.out_res < 384);
 }
+
+TEST_CASE("per-sigma grids: coarser at coarse sigmas, the finest unchanged, margins for the farthest reach", "[optim][windows]") {
+  const PointSet ex = exemplar(1, false);
+  auto params = [](bool per_sigma) {
+    json m;
+    MethodRegistry::instance().create(json{{"type", "gabor"}, {"grid", {{"per_sigma", per_sigma}}}}, "method", &m);
+    return m;
+  };
+  for (const json& output : {json::object(), json{{"size", {6, 6}}}}) {
+    INFO("output " << output.dump());
+    const OutputShape shape = output.empty() ? OutputShape{} : shape_of(output, ex);
+    const GaborSettings fixed = resolve_gabor_settings(params(false), ex, shape, false);
+    const GaborSettings scaled = resolve_gabor_settings(params(true), ex, shape, false);
+    REQUIRE(scaled.sigma_res.size() == scaled.sigmas.size());
+    REQUIRE(scaled.sigma_out_res.size() == scaled.sigmas.size());
+    for (size_t i = 0; i < fixed.sigmas.size(); ++i) {
+      CHECK(fixed.sigma_res[i] == fixed.res);
+      CHECK(fixed.sigma_out_res[i] == fixed.out_res);
+      // the same grid positions per sigma as the finest stage, never finer than it
+      CHECK(scaled.sigma_res[i] <= scaled.res);
+      CHECK(scaled.sigma_res[i] * scaled.sigmas[i] >= scaled.res * scaled.sigmas.back() - 1e-6);
+      CHECK((scaled.sigma_res[i] - 1) * scaled.sigmas[i] < scaled.res * scaled.sigmas.back());
+      if (i > 0) CHECK(scaled.sigma_res[i] >= scaled.sigma_res[i - 1]);
+    }
+    CHECK(scaled.sigma_res.back() == scaled.res);
+    CHECK(scaled.sigma_out_res.back() == scaled.out_res);
+    CHECK(scaled.sigma_res.front() < scaled.res);  // c2 / c1 = 2.6: about 2.6 x coarser
+    if (!output.empty()) CHECK(scaled.window_margin > fixed.window_margin);  // the coarse grid's receptive field reaches farther
+  }
+}

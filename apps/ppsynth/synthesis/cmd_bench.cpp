@@ -126,7 +126,7 @@ app::RunFn setup(CLI::App& app) {
     const double sigma = s.sigmas.front();
     std::mt19937_64 rng(seed);
     json out = {{"exemplar", r["exemplar"]}, {"points", ex.size()}, {"output_points", start.size()},
-                {"grid", s.res}, {"output_grid", u * s.res}, {"k", s.k}, {"threads", at::get_num_threads()}};
+                {"grid", s.sigma_res[0]}, {"output_grid", s.sigma_out_res[0]}, {"k", s.k}, {"threads", at::get_num_threads()}};
 
     // --- set-up: exemplar maps -> features -> targets, per sigma ----------------------
     double setup_first = 0;
@@ -147,7 +147,7 @@ app::RunFn setup(CLI::App& app) {
 
     // --- phases of one iteration -----------------------------------------------------
     GaborMapsOptions mo;
-    mo.res = u * s.res;
+    mo.res = s.sigma_out_res[0];  // the first sigma's grid (the pipeline's)
     mo.upscale = u;
     mo.k = s.k;
     GaborFeatureMaps maps_mod(mo);
@@ -239,7 +239,7 @@ app::RunFn setup(CLI::App& app) {
     // --- the convolution floor ---------------------------------------------------------
     const int C = s.feature_net.value("channels", 120), ks = s.feature_net.value("kernel_size", 7),
               depth = s.feature_net.value("depth", 3);
-    const int R = u * s.res;
+    const int R = s.sigma_out_res[0];
     const std::vector<ConvThroughput> paths = {conv_throughput("float32", torch::kFloat32, false, R, o->reps),
                                                conv_throughput("bfloat16 channels-last", torch::kBFloat16, true, R, o->reps)};
     const double flops = s.feature_net.value("type", "") == "random" ? net_flops(static_cast<int>(maps.size(1)), C, ks, depth, R) : 0;
@@ -249,7 +249,7 @@ app::RunFn setup(CLI::App& app) {
 
     // --- print ---------------------------------------------------------------------------
     std::printf("ppsynth bench: %s  (%zu -> %zu points, grid %d -> %d, k %d, %d threads)\n",
-                r["exemplar"].get<std::string>().c_str(), ex.size(), start.size(), s.res, R, s.k, at::get_num_threads());
+                r["exemplar"].get<std::string>().c_str(), ex.size(), start.size(), s.sigma_res[0], R, s.k, at::get_num_threads());
     std::printf("%-42s %10s %10s\n", "phase", "min [s]", "median [s]");
     json jp = json::array();
     for (auto& [name, t] : phases) {
