@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <random>
 #include <set>
 
 #include "core/atomic_file.hpp"
@@ -91,6 +92,24 @@ void discover(const std::string& dir, std::vector<Found>& found, std::vector<std
 std::pair<std::string, std::string> split_key(const std::string& key) {
   const size_t slash = key.rfind('/');
   return {key.substr(0, slash), key.substr(slash + 1)};
+}
+
+// Ratio of the medians of `a` and `b` and its 5 % and 95 % bootstrap quantiles.
+BaselineComparison compare_medians(const std::vector<double>& a, const std::vector<double>& b) {
+  BaselineComparison c;
+  c.n = a.size(), c.n_baseline = b.size();
+  const double mb = summarize(b).median;
+  c.ratio = mb != 0 ? summarize(a).median / mb : std::nan("");
+  std::mt19937_64 rng(20261125);
+  std::vector<double> ratios, ra(a.size()), rb(b.size());
+  for (int draw = 0; draw < 2000; ++draw) {
+    for (auto& x : ra) x = a[std::uniform_int_distribution<size_t>(0, a.size() - 1)(rng)];
+    for (auto& x : rb) x = b[std::uniform_int_distribution<size_t>(0, b.size() - 1)(rng)];
+    const double den = summarize(rb).median;
+    if (den != 0) ratios.push_back(summarize(ra).median / den);
+  }
+  c.lo = quantile(ratios, 0.05), c.hi = quantile(ratios, 0.95);
+  return c;
 }
 
 }  // namespace
@@ -195,6 +214,29 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
       r.summaries.push_back(s);
     }
   }
+  for (const auto& label : options.baselines) {
+    std::vector<std::string> matches;
+    for (const auto& g : group_order)
+      if (by_group[g].front().group_label == label) matches.push_back(g);
+    if (matches.size() != 1) {
+      std::string labels;
+      for (const auto& g : group_order) labels += (labels.empty() ? "" : "; ") + by_group[g].front().group_label;
+      throw InputError("--baseline '" + label + "': " + (matches.empty() ? "no group" : "several groups") +
+                       " of that label (groups: " + labels + ")");
+    }
+    const std::string& base = matches.front();
+    for (const auto& g : group_order) {
+      if (exemplar_of[g] != exemplar_of[base]) continue;
+      for (const auto& s : by_group[g]) {
+        const auto b = std::find_if(by_group[base].begin(), by_group[base].end(),
+                                    [&](const MetricSummary& x) { return x.scope == s.scope && x.metric == s.metric; });
+        if (b == by_group[base].end()) continue;
+        BaselineComparison c = compare_medians(s.values, b->values);
+        c.group_label = s.group_label, c.baseline_label = label, c.scope = s.scope, c.metric = s.metric;
+        r.comparisons.push_back(c);
+      }
+    }
+  }
   return r;
 }
 
@@ -248,6 +290,18 @@ std::pair<std::vector<std::string>, std::vector<std::vector<std::string>>> per_s
   return {header, rows};
 }
 
+std::vector<std::string> comparison_header() {
+  return {"group", "baseline", "scope", "metric", "n", "n baseline", "median / baseline median", "90 % bootstrap interval"};
+}
+
+std::vector<std::vector<std::string>> comparison_rows(const GatherResult& r) {
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& c : r.comparisons)
+    rows.push_back({c.group_label, c.baseline_label, c.scope, c.metric, std::to_string(c.n), std::to_string(c.n_baseline),
+                    num(c.ratio, "%.3f"), num(c.lo, "%.2f") + "-" + num(c.hi, "%.2f")});
+  return rows;
+}
+
 nlohmann::json to_json(const GatherResult& r) {
   nlohmann::json runs = nlohmann::json::array(), sums = nlohmann::json::array();
   for (const auto& run : r.runs) {
@@ -263,8 +317,13 @@ nlohmann::json to_json(const GatherResult& r) {
                     {"ratio_of_medians", optional(s.ratio)}, {"share_within_bound", optional(s.within)}});
   nlohmann::json refs = nlohmann::json::array();
   for (const auto& ref : r.options.references) refs.push_back({{"exemplar", ref.exemplar}, {"file", ref.file}});
+  nlohmann::json comps = nlohmann::json::array();
+  for (const auto& c : r.comparisons)
+    comps.push_back({{"group_label", c.group_label}, {"baseline", c.baseline_label}, {"scope", c.scope}, {"metric", c.metric},
+                     {"n", c.n}, {"n_baseline", c.n_baseline}, {"ratio_of_medians", c.ratio}, {"bootstrap_5", c.lo},
+                     {"bootstrap_95", c.hi}});
   return {{"references", refs}, {"bound", r.options.bound}, {"runs", runs}, {"summaries", sums},
-          {"left_out", r.unfinished}};
+          {"baselines", r.options.baselines}, {"comparisons", comps}, {"left_out", r.unfinished}};
 }
 
 // One strip plot per scope and metric, a column per group.
@@ -318,6 +377,17 @@ std::string format_gather(const GatherResult& r) {
                   opt(m.ratio, "%.3f").c_str());
     s += line;
   }
+  if (!r.comparisons.empty()) {
+    std::snprintf(line, sizeof line, "\n%-40s %-12s %-22s %3s %9s %13s\n", "group vs its baseline", "scope", "metric", "n", "ratio",
+                  "90% interval");
+    s += line;
+    for (const auto& c : r.comparisons) {
+      std::snprintf(line, sizeof line, "%-40.40s %-12.12s %-22.22s %3zu %9s %13s\n", (c.group_label + " / " + c.baseline_label).c_str(),
+                    c.scope.c_str(), c.metric.c_str(), c.n, num(c.ratio, "%.3f").c_str(),
+                    (num(c.lo, "%.2f") + "-" + num(c.hi, "%.2f")).c_str());
+      s += line;
+    }
+  }
   if (!r.unfinished.empty()) s += std::to_string(r.unfinished.size()) + " run(s) left out (not finished)\n";
   return s;
 }
@@ -334,8 +404,13 @@ void write_gather(const GatherResult& r, const std::string& out, bool force) {
     write_table_csv(d + "/per_seed.csv", seed_header, seed_rows);
     std::string md = "# Gathered runs\n\n" + std::to_string(r.runs.size()) + " finished runs" +
                      (r.options.references.empty() ? "" : "; reference " + references_text(r.options) + ", bound " + num(r.options.bound, "%g") + " x") +
-                     ".\n\n" + table_markdown(summary_header(), summary_rows(r)) + "\n## Per seed\n\n" +
-                     table_markdown(seed_header, seed_rows);
+                     ".\n\n" + table_markdown(summary_header(), summary_rows(r)) +
+                     (r.comparisons.empty() ? std::string()
+                                            : "\n## Against baselines\n\nRatio of medians and its 90 % bootstrap interval "
+                                              "(seeds resampled); each baseline against itself shows the spread of chance.\n\n" +
+                                                  table_markdown(comparison_header(), comparison_rows(r))) +
+                     "\n## Per seed\n\n" + table_markdown(seed_header, seed_rows);
+    if (!r.comparisons.empty()) write_table_csv(d + "/baselines.csv", comparison_header(), comparison_rows(r));
     write_text_atomic(d + "/gather.md", md);
     write_text_atomic(d + "/gather.json", to_json(r).dump(1) + "\n");
     HtmlReport html("ppsynth gather: " + std::to_string(r.runs.size()) + " runs");
@@ -351,6 +426,12 @@ void write_gather(const GatherResult& r, const std::string& out, bool force) {
     html.add_image_row(write_plots(r, d));
     html.add_heading("Summary");
     html.add_table(summary_header(), summary_rows(r));
+    if (!r.comparisons.empty()) {
+      html.add_heading("Against baselines");
+      html.add_paragraph("Ratio of each group's median to its baseline's, with a 90 % bootstrap interval (the seeds of both "
+                         "groups resampled). The baseline against itself shows how far two medians of that many seeds part by chance.");
+      html.add_table(comparison_header(), comparison_rows(r));
+    }
     html.add_heading("Per seed");
     html.add_table(seed_header, seed_rows);
     html.write(d + "/index.html");

@@ -27,6 +27,9 @@ struct GatherOptions {
   // one pattern judged against another's exemplar would give numbers that mean nothing.
   std::vector<ReferenceOutput> references;
   double bound = 1.25;  // a seed is within when its value <= bound x the reference's
+  // Group labels to compare the other groups of their exemplar with ("lines": the default
+  // config's group): ratio of medians and its bootstrap interval (below).
+  std::vector<std::string> baselines;
 };
 
 // One finished run and the numbers taken from it.
@@ -44,9 +47,20 @@ struct MetricSummary {
   std::optional<double> reference, ratio, within;  // within: share of seeds <= bound x reference
 };
 
+// A group against the baseline of its exemplar, one metric: the ratio of the medians and a
+// 90 % bootstrap interval for it (the seeds of each group resampled with replacement, 2000
+// times, a fixed generator). The baseline against itself is listed too: its interval is what
+// the ratio of two medians of that many seeds spreads over by chance alone.
+struct BaselineComparison {
+  std::string group_label, baseline_label, scope, metric;
+  size_t n = 0, n_baseline = 0;
+  double ratio = 0, lo = 0, hi = 0;
+};
+
 struct GatherResult {
   std::vector<GatheredRun> runs;
   std::vector<MetricSummary> summaries;  // by group, then scope, then metric
+  std::vector<BaselineComparison> comparisons;  // by baseline, then group, scope, metric
   std::vector<std::string> unfinished;   // run directories left out (not complete)
   GatherOptions options;
 };

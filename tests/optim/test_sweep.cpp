@@ -189,3 +189,46 @@ TEST_CASE("the SLURM job script: one array task per run that is not done", "[swe
   CHECK(slurm_script(dir, m, how).empty());
   CHECK(compress_indices({0, 1, 2, 4, 6, 7}) == "0-2,4,6-7");
 }
+
+TEST_CASE("gather compares groups with a baseline: ratio of medians and a bootstrap interval", "[sweep]") {
+  const auto d = test::scratch_dir("sweep_baseline");
+  const std::string dir = (d / "sw").string();
+  plan_sweep(expand_sweep_spec(tiny_spec({{"method.quick.max_iterations", {1, 3}}}), "spec", ""), dir);
+  const auto m = load_sweep(dir);
+  REQUIRE(m.rows.size() == 6);
+  for (size_t i = 0; i < m.rows.size(); ++i) REQUIRE(run_sweep_task(dir, i, nullptr) == RowState::Done);
+  GatherOptions o;
+  o.baselines = {"lines [method.quick.max_iterations=1]"};
+  const GatherResult g = gather_runs({dir}, o);
+  auto find = [&](const std::string& label, const std::string& metric) {
+    const auto it = std::find_if(g.comparisons.begin(), g.comparisons.end(), [&](const BaselineComparison& c) {
+      return c.group_label == label && c.scope == "all" && c.metric == metric;
+    });
+    REQUIRE(it != g.comparisons.end());
+    return *it;
+  };
+  auto median_of = [&](const std::string& label, const std::string& metric) {
+    const auto it = std::find_if(g.summaries.begin(), g.summaries.end(), [&](const MetricSummary& s) {
+      return s.group_label == label && s.scope == "all" && s.metric == metric;
+    });
+    REQUIRE(it != g.summaries.end());
+    return it->median;
+  };
+  const auto self = find("lines [method.quick.max_iterations=1]", "pcf_mse");
+  CHECK(self.ratio == Approx(1.0));
+  CHECK(self.lo <= 1.0);
+  CHECK(self.hi >= 1.0);
+  CHECK(self.n == 3);
+  const auto other = find("lines [method.quick.max_iterations=3]", "pcf_mse");
+  CHECK(other.ratio == Approx(median_of("lines [method.quick.max_iterations=3]", "pcf_mse") /
+                              median_of("lines [method.quick.max_iterations=1]", "pcf_mse")));
+  CHECK(other.lo <= other.hi);
+  CHECK(other.baseline_label == "lines [method.quick.max_iterations=1]");
+  // Written as a table of its own and a section of the Markdown.
+  write_gather(g, (d / "g").string(), false);
+  CHECK(fs::exists(d / "g" / "baselines.csv"));
+  std::ifstream md(d / "g" / "gather.md");
+  CHECK(std::string(std::istreambuf_iterator<char>(md), {}).find("## Against baselines") != std::string::npos);
+  o.baselines = {"lines"};
+  CHECK_THROWS_WITH(gather_runs({dir}, o), Catch::Contains("--baseline 'lines'") && Catch::Contains("max_iterations=3"));
+}

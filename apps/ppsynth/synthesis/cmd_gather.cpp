@@ -1,4 +1,4 @@
-// `ppsynth gather DIR... [-o OUT] [--reference [EXEMPLAR=]FILE ...] [--bound B] [--force]`
+// `ppsynth gather DIR... [-o OUT] [--reference [EXEMPLAR=]FILE ...] [--bound B] [--baseline GROUP ...] [--force]`
 // Statistics over seeds of every finished run under the directories (sweeps, run directories,
 // folders of them): prints the table; with -o writes gather.csv, gather.md, gather.json,
 // per_seed.csv and index.html (strip plots). The library: optim/sweep/gather.hpp.
@@ -13,7 +13,7 @@ namespace {
 struct Opts {
   std::vector<std::string> dirs;
   std::string out;
-  std::vector<std::string> references;
+  std::vector<std::string> references, baselines;
   double bound = 1.25;
   bool force = false;
 };
@@ -27,8 +27,12 @@ ppsynth::app::RunFn setup(CLI::App& cmd) {
                  "a point file (e.g. the published output), evaluated against its exemplar and compared with the runs "
                  "from that exemplar: FILE, or EXEMPLAR=FILE when the runs come from several exemplars (repeatable)");
   cmd.add_option("--bound", o->bound, "a seed is within when its value <= BOUND x the reference's (default 1.25)");
+  cmd.add_option("--baseline", o->baselines,
+                 "a group label (e.g. the default config's, \"lines\"): every group of its exemplar gets the ratio of its "
+                 "medians to the baseline's with a 90 % bootstrap interval (repeatable)");
   return [o]() -> int {
     ppsynth::GatherOptions opts;
+    opts.baselines = o->baselines;
     for (const auto& r : o->references) opts.references.push_back(ppsynth::parse_reference(r));
     opts.bound = o->bound;
     const auto r = ppsynth::gather_runs(o->dirs, opts);
