@@ -191,7 +191,10 @@ SweepManifest expand_sweep_spec(const nlohmann::json& user, const std::string& s
       group_key["exemplar"] = unseeded["exemplar"];
       group_key["quick"] = quick;
       const std::string group = json_id(group_key);
-      const std::string group_label = src.label + (point.empty() ? "" : " [" + join(point, ", ") + "]");
+      // The preset in the label: a preset's runs and the default's are told apart in gather
+      // and its --baseline even when the preset comes from the spec's "set".
+      const std::string preset = unseeded["preset"].is_string() ? " (preset " + unseeded["preset"].get<std::string>() + ")" : "";
+      const std::string group_label = src.label + preset + (point.empty() ? "" : " [" + join(point, ", ") + "]");
       for (uint64_t seed : seeds) {
         SweepRow row;
         row.config = unseeded;
