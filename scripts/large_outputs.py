@@ -8,7 +8,7 @@ quartiles over the crops), border_fraction beside uniform points', and the 2-D p
 spectrum's peak ratio with its heat map (`ppsynth spectrum`; tile periods and seams show as
 peaks off the ring).
 
-    scripts/large_outputs.py RUN_DIR... [--crops 20] [--spectra DIR] [--markdown]
+    scripts/large_outputs.py RUN_DIR... [--crops 20] [--spectra DIR] [--json FILE]
     scripts/large_outputs.py runs/lines_1k runs/lines_10k sweeps/lines_seeds/runs/* --spectra docs/results/large_outputs
 
 Run directories of sweeps are accepted as they are. Writes nothing but the spectra (into
@@ -46,6 +46,8 @@ def row(run_dir, crops, spectra, force):
     stats = run.get("method_stats", {})
     windows = stats.get("windows", {})
     name = config.get("name") or os.path.basename(run_dir.rstrip("/"))
+    if config.get("preset"):
+        name += f" (preset {config['preset']})"
     r = {
         "run": f"{name} seed {config.get('seed')}",
         "dir": run_dir,
@@ -61,7 +63,8 @@ def row(run_dir, crops, spectra, force):
         r[m] = ev["all"][m + "_quartiles"] if m + "_quartiles" in ev["all"] else [ev["all"][m]] * 3
     if spectra:
         os.makedirs(spectra, exist_ok=True)
-        stem = os.path.join(spectra, f"{name}_s{config.get('seed')}_spectrum")
+        stem = os.path.join(spectra, "_".join(filter(None, [config.get("name") or "run", config.get("preset")]))
+                            + f"_s{config.get('seed')}_spectrum")
         args = ["spectrum", output, "-o", stem + ".png", "--json", stem + ".json", "-q"]
         if force:
             args.append("--force")

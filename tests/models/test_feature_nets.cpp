@@ -8,6 +8,34 @@
 
 using namespace ppsynth;
 
+namespace {
+
+// A loss touching every feature: a generic upstream gradient (a ramp) plus the Gram term the
+// synthesis loss uses.
+torch::Tensor generic_loss(const Features& f) {
+  torch::Tensor loss;
+  for (const auto& fl : f) {
+    auto w = torch::linspace(-1, 1, fl.numel()).view(fl.sizes());
+    auto t = (fl * w).sum() + gram_matrix(fl).pow(2).sum();
+    loss = loss.defined() ? loss + t : t;
+  }
+  return loss;
+}
+
+// The features of x through a net built from `o` on its fast (channels-last) or plain path,
+// and in `grad` the gradient of generic_loss with respect to x.
+Features features_and_input_grad(RandomFilterNetOptions o, bool fast, const torch::Tensor& x, torch::Tensor& grad) {
+  o.fast_cpu = fast;
+  RandomFilterNet net(o);
+  auto xi = x.detach().clone().set_requires_grad(true);
+  auto f = net.forward(xi);
+  generic_loss(f).backward();
+  grad = xi.grad();
+  return f;
+}
+
+}  // namespace
+
 TEST_CASE("RandomFilterNet: the paper's architecture", "[models][net]") {
   RandomFilterNet net(RandomFilterNetOptions{});
   int64_t params = 0;
@@ -60,24 +88,10 @@ TEST_CASE("RandomFilterNet fast CPU path equals the plain path", "[models][net]"
       o.channels = 12;
       o.instance_norm = in;
       o.relu = relu;
-      auto x = (torch::rand({1, 10, 24, 24}) * 3).set_requires_grad(true);
-      auto probe = [&](bool fast, torch::Tensor& grad) {
-        o.fast_cpu = fast;
-        RandomFilterNet net(o);
-        auto xi = x.detach().clone().set_requires_grad(true);
-        auto f = net.forward(xi);
-        torch::Tensor loss;
-        for (size_t l = 0; l < f.size(); ++l) {
-          auto w = torch::linspace(-1, 1, f[l].numel()).view(f[l].sizes());  // a generic upstream gradient
-          auto t = (f[l] * w).sum() + gram_matrix(f[l]).pow(2).sum();
-          loss = loss.defined() ? loss + t : t;
-        }
-        loss.backward();
-        grad = xi.grad();
-        return f;
-      };
+      auto x = torch::rand({1, 10, 24, 24}) * 3;
       torch::Tensor g_fast, g_plain;
-      auto fast = probe(true, g_fast), plain = probe(false, g_plain);
+      auto fast = features_and_input_grad(o, true, x, g_fast);
+      auto plain = features_and_input_grad(o, false, x, g_plain);
       REQUIRE(fast.size() == plain.size());
       CHECK(fast[0].is_contiguous(at::MemoryFormat::ChannelsLast));
       for (size_t l = 0; l < fast.size(); ++l) {
@@ -98,22 +112,9 @@ TEST_CASE("RandomFilterNet bfloat16 fast path equals its plain path within bf16 
   o.channels = 16;
   o.dtype = torch::kBFloat16;
   auto x = torch::rand({1, 10, 32, 32}) * 3;
-  auto probe = [&](bool fast, torch::Tensor& grad) {
-    o.fast_cpu = fast;
-    RandomFilterNet net(o);
-    auto xi = x.clone().set_requires_grad(true);
-    auto f = net.forward(xi);
-    torch::Tensor loss;
-    for (auto& fl : f) {
-      auto t = gram_matrix(fl).pow(2).sum();
-      loss = loss.defined() ? loss + t : t;
-    }
-    loss.backward();
-    grad = xi.grad();
-    return f;
-  };
   torch::Tensor g_fast, g_plain;
-  auto fast = probe(true, g_fast), plain = probe(false, g_plain);
+  auto fast = features_and_input_grad(o, true, x, g_fast);
+  auto plain = features_and_input_grad(o, false, x, g_plain);
   REQUIRE(fast.size() == plain.size());
   CHECK(fast[0].is_contiguous(at::MemoryFormat::ChannelsLast));
   CHECK_FALSE(plain[0].is_contiguous(at::MemoryFormat::ChannelsLast));
