@@ -16,6 +16,14 @@ Domain OutputShape::canvas() const {
   return rectangle && clean_border ? Domain{d.x0 - pad, d.y0 - pad, d.x1 + pad, d.y1 + pad} : d;
 }
 
+Domain OutputShape::moving_area() const { return exemplar_pad ? domain() : canvas(); }
+
+void OutputShape::require_no_exemplar_pad(const std::string& method) const {
+  if (exemplar_pad)
+    throw config_error("output.border", "\"context\" (a frozen exemplar pad) is the Gabor method's; " + method +
+                                            " takes \"clean\" or \"published\"");
+}
+
 std::vector<size_t> OutputShape::class_counts(const PointSet& ex, const Domain& d) const {
   const auto per_class = ex.class_counts();
   std::vector<size_t> n(per_class.size(), 0);
@@ -36,13 +44,14 @@ std::string OutputShape::describe() const {
   if (!rectangle) return "u = " + std::to_string(upscale) + " (unit square, " + std::to_string(upscale * upscale) + " exemplars)";
   char buf[160];
   std::snprintf(buf, sizeof buf, "%g x %g exemplar units, %s border", width, height,
-                clean_border ? "clean" : "published");
+                exemplar_pad ? "exemplar-context" : clean_border ? "clean" : "published");
   return buf;
 }
 
 nlohmann::json output_defaults() {
   // null size and points: the paper's u x u output ("upscale").
-  return {{"size", nullptr}, {"points", nullptr}, {"border", "clean"}, {"pad", "auto"}};
+  // "pad": null (= "auto") so that the config check takes a length as well as "auto".
+  return {{"size", nullptr}, {"points", nullptr}, {"border", "clean"}, {"pad", nullptr}};
 }
 
 OutputShape resolve_output_shape(const nlohmann::json& r, const PointSet& ex) {
@@ -75,11 +84,13 @@ OutputShape resolve_output_shape(const nlohmann::json& r, const PointSet& ex) {
     throw config_error(has_size ? "output.size" : "output.points",
                        "the output must be 0.01 to 10000 exemplar sides wide and high");
   const std::string border = get_string(j, "border", "output");
-  if (border != "clean" && border != "published") throw config_error("output.border", "expected \"clean\" or \"published\"");
-  o.clean_border = border == "clean";
+  if (border != "clean" && border != "context" && border != "published")
+    throw config_error("output.border", "expected \"clean\", \"context\" or \"published\"");
+  o.clean_border = border != "published";
+  o.exemplar_pad = border == "context";
   if (o.clean_border) {
     const auto& p = j["pad"];
-    if (p.is_string() && p.get<std::string>() == "auto") {
+    if (p.is_null() || (p.is_string() && p.get<std::string>() == "auto")) {
       o.pad = 2.0 * mean_nn_distance(ex);
     } else if (p.is_number()) {
       o.pad = p.get<double>();

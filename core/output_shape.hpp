@@ -10,9 +10,12 @@
 //
 // "border" (rectangles only): "clean" synthesises on a canvas padded by "pad" exemplar units
 // on every side and keeps the crop (the points that park on a synthesis border are cut off;
-// counts are then the density's expectation, not exact); "published" synthesises on the
-// rectangle itself and keeps the method's border behaviour. "pad": "auto" = 2 mean
-// nearest-neighbour distances of the exemplar (docs/method.md "Clean borders").
+// counts are then the density's expectation, not exact); "context" pads the same way but
+// fills the pad with the exemplar's own points, tiled and frozen, and moves only the
+// rectangle's points (the Gabor method; exact counts: nothing parks, nothing is cut off);
+// "published" synthesises on the rectangle itself and keeps the method's border behaviour.
+// "pad": null or "auto" = 2 mean nearest-neighbour distances of the exemplar, or a length in
+// exemplar units (docs/large_outputs.md).
 //
 // Torch-free: every method (optim/method.hpp) gets one in its SynthesisContext.
 #include <string>
@@ -29,6 +32,7 @@ struct OutputShape {
   bool rectangle = false;      // true: "size" or "points" given (exemplar units)
   double width = 0, height = 0;  // the output rectangle's size (exemplar units; rectangle only)
   bool clean_border = true;    // rectangle only: synthesise padded, keep the crop
+  bool exemplar_pad = false;   // "context": the pad holds the tiled exemplar, frozen
   double pad = 0;              // resolved pad (exemplar units; 0 when !clean_border)
 
   // The domain of the output: the unit square, or [0, W] x [0, H].
@@ -36,6 +40,10 @@ struct OutputShape {
   // The domain actually synthesised: domain() grown by `pad` on every side (rectangles with
   // clean borders), else domain().
   Domain canvas() const;
+  // Where the synthesis moves points: the rectangle ("context": the pad is frozen), else canvas().
+  Domain moving_area() const;
+  // Methods without a frozen pad call this: "context" is then an error naming output.border.
+  void require_no_exemplar_pad(const std::string& method) const;
   // Output units per exemplar unit: 1/u for the paper's outputs, 1 for rectangles.
   double zoom() const { return rectangle ? 1.0 : 1.0 / upscale; }
   // Points of each exemplar class over `d` (an area in output units) at the exemplar's

@@ -104,6 +104,23 @@ PointSet PointSet::crop(const Domain& window) const {
   return out;
 }
 
+PointSet PointSet::tiled_over(const Domain& d, Vec2 origin) const {
+  const double w = domain_.width(), h = domain_.height();
+  if (!(w > 0 && h > 0)) throw InputError("tiling: the pattern's domain has no area");
+  // One tile more on each side than the cover needs: the crop decides what stays.
+  const int a0 = static_cast<int>(std::floor((d.x0 - origin.x) / w)) - 1, a1 = static_cast<int>(std::ceil((d.x1 - origin.x) / w));
+  const int b0 = static_cast<int>(std::floor((d.y0 - origin.y) / h)) - 1, b1 = static_cast<int>(std::ceil((d.y1 - origin.y) / h));
+  PointSet tiled(d);
+  tiled.set_class_labels(class_labels_);
+  for (auto& n : attr_names_) tiled.add_attribute(n);
+  for (int a = a0; a < a1; ++a)
+    for (int b = b0; b < b1; ++b)
+      for (size_t i = 0; i < size(); ++i)
+        tiled.add(Vec2{pos_[i].x - domain_.x0 + a * w + origin.x, pos_[i].y - domain_.y0 + b * h + origin.y}, cls_[i],
+                  attributes_of(i));
+  return tiled.crop(d);
+}
+
 PointSet PointSet::crop_to_unit(const Domain& window) const { return crop(window).mapped_to(Domain{}); }
 
 std::vector<double> PointSet::flat_xy() const {

@@ -78,6 +78,10 @@ class PointSet {
   // Points inside a sub-rectangle (half-open, but closed on the domain's own far edges, so
   // a point on a shared edge lands in exactly one window), coordinates kept, domain `window`.
   PointSet crop(const Domain& window) const;
+  // Copies of this set's window tiled over `d` (tile (a, b) shifted by (a w, b h) from
+  // `origin`, coordinates relative to the domain's corner), cropped to `d`; classes and
+  // attributes kept. The tiled-copy baseline, and the frozen pad of "border": "context".
+  PointSet tiled_over(const Domain& d, Vec2 origin) const;
   // crop(window) mapped onto the unit square (the quadrant protocol).
   PointSet crop_to_unit(const Domain& window) const;
   // Flat x0,y0,x1,y1,... (for tensors and metrics).

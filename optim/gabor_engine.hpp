@@ -16,7 +16,8 @@
 //
 // Two plans: the paper's u x u unit square read as a torus (optim/stage_plan.hpp), and a
 // rectangle in exemplar units synthesised window by window on a canvas padded for clean
-// borders, then cropped (optim/window_plan.hpp; core/output_shape.hpp).
+// borders, then cropped, or with the pad held by the exemplar's own points, frozen
+// (optim/window_plan.hpp; core/output_shape.hpp).
 #include <chrono>
 #include <memory>
 #include <random>
@@ -72,6 +73,7 @@ class GaborEngine {
   std::unique_ptr<StoppingRule> rule_;
   SynthesisPlan plan_;
   PointSet out_;
+  size_t pad_begin_ = 0;  // out_[pad_begin_..] is the frozen exemplar pad ("border": "context")
   SynthesisState state_;
   std::mt19937_64 jitter_rng_;
   Phases phases_;

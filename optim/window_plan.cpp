@@ -31,7 +31,7 @@ AxisWindows along_axis(double c0, double c1, double side, double margin) {
 
 }  // namespace
 
-WindowLayout window_layout(const Domain& canvas, double max_side, double margin, double reach, const std::string& key) {
+WindowLayout window_layout(const Domain& canvas, const Domain& moving_area, double max_side, double margin, double reach, const std::string& key) {
   WindowLayout w;
   w.canvas = canvas;
   w.side = std::min({max_side, canvas.width(), canvas.height()});
@@ -52,7 +52,8 @@ WindowLayout window_layout(const Domain& canvas, double max_side, double margin,
       s.torus = false;
       s.grid = Domain{ax.grid0[i], ay.grid0[j], ax.grid0[i] + w.side, ay.grid0[j] + w.side};
       s.interior = Domain{ax.interior0[i], ay.interior0[j], ax.interior1[i], ay.interior1[j]};
-      s.movable = Domain{s.interior.x0, s.interior.y0, s.grid.x1, s.grid.y1};
+      s.movable = Domain{std::max(s.interior.x0, moving_area.x0), std::max(s.interior.y0, moving_area.y0),
+                         std::min(s.grid.x1, moving_area.x1), std::min(s.grid.y1, moving_area.y1)};
       s.context = Domain{s.grid.x0 - reach, s.grid.y0 - reach, s.grid.x1 + reach, s.grid.y1 + reach};
       s.index = static_cast<int>(w.windows.size());
       s.count = w.nx * w.ny;

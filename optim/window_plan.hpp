@@ -35,11 +35,12 @@ struct WindowLayout {
   std::vector<StageWindow> windows;  // raster order
 };
 
-// Windows of at most `max_side` on `canvas`. side = min(max_side, canvas width, height);
+// Windows of at most `max_side` on `canvas`; points move only inside `moving_area` (the
+// canvas, or the rectangle when the pad is frozen). side = min(max_side, canvas width, height);
 // one window per axis when it covers the axis, else the fewest whose overlaps are >= 2 margins.
 // Throws InputError naming `key` when the side cannot hold two margins (and more than one
 // window is needed).
-WindowLayout window_layout(const Domain& canvas, double max_side, double margin, double reach, const std::string& key);
+WindowLayout window_layout(const Domain& canvas, const Domain& moving_area, double max_side, double margin, double reach, const std::string& key);
 
 // The stages of every window: the paper's class / sigma stages (class_sigma_plan's labels,
 // with "window i/n, " before them), one group per window and class.

@@ -11,9 +11,9 @@ nlohmann::json presets() {
   return json{
       // Issue 21: the Gabor method's quality in the least time on a CPU. Measured over seeds
       // 95-99 on lines, poisson_n64c2_point, Tree1, Cattles and Fluid1 against the default
-      // (its seeds 95-99 on lines and poisson, seed 95 only on the other three; PCF MSE 1.3-1.9 x
-      // there, not shown within 1.1 x: docs/performance.md, "Time to quality"; lines: 89 s
-      // instead of 745 s idle):
+      // (its seeds 95-99 on lines and poisson, 95-96 on the other three; median PCF MSE 1.54 x
+      // and 1.37 x on the first two, 0.85-1.13 x on the others, none shown within 1.1 x by its
+      // interval: docs/performance.md, "Time to quality"; lines: 89 s instead of 745 s idle):
       //   - bfloat16 network on the channels-last path (oneDNN's bf16 convolutions, AMX
       //     where the CPU has it: 0.18 s instead of 0.97 s per iteration on lines);
       //   - per-sigma grids: the coarse sigmas on coarser grids, the finest on the full one;

@@ -1,5 +1,5 @@
 // Outputs of any size and shape (issue 20): rectangles and point counts in exemplar units,
-// clean borders (a padded canvas, cropped), and synthesis window by window
+// clean borders (a padded canvas, cropped, or its pad held by the frozen exemplar), and synthesis window by window
 // (optim/window_plan.hpp): the layout tiles the canvas, a window run resumes bit for bit, the
 // pattern has no seam at the windows' meeting lines, and the grid (the memory of an
 // iteration) does not grow with the output.
@@ -85,6 +85,10 @@ TEST_CASE("output shapes: the paper's square, rectangles and point counts, with 
   CHECK(strip.pad == Approx(2 * mean_nn_distance(ex)));
   CHECK(strip.canvas().x0 == Approx(-strip.pad));
 
+  // A pad given as a length passes the config check (the default is null = "auto").
+  CHECK(shape_of(json{{"size", {4, 1}}, {"pad", 0.5}}, ex).pad == 0.5);
+  CHECK(shape_of(json{{"size", {4, 1}}, {"pad", "auto"}}, ex).pad == Approx(strip.pad));
+
   const OutputShape counted = shape_of(json{{"points", 3400}, {"border", "published"}}, ex);
   CHECK(counted.width == Approx(10));
   CHECK(counted.height == Approx(10));
@@ -92,7 +96,7 @@ TEST_CASE("output shapes: the paper's square, rectangles and point counts, with 
   CHECK(counted.expected_points(ex) == 3400);
 
   for (const json& bad : {json{{"size", {4}}}, json{{"size", {4, 1}}, {"points", 10}}, json{{"points", 0}},
-                          json{{"size", {0.001, 1}}}, json{{"size", {2, 2}}, {"border", "soft"}}, json{{"size", {2, 2}}, {"pad", -1}}})
+                          json{{"size", {0.001, 1}}}, json{{"size", {2, 2}}, {"border", "soft"}}, json{{"size", {2, 2}}, {"border", "crop"}}, json{{"size", {2, 2}}, {"pad", -1}}, json{{"size", {2, 2}}, {"pad", "wide"}}})
     CHECK_THROWS_WITH(shape_of(bad, ex), Catch::Contains("output"));
   CHECK_THROWS_WITH(resolve_run_config(json{{"output", {{"sizes", {1, 1}}}}}, {}), Catch::Contains("output.sizes"));
 }
@@ -100,7 +104,7 @@ TEST_CASE("output shapes: the paper's square, rectangles and point counts, with 
 TEST_CASE("window layout: interiors tile the canvas, overlaps hold two margins, the movable part stays in the grid",
           "[optim][windows]") {
   const Domain canvas{-0.5, -0.5, 9.5, 4.5};
-  const WindowLayout w = window_layout(canvas, 3.0, 0.5, 0.6, "method.window");
+  const WindowLayout w = window_layout(canvas, canvas, 3.0, 0.5, 0.6, "method.window");
   CHECK(w.side == 3.0);
   CHECK(w.nx == 5);  // (10 - 3) / (3 - 1) = 3.5 -> 4 steps
   CHECK(w.ny == 2);  // (5 - 3) / (3 - 1) = 1 step
@@ -127,8 +131,8 @@ TEST_CASE("window layout: interiors tile the canvas, overlaps hold two margins, 
       const double ox = std::min(p.x1, q.x1) - std::max(p.x0, q.x0), oy = std::min(p.y1, q.y1) - std::max(p.y0, q.y0);
       CHECK_FALSE((ox > 1e-9 && oy > 1e-9));
     }
-  CHECK(window_layout(Domain{0, 0, 2, 2}, 3.0, 0.5, 0.6, "k").windows.size() == 1);
-  CHECK_THROWS_WITH(window_layout(canvas, 1.0, 0.5, 0.6, "method.window"), Catch::Contains("method.window"));
+  CHECK(window_layout(Domain{0, 0, 2, 2}, Domain{0, 0, 2, 2}, 3.0, 0.5, 0.6, "k").windows.size() == 1);
+  CHECK_THROWS_WITH(window_layout(canvas, canvas, 1.0, 0.5, 0.6, "method.window"), Catch::Contains("method.window"));
 }
 
 TEST_CASE("a rectangle output: its domain, counts near the density's, classes and radii kept", "[optim][windows]") {
@@ -157,13 +161,51 @@ TEST_CASE("a rectangle output: its domain, counts near the density's, classes an
   CHECK(counted.output.size() == 200);
 }
 
+TEST_CASE("the exemplar-context border: exact counts inside the rectangle, the pad frozen and left out", "[optim][windows]") {
+  const PointSet ex = exemplar(2, true);
+  const OutputShape shape = shape_of(json{{"size", {3, 1.5}}, {"border", "context"}}, ex);
+  REQUIRE(shape.exemplar_pad);
+  REQUIRE(shape.pad > 0);
+  CHECK(shape.moving_area().x0 == 0);
+  CHECK(shape.moving_area().x1 == 3);
+  CHECK(shape.canvas().x0 == Approx(-shape.pad));
+  const Run run = synthesize(ex, shape, 24, 3);  // 2 x 1 windows and more
+  const PointSet& out = run.output;
+  // Nothing is cut off: every class has its density's count exactly, as "published" has.
+  CHECK(out.class_counts() == shape.class_counts(ex, shape.domain()));
+  for (size_t i = 0; i < out.size(); ++i) CHECK(shape.domain().contains(out[i], 0.0));
+  // The pad is the exemplar tiled over the ring: its area's worth of points, not in the output.
+  const double ring = shape.canvas().area() - shape.domain().area();
+  const double pad_points = run.stats["frozen_pad_points"].get<double>();
+  CHECK(pad_points == Approx(ring * static_cast<double>(ex.size())).epsilon(0.25));
+  CHECK(run.stats["canvas_points"].get<double>() == Approx(static_cast<double>(out.size()) + pad_points));
+
+  // The tiling under it: copies of the exemplar, classes and radii kept, at its density.
+  const Domain big{-0.5, -0.5, 2.5, 1.5};
+  const PointSet tiles = ex.tiled_over(big, Vec2{0.5, 0.5});
+  CHECK(tiles.size() == 6 * ex.size());
+  CHECK(tiles.class_counts() == std::vector<size_t>{6 * 25, 6 * 9});
+  CHECK(tiles.attribute_index("radius"));
+  for (size_t i = 0; i < tiles.size(); ++i) CHECK(big.contains(tiles[i], 0.0));
+
+  // Methods without a frozen pad refuse it, naming the key.
+  for (const char* m : {"roveri2015", "pcf2017"}) {
+    auto method = MethodRegistry::instance().create(json{{"type", m}}, "method");
+    SynthesisContext ctx;
+    ctx.output = shape;
+    CHECK_THROWS_WITH(method->synthesize(ex, ctx), Catch::Contains("output.border"));
+  }
+}
+
 TEST_CASE("a window run resumed from any checkpoint ends bit for bit as the uninterrupted one", "[optim][windows][checkpoint]") {
   const PointSet ex = exemplar(2, true);
-  const OutputShape shape = shape_of(json{{"size", {2.5, 1.2}}}, ex);
+  const std::string border = GENERATE(as<std::string>{}, "clean", "context");
+  const OutputShape shape = shape_of(json{{"size", {2.5, 1.2}}, {"border", border}}, ex);
   const Run whole = synthesize(ex, shape, 20, 3, nullptr, true);
   const size_t n = whole.checkpoints.size();
   REQUIRE(n > 10);
   for (size_t i : {size_t{1}, n / 3, n / 2, n - 2}) {
+    INFO("border " << border);
     const SynthesisState st = deserialize_state(whole.checkpoints[i], "test");
     INFO("checkpoint " << i << ": stage " << st.stage << ", iteration " << st.iteration);
     const Run resumed = synthesize(ex, shape, 20, 3, &whole.checkpoints[i], true);
@@ -192,7 +234,7 @@ TEST_CASE("no seam: where windows meet, the pattern's density and spacing are th
   REQUIRE(stats["windows"]["nx"].get<int>() >= 3);
   // the meeting lines: half-way in each overlap (window_plan.cpp); recomputed from the layout
   const WindowLayout layout =
-      window_layout(ctx.output.canvas(), stats["windows"]["side"], stats["windows"]["margin"], 0, "k");
+      window_layout(ctx.output.canvas(), ctx.output.moving_area(), stats["windows"]["side"], stats["windows"]["margin"], 0, "k");
   std::vector<double> seams;
   for (int i = 0; i + 1 < layout.nx; ++i) seams.push_back(layout.windows[i].interior.x1);
   std::vector<size_t> near, far;

@@ -73,20 +73,9 @@ class TiledCopyMethod : public SynthesisMethod {
     if (!(w > 0 && h > 0)) throw InputError("tiled_copy: the exemplar's domain has no area");
     if (random_) off = {off.x * w, off.y * h};
     const double sx = off.x - w * std::floor(off.x / w), sy = off.y - h * std::floor(off.y / h);
-    // Tiles from one left of the origin (the shift leaves a strip there) to past the far edge.
-    const int na = static_cast<int>(std::ceil((D.x1 - sx) / w)), nb = static_cast<int>(std::ceil((D.y1 - sy) / h));
-    PointSet tiled(D);
-    tiled.set_class_labels(exemplar.class_labels());
-    for (auto& n : exemplar.attribute_names()) tiled.add_attribute(n);
-    ctx.start(tiled);
-    for (int a = -1; a < na; ++a)
-      for (int b = -1; b < nb; ++b)
-        for (size_t i = 0; i < exemplar.size(); ++i)
-          tiled.add(Vec2{exemplar[i].x - E.x0 + a * w + sx, exemplar[i].y - E.y0 + b * h + sy}, exemplar.cls(i),
-                    exemplar.attributes_of(i));
-    // crop: half-open at the near edges, closed at the far ones, so a point on a tile edge
-    // is kept once.
-    return tiled.crop(D);
+    PointSet tiled = exemplar.tiled_over(D, Vec2{sx, sy});
+    ctx.start(tiled.subset({}));  // the start of a copy: nothing placed yet
+    return tiled;
   }
 
   Vec2 offset_{0, 0};
