@@ -44,7 +44,7 @@ std::string OutputShape::describe() const {
   if (!rectangle) return "u = " + std::to_string(upscale) + " (unit square, " + std::to_string(upscale * upscale) + " exemplars)";
   char buf[160];
   std::snprintf(buf, sizeof buf, "%g x %g exemplar units, %s border", width, height,
-                exemplar_pad ? "exemplar-context" : clean_border ? "clean" : "published");
+                exemplar_pad ? "context" : clean_border ? "clean" : "published");
   return buf;
 }
 

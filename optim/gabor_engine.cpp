@@ -87,9 +87,10 @@ PointSet initial_output(const PointSet& ex, const SynthesisContext& ctx, const I
 // "border": "context": the pad around the rectangle holds copies of the exemplar, tiled from
 // the rectangle's corner, appended after the points to synthesise. They never move (final
 // from the start): the rectangle's points meet a pattern of the exemplar's own statistics
-// at the rectangle's edge instead of an empty border to fill, so nothing parks there and the
-// density inside stays the exemplar's (a padded canvas without them loses 5-10 % of Tree1's
-// points to its border).
+// at the rectangle's edge instead of an empty border to fill, and the count is exact (a
+// cropped padded canvas loses 5-10 % of Tree1's points to its border). Measured, it helps
+// only exemplars like lines; on poisson, Tree1 and lemon it is worse than the crop
+// (docs/large_outputs.md, "Context borders"), which is why "clean" stays the default.
 // The tiles are centred on the rectangle's corner (shifted by half a tile): a pad narrower
 // than half the exemplar then shows the exemplar's inside, not the seam of two copies, where
 // an exemplar whose points keep off its own border (lines) leaves an empty strip that the
