@@ -1,5 +1,6 @@
 #include "optim/gabor_engine.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -110,6 +111,26 @@ std::vector<size_t> concat(const std::vector<size_t>& a, const std::vector<size_
 
 bool inside(const Domain& d, const Vec2& p) { return p.x >= d.x0 && p.x <= d.x1 && p.y >= d.y0 && p.y <= d.y1; }
 
+// Every layer cut to the part {x0, y0, x1, y1} of the grid (fractions; x along columns, y
+// along rows, as the maps lie): the losses then measure that part only. Gram matrices
+// average over the positions they get and the deep correlation normalises by its overlap,
+// so a part is measured as a smaller grid would be.
+Features measured_part(const Features& f, const std::vector<double>& part) {
+  if (part.empty()) return f;
+  Features cut;
+  for (const auto& F : f) {
+    const int64_t H = F.size(2), W = F.size(3);
+    auto range = [](double a, double b, int64_t n) {
+      const int64_t i0 = std::clamp<int64_t>(std::llround(a * n), 0, n - 1);
+      return std::make_pair(i0, std::clamp<int64_t>(std::llround(b * n), i0 + 1, n));
+    };
+    const auto [c0, c1] = range(part[0], part[2], W);
+    const auto [r0, r1] = range(part[1], part[3], H);
+    cut.push_back(F.slice(3, c0, c1).slice(2, r0, r1));
+  }
+  return cut;
+}
+
 }  // namespace
 
 GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const SynthesisContext& ctx)
@@ -164,6 +185,11 @@ void GaborEngine::restore(const std::string& bytes) {
       state_.final_points.size() != (shape_.rectangle ? out_.size() : 0))
     throw InputError("the checkpoint does not belong to this synthesis (other exemplar, config or plan)");
   for (size_t i = 0; i < out_.size(); ++i) out_[i] = state_.positions[i];
+  // The time and phases of the processes before this one (0 in checkpoints without them).
+  const json& ph = state_.phase_seconds;
+  seconds_before_ = ph.value("wall", 0.0);
+  phases_ = Phases{ph.value("targets", 0.0), ph.value("maps_forward", 0.0), ph.value("net_forward", 0.0),
+                   ph.value("loss_forward", 0.0), ph.value("backward", 0.0), ph.value("optimizer_step", 0.0)};
   std::istringstream rng(state_.rng);
   rng >> jitter_rng_;
   if (!rng) throw InputError("checkpoint: unreadable generator state");
@@ -184,8 +210,23 @@ void GaborEngine::restore(const std::string& bytes) {
   ctx_.resumed(earlier);
 }
 
+PointSet GaborEngine::synthesised() const {
+  std::vector<size_t> idx(pad_begin_);
+  std::iota(idx.begin(), idx.end(), size_t{0});
+  PointSet p = out_.subset(idx);
+  p.set_domain(shape_.moving_area());
+  return p;
+}
+
+json GaborEngine::phase_seconds() const {
+  return {{"targets", phases_.targets}, {"maps_forward", phases_.maps}, {"net_forward", phases_.net},
+          {"loss_forward", phases_.loss}, {"backward", phases_.backward}, {"optimizer_step", phases_.step}};
+}
+
 PointSet GaborEngine::run() {
-  ctx_.start(out_);
+  run_start_ = Clock::now();
+  // The start as `--init` takes it back: a frozen exemplar pad is not part of it.
+  ctx_.start(shape_.exemplar_pad ? synthesised() : out_);
   if (ctx_.resume_state) restore(*ctx_.resume_state);
   last_checkpoint_ = Clock::now();
   for (; state_.stage < static_cast<int>(plan_.size());) {
@@ -202,16 +243,14 @@ PointSet GaborEngine::run() {
     save_checkpoint();  // every stage boundary, the last one included
   }
   stats_["stages"] = state_.stages;
-  stats_["phase_seconds"] = {{"targets", phases_.targets}, {"maps_forward", phases_.maps}, {"net_forward", phases_.net},
-                             {"loss_forward", phases_.loss}, {"backward", phases_.backward}, {"optimizer_step", phases_.step}};
+  stats_["phase_seconds"] = phase_seconds();
+  stats_["seconds_before_resume"] = seconds_before_;
   stats_["resolved"] = pipe_->resolved();
   if (ctx_.stats) *ctx_.stats = stats_;
   if (!shape_.rectangle) return out_;
   // "context": the synthesised points, all inside the rectangle (the pad is the exemplar's).
   // "clean": the canvas's border band (the pad) holds the points that parked on its border.
-  std::vector<size_t> synthesised(pad_begin_);
-  std::iota(synthesised.begin(), synthesised.end(), size_t{0});
-  PointSet out = shape_.exemplar_pad ? out_.subset(synthesised) : out_.crop(shape_.domain());
+  PointSet out = shape_.exemplar_pad ? synthesised() : out_.crop(shape_.domain());
   out.set_domain(shape_.domain());
   return out;
 }
@@ -242,6 +281,13 @@ void GaborEngine::enter_group(const Stage& stage) {
     const auto& m = window_.movable;
     lo_ = torch::tensor({{(m.x0 - g.x0) / g.width(), (m.y0 - g.y0) / g.height()}}, torch::kFloat64).to(state_.moving.scalar_type());
     hi_ = torch::tensor({{(m.x1 - g.x0) / g.width(), (m.y1 - g.y0) / g.height()}}, torch::kFloat64).to(state_.moving.scalar_type());
+  }
+  measured_.clear();
+  if (!window_.torus && s_.statistics_in_output) {
+    const Domain& g = window_.grid;
+    const Domain o = shape_.domain();
+    measured_ = {(std::max(g.x0, o.x0) - g.x0) / g.width(), (std::max(g.y0, o.y0) - g.y0) / g.height(),
+                 (std::min(g.x1, o.x1) - g.x0) / g.width(), (std::min(g.y1, o.y1) - g.y0) / g.height()};
   }
   for (auto& t : terms_) t.term->begin_class(ClassStage{exemplar_, out_, moving_idx_, frozen_idx_, s_.upscale});
   for (auto& t : map_terms_) t.term->begin_group(stage, out_);
@@ -310,6 +356,9 @@ void GaborEngine::enter_stage(const Stage& stage) {
   optimizer_ = OptimizerRegistry::instance().create(p_["optimizer"], "method.optimizer", state_.moving, stage.sigma_index);
   if (!state_.optimizer.empty()) optimizer_->load_state(state_.optimizer);  // resumed inside the stage
   stage_start_ = Clock::now();
+  // Resumed inside the stage: its clock goes on from the last iteration recorded before.
+  if (state_.iteration > 0 && !state_.history.empty() && state_.history.back().stage == state_.stage)
+    stage_start_ -= std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(state_.history.back().seconds));
   if (state_.iteration == 0) ctx_.stage_begin(event(stage));
 }
 
@@ -335,7 +384,7 @@ torch::Tensor GaborEngine::evaluate(const Stage& stage) {
   auto pts = frozen_.size(0) > 0 ? torch::cat({frozen_, mv}) : mv;
   auto maps = pipe_->output_maps(pts, out_weights_, stage.sigma, jitter);
   const auto tb = Clock::now();
-  auto feats = pipe_->features(maps);
+  auto feats = measured_part(pipe_->features(maps), measured_);
   const auto tc = Clock::now();
   auto l = pipe_->loss(feats);
   for (auto& t : map_terms_) {  // beside the paper's (optim/map_term.hpp); their maps and nets count as loss time
@@ -440,6 +489,9 @@ void GaborEngine::save_checkpoint() {
   std::ostringstream rng;
   rng << jitter_rng_;
   state_.rng = rng.str();
+  // Wall time so far over every process of the run: a resumed run reports its whole time.
+  state_.phase_seconds = phase_seconds();
+  state_.phase_seconds["wall"] = seconds_before_ + since(run_start_);
   ctx_.save_checkpoint(serialize_state(state_));
 }
 

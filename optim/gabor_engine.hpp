@@ -59,6 +59,8 @@ class GaborEngine {
   void finish_stage(const Stage& stage);
   void save_checkpoint();
   PointSet points_in_play() const;  // the stage's moving and frozen points on its domain
+  json phase_seconds() const;       // phases_ by name (run.json's "phase_seconds")
+  PointSet synthesised() const;     // out_ without a frozen exemplar pad, on the area where points move
   ProgressEvent event(const Stage& stage) const;
 
   json p_;
@@ -85,8 +87,12 @@ class GaborEngine {
   std::vector<size_t> moving_idx_, frozen_idx_;
   torch::Tensor frozen_, out_weights_;
   torch::Tensor lo_, hi_;                // the window's movable rectangle, local coordinates (1 x 2)
+  // method.window.statistics = "output": the grid's part inside the output rectangle, as
+  // fractions of the grid {x0, y0, x1, y1}; empty: the losses measure the whole grid.
+  std::vector<double> measured_;
   std::unique_ptr<PositionOptimizer> optimizer_;
-  Clock::time_point stage_start_, last_checkpoint_;
+  Clock::time_point stage_start_, last_checkpoint_, run_start_;
+  double seconds_before_ = 0;  // wall time of the processes before a resume (from the checkpoint)
 };
 
 }  // namespace ppsynth

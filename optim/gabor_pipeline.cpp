@@ -46,8 +46,12 @@ json gabor_defaults() {
       // Rectangle outputs ("output": {"size"} or {"points"}) run window by window
       // (optim/window_plan.hpp): windows of at most `pixels` grid positions across; a margin
       // of 3 sigma_max + `receptive_field` positions (the network's half-width) on each side
-      // of an interior (null or "auto"), or a length in exemplar units.
-      {"window", {{"pixels", 384}, {"margin", nullptr}, {"receptive_field", 16}}},
+      // of an interior (null or "auto"), or a length in exemplar units. `statistics`: where
+      // the losses measure the output's features: "grid" (the whole window grid, as the paper
+      // measures its square) or "output" (the grid's part inside the output rectangle: the
+      // pad of a clean or context border is seen by the maps but not measured, so its outer
+      // edge, where plane maps lose a point's influence, asks nothing of the rectangle).
+      {"window", {{"pixels", 384}, {"margin", nullptr}, {"receptive_field", 16}, {"statistics", "grid"}}},
       // --quick: every knob that sets the cost, shrunk (tests and smoke runs).
       {"quick", {{"res", 24}, {"channels", 8}, {"max_iterations", 4}, {"num_sigmas", 2}}},
   };
@@ -144,6 +148,10 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
       s.window_margin = m.get<double>();
     else
       throw config_error("method.window.margin", "expected null (\"auto\") or a length >= 0 in exemplar units");
+    const json& st = p["window"]["statistics"];
+    if (!st.is_string() || (st != "grid" && st != "output"))
+      throw config_error("method.window.statistics", "expected \"grid\" or \"output\", got " + st.dump());
+    s.statistics_in_output = st == "output";
   }
   {  // one iteration keeps the output grid's maps and every layer's activations and gradients
     const double cells = std::pow(static_cast<double>(s.out_res), 2);

@@ -35,6 +35,7 @@ struct GaborSettings {
   int out_res = 0;
   double out_scale = 0;
   double window_margin = 0;     // rectangles: exemplar units reserved on each side of a window's interior
+  bool statistics_in_output = false;  // rectangles: the losses measure the grid's part inside the output only
   // The grid of each sigma stage (coarse -> fine): `res` and `out_res` at every stage, or with
   // method.grid.per_sigma coarser grids at the coarser sigmas, keeping the finest stage's
   // grid positions per sigma (the Gabor frequencies scale with 1/sigma, so each stage's

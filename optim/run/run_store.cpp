@@ -121,7 +121,9 @@ void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const
     write_text_atomic(dir + "/metrics.json", o.metrics.dump(2) + "\n");
     plot_pcf(dir + "/pcf.png", o.metrics);
   }
-  o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  // A resumed run's total includes the processes before (up to their last checkpoint).
+  o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() +
+              (o.stats.is_object() ? o.stats.value("seconds_before_resume", 0.0) : 0.0);
   nlohmann::json run = {{"name", name},
                         {"seed", r["seed"]},
                         {"revision", revision()},

@@ -53,7 +53,9 @@ SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec,
   }
   const auto t0 = Clock::now();
   r.output = method->synthesize(exemplar, ctx);
-  r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  // A resumed run's time includes its earlier processes' (up to their last checkpoint).
+  r.seconds = std::chrono::duration<double>(Clock::now() - t0).count() +
+              (r.stats.is_object() ? r.stats.value("seconds_before_resume", 0.0) : 0.0);
   r.initialization = std::move(initial.initial);
   r.stages = stage_results(r.stats);
   if (spec["evaluate"].get<bool>()) r.metrics = evaluate(exemplar, r.output);

@@ -34,7 +34,7 @@ struct SynthesisResult {
   std::vector<StageResult> stages;   // per stage: iterations, final loss, wall time
   nlohmann::json stats;              // all the method measured (grid, sigmas, phase times, ...)
   nlohmann::json metrics;            // evaluate(exemplar, output) when the spec asks, else null
-  double seconds = 0;                // wall time of the synthesis (metrics excluded)
+  double seconds = 0;                // wall time of the synthesis (metrics excluded), over every process of a resumed run
 };
 
 struct SynthesisOptions {

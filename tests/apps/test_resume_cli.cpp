@@ -71,6 +71,15 @@ TEST_CASE("SIGINT mid-stage: exit 130, the resume command printed, --resume fini
   REQUIRE(run_ppsynth("synthesize -q --resume " + run).status == 0);
   CHECK(ppsynth::run_dir_state(run) == ppsynth::RunDirState::Complete);
   check_same_run(d / "ref", run);
+  // Its run.json times the whole run: the interrupted process's time (from its checkpoint)
+  // and this one's; the uninterrupted run had nothing before.
+  const auto info = nlohmann::json::parse(ppsynth::read_file_text(fs::path(run) / "run.json"));
+  const double before = info["method_stats"].value("seconds_before_resume", -1.0);
+  CHECK(before > 0);
+  CHECK(info["synthesis_seconds"].get<double>() >= before);
+  CHECK(info["total_seconds"].get<double>() >= info["synthesis_seconds"].get<double>());
+  const auto ref = nlohmann::json::parse(ppsynth::read_file_text(d / "ref" / "run.json"));
+  CHECK(ref["method_stats"].value("seconds_before_resume", -1.0) == 0);
   // A finished run has nothing to resume.
   auto done = run_ppsynth("synthesize --resume " + run);
   CHECK(done.status == 2);

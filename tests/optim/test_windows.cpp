@@ -39,6 +39,7 @@ OutputShape shape_of(const json& output, const PointSet& ex) {
 }
 
 struct Run {
+  PointSet start;  // the initialisation as the run reports it (init.txt, `--init`)
   PointSet output;
   std::vector<std::string> checkpoints;
   json stats;
@@ -47,10 +48,10 @@ struct Run {
 // A tiny Gabor run on `shape`: 16 grid positions per exemplar unit, windows of `pixels`,
 // margins of 0.3 exemplar units (the automatic margin, 3 sigma_max, would need larger windows).
 Run synthesize(const PointSet& ex, const OutputShape& shape, int pixels, int iterations, const std::string* resume = nullptr,
-               bool checkpoints = false) {
+               bool checkpoints = false, const std::string& statistics = "grid") {
   auto method = MethodRegistry::instance().create(
       json{{"type", "gabor"},
-           {"window", {{"pixels", pixels}, {"margin", 0.3}}},
+           {"window", {{"pixels", pixels}, {"margin", 0.3}, {"statistics", statistics}}},
            {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", iterations}, {"num_sigmas", 2}}}},
       "method");
   Run run;
@@ -64,6 +65,12 @@ Run synthesize(const PointSet& ex, const OutputShape& shape, int pixels, int ite
     ctx.save_checkpoint = [&](const std::string& bytes) { run.checkpoints.push_back(bytes); };
   }
   ctx.resume_state = resume;
+  struct : SynthesisObserver {
+    PointSet* start = nullptr;
+    void on_start(const PointSet& p) override { *start = p; }
+  } initial;
+  initial.start = &run.start;
+  ctx.observers.push_back(&initial);
   run.output = method->synthesize(ex, ctx);
   return run;
 }
@@ -179,6 +186,10 @@ TEST_CASE("the exemplar-context border: exact counts inside the rectangle, the p
   const double pad_points = run.stats["frozen_pad_points"].get<double>();
   CHECK(pad_points == Approx(ring * static_cast<double>(ex.size())).epsilon(0.25));
   CHECK(run.stats["canvas_points"].get<double>() == Approx(static_cast<double>(out.size()) + pad_points));
+  // The initialisation it reports is the synthesised points' start (what `--init` takes
+  // back), without the pad.
+  CHECK(run.start.class_counts() == out.class_counts());
+  for (size_t i = 0; i < run.start.size(); ++i) CHECK(shape.domain().contains(run.start[i], 0.0));
 
   // The tiling under it: copies of the exemplar, classes and radii kept, at its density.
   const Domain big{-0.5, -0.5, 2.5, 1.5};
@@ -195,6 +206,26 @@ TEST_CASE("the exemplar-context border: exact counts inside the rectangle, the p
     ctx.output = shape;
     CHECK_THROWS_WITH(method->synthesize(ex, ctx), Catch::Contains("output.border"));
   }
+}
+
+TEST_CASE("window statistics \"output\": the losses measure the grid's part inside the output only", "[optim][windows]") {
+  const PointSet ex = exemplar(2, true);
+  // Where every window grid lies inside the output (a published border: the canvas is the
+  // output), the measured part is the whole grid: the same run, bit for bit.
+  const OutputShape exact = shape_of(json{{"size", {2.5, 1.2}}, {"border", "published"}}, ex);
+  const Run grid = synthesize(ex, exact, 20, 3);
+  CHECK(grid.stats["windows"]["nx"].get<int>() >= 2);
+  CHECK(same_bits(synthesize(ex, exact, 20, 3, nullptr, false, "output").output, grid.output));
+  // With a pad (clean or context) the pad is seen by the maps but not measured: another run.
+  for (const char* border : {"clean", "context"}) {
+    INFO("border " << border);
+    const OutputShape padded = shape_of(json{{"size", {2.5, 1.2}}, {"border", border}}, ex);
+    const Run whole = synthesize(ex, padded, 20, 3);
+    const Run inside = synthesize(ex, padded, 20, 3, nullptr, false, "output");
+    CHECK_FALSE(same_bits(inside.output, whole.output));
+    for (size_t i = 0; i < inside.output.size(); ++i) CHECK(padded.domain().contains(inside.output[i], 0.0));
+  }
+  CHECK_THROWS_WITH(synthesize(ex, exact, 20, 3, nullptr, false, "pad"), Catch::Contains("method.window.statistics"));
 }
 
 TEST_CASE("a window run resumed from any checkpoint ends bit for bit as the uninterrupted one", "[optim][windows][checkpoint]") {
