@@ -7,6 +7,7 @@
 #include "core/atomic_file.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/log.hpp"
+#include "core/memory_budget.hpp"
 #include "core/render/plot_curves.hpp"
 #include "core/render/plot_points.hpp"
 
@@ -41,8 +42,10 @@ void ProgressLog::on_stage_end(const ProgressEvent& e, const PointSet&) {
   ++windows_done_here_;  // the ETA assumes the windows still to come cost what these did
   const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count();
   const int left = e.windows - e.window - 1;
-  spdlog::info("[{}] canvas: {}/{} windows done ({:.0f} %), {} in this process, ETA {}", name_, e.window + 1, e.windows,
-               100.0 * (e.window + 1) / e.windows, fmt_duration(spent), fmt_duration(spent / windows_done_here_ * left));
+  // The peak memory so far: a window run's should stay that of one window (docs/large_outputs.md).
+  spdlog::info("[{}] canvas: {}/{} windows done ({:.0f} %), {} in this process, ETA {}, peak {:.0f} MiB", name_, e.window + 1,
+               e.windows, 100.0 * (e.window + 1) / e.windows, fmt_duration(spent), fmt_duration(spent / windows_done_here_ * left),
+               peak_resident_mib());
 }
 
 void ProgressLog::on_resume(const std::vector<ProgressEvent>& earlier) {
