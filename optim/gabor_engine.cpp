@@ -111,6 +111,10 @@ std::vector<size_t> concat(const std::vector<size_t>& a, const std::vector<size_
 
 bool inside(const Domain& d, const Vec2& p) { return p.x >= d.x0 && p.x <= d.x1 && p.y >= d.y0 && p.y <= d.y1; }
 
+Domain intersection(const Domain& a, const Domain& b) {
+  return Domain{std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
+}
+
 // Every layer cut to the part {x0, y0, x1, y1} of the grid (fractions; x along columns, y
 // along rows, as the maps lie): the losses then measure that part only. Gram matrices
 // average over the positions they get and the deep correlation normalises by its overlap,
@@ -285,9 +289,8 @@ void GaborEngine::enter_group(const Stage& stage) {
   measured_.clear();
   if (!window_.torus && s_.statistics_in_output) {
     const Domain& g = window_.grid;
-    const Domain o = shape_.domain();
-    measured_ = {(std::max(g.x0, o.x0) - g.x0) / g.width(), (std::max(g.y0, o.y0) - g.y0) / g.height(),
-                 (std::min(g.x1, o.x1) - g.x0) / g.width(), (std::min(g.y1, o.y1) - g.y0) / g.height()};
+    const Domain o = intersection(g, shape_.domain());
+    measured_ = {(o.x0 - g.x0) / g.width(), (o.y0 - g.y0) / g.height(), (o.x1 - g.x0) / g.width(), (o.y1 - g.y0) / g.height()};
   }
   for (auto& t : terms_) t.term->begin_class(ClassStage{exemplar_, out_, moving_idx_, frozen_idx_, s_.upscale});
   for (auto& t : map_terms_) t.term->begin_group(stage, out_);
@@ -471,9 +474,7 @@ PointSet GaborEngine::points_in_play() const {
   const Domain& g = window_.grid;
   // A window's pattern is its grid's part of where points move: a frozen exemplar pad
   // ("context") is the exemplar's, and counting it would hide how the moving points change.
-  const Domain m = shape_.moving_area();
-  PointSet ps(window_.torus ? Domain{}
-                            : Domain{std::max(g.x0, m.x0), std::max(g.y0, m.y0), std::min(g.x1, m.x1), std::min(g.y1, m.y1)});
+  PointSet ps(window_.torus ? Domain{} : intersection(g, shape_.moving_area()));
   for (int64_t i = 0; i < local.size(0); ++i) {
     const Vec2 p = window_.torus ? Vec2{a[i][0], a[i][1]} : Vec2{g.x0 + g.width() * a[i][0], g.y0 + g.height() * a[i][1]};
     if (inside(ps.domain(), p)) ps.add(p);  // a window's frozen context beyond its grid is not its pattern
