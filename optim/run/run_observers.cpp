@@ -102,10 +102,12 @@ void SnapshotWriter::on_stage_end(const ProgressEvent& e, const PointSet& curren
   if (!enabled_ || !e.window_ends) return;  // large outputs: one snapshot per window
   char base[64];
   std::snprintf(base, sizeof base, "/stage%02d", e.stage_index + 1);
-  write_points(dir_ + base + ".txt", current, Format::Plain);
+  // A window of a large output: its grid's part (the window's points and what they saw).
+  const PointSet shown = e.windows > 1 ? current.crop(e.window_grid) : current;
+  write_points(dir_ + base + ".txt", shown, Format::Plain);
   PointStyle st;
   st.title = e.stage;
-  plot_points(dir_ + base + ".png", current, st, 400);
+  plot_points(dir_ + base + ".png", shown, st, 400);
   pngs_.push_back(dir_ + base + ".png");
   titles_.push_back(e.stage);
 }

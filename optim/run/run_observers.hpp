@@ -4,7 +4,7 @@
 //                     outputs a line per window: windows done / total, canvas ETA.
 //   LossRecorder    : every iteration's loss, per stage, for the CSV and the curve plot.
 //   SnapshotWriter  : the initialisation and the output after every stage (paper Fig. 4), or
-//                     after every window of a large output.
+//                     the window's grid after every window of a large output.
 #include <chrono>
 #include <string>
 #include <vector>
