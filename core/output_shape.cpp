@@ -18,10 +18,10 @@ Domain OutputShape::canvas() const {
 
 Domain OutputShape::moving_area() const { return exemplar_pad ? domain() : canvas(); }
 
-void OutputShape::require_plain_border(const std::string& method) const {
-  if (exemplar_pad || mirror_edges)
-    throw config_error("output.border", std::string(exemplar_pad ? "\"context\" (a frozen exemplar pad)" : "\"mirror\" (mirrored maps)") +
-                                            " is the Gabor method's; " + method + " takes \"clean\" or \"published\"");
+void OutputShape::require_no_exemplar_pad(const std::string& method) const {
+  if (exemplar_pad)
+    throw config_error("output.border", "\"context\" (a frozen exemplar pad) is the Gabor method's; " + method +
+                                            " takes \"clean\" or \"published\"");
 }
 
 std::vector<size_t> OutputShape::class_counts(const PointSet& ex, const Domain& d) const {
@@ -44,7 +44,7 @@ std::string OutputShape::describe() const {
   if (!rectangle) return "u = " + std::to_string(upscale) + " (unit square, " + std::to_string(upscale * upscale) + " exemplars)";
   char buf[160];
   std::snprintf(buf, sizeof buf, "%g x %g exemplar units, %s border", width, height,
-                exemplar_pad ? "context" : clean_border ? "clean" : mirror_edges ? "mirror" : "published");
+                exemplar_pad ? "context" : clean_border ? "clean" : "published");
   return buf;
 }
 
@@ -84,11 +84,10 @@ OutputShape resolve_output_shape(const nlohmann::json& r, const PointSet& ex) {
     throw config_error(has_size ? "output.size" : "output.points",
                        "the output must be 0.01 to 10000 exemplar sides wide and high");
   const std::string border = get_string(j, "border", "output");
-  if (border != "clean" && border != "context" && border != "published" && border != "mirror")
-    throw config_error("output.border", "expected \"clean\", \"context\", \"mirror\" or \"published\"");
-  o.clean_border = border == "clean" || border == "context";
+  if (border != "clean" && border != "context" && border != "published")
+    throw config_error("output.border", "expected \"clean\", \"context\" or \"published\"");
+  o.clean_border = border != "published";
   o.exemplar_pad = border == "context";
-  o.mirror_edges = border == "mirror";
   if (o.clean_border) {
     const auto& p = j["pad"];
     if (p.is_null() || (p.is_string() && p.get<std::string>() == "auto")) {

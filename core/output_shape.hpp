@@ -13,10 +13,7 @@
 // counts are then the density's expectation, not exact); "context" pads the same way but
 // fills the pad with the exemplar's own points, tiled and frozen, and moves only the
 // rectangle's points (the Gabor method; exact counts: nothing parks, nothing is cut off);
-// "published" synthesises on the rectangle itself and keeps the method's border behaviour;
-// "mirror" synthesises on the rectangle itself and the Gabor maps see its edges as mirrors
-// (every point within the maps' reach of an edge has its reflection beyond it, the
-// exemplar's the same at its own edges): no pad, exact counts, nothing cut off.
+// "published" synthesises on the rectangle itself and keeps the method's border behaviour.
 // "pad": null or "auto" = 2 mean nearest-neighbour distances of the exemplar, or a length in
 // exemplar units (docs/large_outputs.md).
 //
@@ -36,7 +33,6 @@ struct OutputShape {
   double width = 0, height = 0;  // the output rectangle's size (exemplar units; rectangle only)
   bool clean_border = true;    // rectangle only: synthesise padded, keep the crop
   bool exemplar_pad = false;   // "context": the pad holds the tiled exemplar, frozen
-  bool mirror_edges = false;   // "mirror": the maps reflect the points at the rectangle's edges
   double pad = 0;              // resolved pad (exemplar units; 0 when !clean_border)
 
   // The domain of the output: the unit square, or [0, W] x [0, H].
@@ -46,9 +42,8 @@ struct OutputShape {
   Domain canvas() const;
   // Where the synthesis moves points: the rectangle ("context": the pad is frozen), else canvas().
   Domain moving_area() const;
-  // Methods other than the Gabor method call this: "context" and "mirror" (which need frozen
-  // points or maps) are then an error naming output.border.
-  void require_plain_border(const std::string& method) const;
+  // Methods without a frozen pad call this: "context" is then an error naming output.border.
+  void require_no_exemplar_pad(const std::string& method) const;
   // Output units per exemplar unit: 1/u for the paper's outputs, 1 for rectangles.
   double zoom() const { return rectangle ? 1.0 : 1.0 / upscale; }
   // Points of each exemplar class over `d` (an area in output units) at the exemplar's

@@ -7,7 +7,6 @@
 #include <sstream>
 
 #include "core/memory_budget.hpp"
-#include "models/mirror_edges.hpp"
 #include "models/point_tensor.hpp"
 #include "optim/initializer.hpp"
 
@@ -110,10 +109,6 @@ std::vector<size_t> concat(const std::vector<size_t>& a, const std::vector<size_
   v.insert(v.end(), b.begin(), b.end());
   return v;
 }
-
-// How far from an edge a point is reflected, in sigmas: beyond 3 sigma a point's Gaussian
-// weighs under 1.2 % of its peak (the windows' reach is 3 sigma for the same reason).
-constexpr double kMirrorReach = 3.0;
 
 bool inside(const Domain& d, const Vec2& p) { return p.x >= d.x0 && p.x <= d.x1 && p.y >= d.y0 && p.y <= d.y1; }
 
@@ -357,12 +352,8 @@ void GaborEngine::enter_stage(const Stage& stage) {
   pipe_->set_neighbours(stage.k);
   pipe_->set_grid(stage.sigma_index);
   const PointSet ex_active = exemplar_.subset_classes(stage.target_classes);
-  MirroredPoints ex{positions_tensor(ex_active), A > 0 ? normalized_attributes(ex_active, s_.attr_cols) : torch::Tensor()};
-  if (shape_.mirror_edges) {  // the exemplar reflected at its own edges, as the output is at the canvas's
-    const Domain E = exemplar_.domain();
-    ex = mirror_edges(ex.points, ex.weights, MirrorEdges{E.x0, E.y0, E.x1, E.y1}, kMirrorReach * stage.sigma);
-  }
-  pipe_->set_targets(ex.points, ex.weights, stage.sigma);
+  pipe_->set_targets(positions_tensor(ex_active), A > 0 ? normalized_attributes(ex_active, s_.attr_cols) : torch::Tensor(),
+                     stage.sigma);
   rule_->begin_stage(ex_active);
   for (auto& t : map_terms_) t.term->begin_stage(stage);
   phases_.targets += since(t0);
@@ -395,14 +386,8 @@ torch::Tensor GaborEngine::evaluate(const Stage& stage) {
   const auto ta = Clock::now();
   const auto mv = confined(state_.moving);
   const auto jitter = pipe_->draw_jitter(jitter_rng_);
-  MirroredPoints pts{frozen_.size(0) > 0 ? torch::cat({frozen_, mv}) : mv, out_weights_};
-  if (shape_.mirror_edges) {  // reflected at the canvas's edges (in the window grid's coordinates)
-    const Domain &g = window_.grid, c = shape_.canvas();
-    const MirrorEdges local{(c.x0 - g.x0) / g.width(), (c.y0 - g.y0) / g.height(), (c.x1 - g.x0) / g.width(),
-                            (c.y1 - g.y0) / g.height()};
-    pts = mirror_edges(pts.points, pts.weights, local, kMirrorReach * stage.sigma / g.width());
-  }
-  auto maps = pipe_->output_maps(pts.points, pts.weights, stage.sigma, jitter);
+  auto pts = frozen_.size(0) > 0 ? torch::cat({frozen_, mv}) : mv;
+  auto maps = pipe_->output_maps(pts, out_weights_, stage.sigma, jitter);
   const auto tb = Clock::now();
   auto feats = measured_part(pipe_->features(maps), measured_);
   const auto tc = Clock::now();

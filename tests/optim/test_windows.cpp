@@ -1,6 +1,5 @@
 // Outputs of any size and shape (issue 20): rectangles and point counts in exemplar units,
-// clean borders (a padded canvas, cropped, or its pad held by the frozen exemplar, or maps
-// mirrored at the rectangle's edges), and synthesis window by window
+// clean borders (a padded canvas, cropped, or its pad held by the frozen exemplar), and synthesis window by window
 // (optim/window_plan.hpp): the layout tiles the canvas, a window run resumes bit for bit, the
 // pattern has no seam at the windows' meeting lines, and the grid (the memory of an
 // iteration) does not grow with the output.
@@ -207,32 +206,6 @@ TEST_CASE("the exemplar-context border: exact counts inside the rectangle, the p
     ctx.output = shape;
     CHECK_THROWS_WITH(method->synthesize(ex, ctx), Catch::Contains("output.border"));
   }
-}
-
-TEST_CASE("the mirror border: the rectangle itself, exact counts, the maps reflected at its edges", "[optim][windows]") {
-  const PointSet ex = exemplar(2, true);
-  const OutputShape mirror = shape_of(json{{"size", {2.5, 1.2}}, {"border", "mirror"}}, ex);
-  REQUIRE(mirror.mirror_edges);
-  CHECK_FALSE(mirror.clean_border);
-  CHECK(mirror.canvas().x0 == 0);  // no pad: the canvas is the rectangle
-  CHECK(mirror.canvas().x1 == 2.5);
-  const Run run = synthesize(ex, mirror, 20, 3);  // several windows: inner edges are not mirrored
-  CHECK(run.stats["windows"]["nx"].get<int>() >= 2);
-  CHECK(run.output.class_counts() == mirror.class_counts(ex, mirror.domain()));
-  for (size_t i = 0; i < run.output.size(); ++i) CHECK(mirror.domain().contains(run.output[i], 0.0));
-  // The same rectangle, seed and start without the images: another run.
-  const OutputShape published = shape_of(json{{"size", {2.5, 1.2}}, {"border", "published"}}, ex);
-  const Run plain = synthesize(ex, published, 20, 3);
-  CHECK(same_bits(run.start, plain.start));
-  CHECK_FALSE(same_bits(run.output, plain.output));
-  // Other methods refuse it, naming the key.
-  for (const char* m : {"roveri2015", "pcf2017"}) {
-    auto method = MethodRegistry::instance().create(json{{"type", m}}, "method");
-    SynthesisContext ctx;
-    ctx.output = mirror;
-    CHECK_THROWS_WITH(method->synthesize(ex, ctx), Catch::Contains("output.border") && Catch::Contains("mirror"));
-  }
-  CHECK_THROWS_WITH(shape_of(json{{"size", {2, 2}}, {"border", "mirrored"}}, ex), Catch::Contains("output.border"));
 }
 
 TEST_CASE("window statistics \"output\": the losses measure the grid's part inside the output only", "[optim][windows]") {

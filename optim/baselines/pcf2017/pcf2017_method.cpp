@@ -116,7 +116,7 @@ class Pcf2017Method : public SynthesisMethod {
  private:
   PointSet synthesize_rectangle(const PointSet& exemplar, const SynthesisContext& ctx) const {
     const OutputShape& shape = ctx.output;
-    shape.require_plain_border("pcf2017");
+    shape.require_no_exemplar_pad("pcf2017");
     const Domain c = shape.canvas();
     const Domain torus{c.x0, c.y0, c.x1, c.y1, true};
     const int K = exemplar.num_classes();

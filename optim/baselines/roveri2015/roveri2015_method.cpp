@@ -92,7 +92,7 @@ class Roveri2015Method : public SynthesisMethod {
     if (exemplar.size() < 3) throw InputError("roveri2015: the exemplar needs at least 3 points");
     const OutputShape& shape = ctx.output;
     const bool rect = shape.rectangle;
-    shape.require_plain_border("roveri2015");
+    shape.require_no_exemplar_pad("roveri2015");
     if (!rect && shape.upscale < 1) throw InputError("roveri2015: upscale must be >= 1");
     const auto t_start = std::chrono::steady_clock::now();
     const Domain E = exemplar.domain();
