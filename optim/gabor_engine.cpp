@@ -425,9 +425,10 @@ void GaborEngine::run_stage(const Stage& stage) {
     ev.loss = lv;
     state_.history.push_back({state_.stage, it, lv, ev.seconds});
     ctx_.iteration(ev);
-    if (rule_->converged(StageView{state_.stage_losses, it, [this] { return points_in_play(); }, window_.torus},
-                         state_.stage_watch))
-      break;
+    const StopVerdict verdict =
+        rule_->judge(StageView{state_.stage_losses, it, [this] { return points_in_play(); }, window_.torus}, state_.stage_watch);
+    if (verdict.best) state_.stage_best = state_.moving.detach().clone();
+    if (verdict.stop) break;
     if (ctx_.stop_requested()) {
       save_checkpoint();
       throw SynthesisInterrupted();
@@ -439,6 +440,9 @@ void GaborEngine::run_stage(const Stage& stage) {
 void GaborEngine::finish_stage(const Stage& stage) {
   {  // the stage's positions, wrapped, into the output (snapshots and later stages see them)
     torch::NoGradGuard ng;
+    // A rule that keeps the stage's best iterate: the stage ends there (the group's next
+    // stage starts from it too, as `moving` is the tensor it goes on with).
+    if (state_.stage_best.defined()) state_.moving.copy_(state_.stage_best);
     auto w = confined(state_.moving).to(torch::kFloat64);
     auto a = w.accessor<double, 2>();
     const Domain& g = window_.grid;
@@ -457,6 +461,7 @@ void GaborEngine::finish_stage(const Stage& stage) {
   state_.iteration = 0;
   state_.stage_losses.clear();
   state_.stage_watch.clear();
+  state_.stage_best = torch::Tensor();
   state_.stage_scale = -1;
   state_.optimizer.clear();
   optimizer_.reset();

@@ -15,16 +15,16 @@ class LossStoppingRule : public StoppingRule {
   LossStoppingRule(int window, int check_every, double threshold)
       : window_(window), check_every_(check_every), threshold_(threshold) {}
 
-  bool converged(const StageView& v, std::vector<double>&) override {
+  StopVerdict judge(const StageView& v, std::vector<double>&) override {
     const auto& L = v.losses;
     const int n = static_cast<int>(L.size());
-    if (v.iteration % check_every_ != 0 || n <= window_) return false;
+    if (v.iteration % check_every_ != 0 || n <= window_) return {};
     const double init = L.front(), pre = L[n - window_], now = L[n - 1];
     // A loss that rose over the whole stage gives a negative ratio: the published code then
     // stops too (the comparison is the same).
     const double denom = init - now;
-    if (denom == 0) return true;
-    return (pre - now) / denom < threshold_;
+    if (denom == 0) return {true, false};
+    return {(pre - now) / denom < threshold_, false};
   }
 
  private:

@@ -12,7 +12,9 @@
 //
 // A rule is asked after every iteration. What it remembers of the stage goes into `record`,
 // which the engine keeps in the checkpoint (optim/synthesis_state.hpp), so a resumed stage
-// stops at the same iteration as one never interrupted.
+// stops at the same iteration as one never interrupted. A rule that measures the pattern may
+// also mark an iterate as the stage's best so far: the engine then keeps a copy of those
+// positions (also checkpointed) and ends the stage on them rather than on its last iterate.
 #include <functional>
 #include <memory>
 #include <vector>
@@ -32,14 +34,20 @@ struct StageView {
   bool periodic = false;  // the domain is a torus (the paper's unit square)
 };
 
+// A rule's verdict after one iteration.
+struct StopVerdict {
+  bool stop = false;  // the stage has converged
+  bool best = false;  // this iterate is the stage's best so far and the stage should end on it
+};
+
 class StoppingRule {
  public:
   virtual ~StoppingRule() = default;
   // A stage starts (or resumes): the exemplar's points of the stage's classes.
   virtual void begin_stage(const PointSet& exemplar_in_play) { (void)exemplar_in_play; }
-  // After each iteration: true when the stage has converged. `record` is this rule's memory
-  // of the stage so far (empty at the stage's start; checkpointed).
-  virtual bool converged(const StageView& view, std::vector<double>& record) = 0;
+  // After each iteration. `record` is this rule's memory of the stage so far (empty at the
+  // stage's start; checkpointed).
+  virtual StopVerdict judge(const StageView& view, std::vector<double>& record) = 0;
 };
 
 using StoppingRuleRegistry = Registry<StoppingRule>;

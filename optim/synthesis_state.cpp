@@ -43,6 +43,7 @@ std::string serialize_state(const SynthesisState& s) {
   if (s.moving.defined()) a.write("moving", s.moving.detach());
   a.write("stage_losses", doubles(s.stage_losses));
   a.write("stage_watch", doubles(s.stage_watch));
+  if (s.stage_best.defined()) a.write("stage_best", s.stage_best.detach());
   a.write("group_moving", longs(s.group_moving));
   a.write("group_frozen", longs(s.group_frozen));
   a.write("final_points", torch::from_blob(const_cast<uint8_t*>(s.final_points.data()),
@@ -92,6 +93,10 @@ SynthesisState deserialize_state(const std::string& bytes, const std::string& so
     if (read("has_moving").item<int64_t>() != 0) s.moving = read("moving");
     s.stage_losses = to_vector(read("stage_losses"));
     s.stage_watch = to_vector(read("stage_watch"));
+    {  // absent when the stage has no best iterate kept (and in checkpoints of earlier versions)
+      torch::Tensor best;
+      if (a.try_read("stage_best", best)) s.stage_best = best;
+    }
     s.group_moving = to_vector_of<int64_t>(read("group_moving"));
     s.group_frozen = to_vector_of<int64_t>(read("group_frozen"));
     s.final_points = to_vector_of<uint8_t>(read("final_points"));

@@ -34,6 +34,7 @@ struct SynthesisState {
   std::string rng;                   // the jitter generator (std::mt19937_64, text form)
   std::vector<double> stage_losses;  // losses of `stage` so far (the convergence window)
   std::vector<double> stage_watch;   // the stopping rule's record of `stage` (optim/stopping_rule.hpp)
+  torch::Tensor stage_best;          // `moving` at the stage's best iterate, when the rule keeps one (else undefined)
   double stage_scale = -1;           // the point terms' unit (the stage's first loss), -1 unset
   std::vector<LossRecord> history;   // every iteration of every stage so far
   nlohmann::json stages = nlohmann::json::array();  // one summary per finished stage

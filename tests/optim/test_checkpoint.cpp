@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/generators/lattices.hpp"
+#include "core/metrics/pcf.hpp"
 #include "optim/method.hpp"
 #include "optim/synthesis_state.hpp"
 #include "tests/support/same_bits.hpp"
@@ -98,6 +99,32 @@ TEST_CASE("a stage stopped by the pattern rule resumes to the same stopping iter
     CHECK(same_bits(resumed.output, whole.output));
     CHECK(resumed.stats["stages"][0]["iterations"] == first_stage);
     CHECK(resumed.stats["stages"][1]["iterations"] == whole.stats["stages"][1]["iterations"]);
+  }
+}
+
+TEST_CASE("a stage that ends on its best iterate ends there, and resumes to the same bits", "[optim][checkpoint]") {
+  // One sigma, so the run's output is that stage's end: with end_on "best" it is the checked
+  // iterate nearest the exemplar's PCF, never farther than the last iterate (the same
+  // trajectory with end_on "last"); the kept copy is in the checkpoint, so a run resumed
+  // after it was taken still ends on it.
+  json spec = kQuickMethod;
+  spec["quick"]["max_iterations"] = 60;
+  spec["quick"]["num_sigmas"] = 1;
+  spec["convergence"] = {{"type", "pattern"}, {"window", 1000}, {"check_every", 5}, {"min_iterations", 0}};
+  const PointSet ex = exemplar(1, false);
+  const Run last = synthesize(ex, nullptr, nullptr, spec);
+  spec["convergence"]["end_on"] = "best";
+  const Run best = synthesize(ex, nullptr, nullptr, spec);
+  REQUIRE(best.stats["stages"][0]["iterations"] == 60);  // both ran to the cap: same trajectory
+  PcfOptions torus;
+  torus.periodic = true;
+  const Curve target = pcf(ex);
+  const double mse_best = curve_mse(pcf(best.output, torus), target), mse_last = curve_mse(pcf(last.output, torus), target);
+  INFO("PCF MSE, end on best " << mse_best << ", end on last " << mse_last);
+  CHECK(mse_best < mse_last);  // this trajectory's best check is not its last
+  for (size_t i : {size_t{2}, size_t{20}, size_t{45}, best.checkpoints.size() - 2}) {
+    INFO("checkpoint " << i);
+    CHECK(same_bits(synthesize(ex, &best.checkpoints[i], nullptr, spec).output, best.output));
   }
 }
 

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -23,7 +24,7 @@ namespace {
 // The "loss" rule's verdict after the losses L (the last one from iteration L.size() - 1).
 bool loss_rule_stops(StoppingRule& rule, const std::vector<double>& L) {
   std::vector<double> record;
-  return rule.converged(StageView{L, static_cast<int>(L.size()) - 1, {}, true}, record);
+  return rule.judge(StageView{L, static_cast<int>(L.size()) - 1, {}, true}, record).stop;
 }
 
 }  // namespace
@@ -82,12 +83,58 @@ TEST_CASE("The pattern rule stops when the PCF stops improving, not while it imp
       }
       return ps;
     };
-    if (rule->converged(StageView{losses, it, points, true}, record)) stopped_at = it;
+    const StopVerdict v = rule->judge(StageView{losses, it, points, true}, record);
+    CHECK_FALSE(v.best);  // end_on "last" (the default) never asks to keep an iterate
+    if (v.stop) stopped_at = it;
   }
   INFO("stopped at iteration " << stopped_at << ", " << record.size() << " checks");
   CHECK(stopped_at >= hold_from);
   CHECK(stopped_at <= hold_from + 30 + 10);
   CHECK(record.front() > 2 * record.back());  // it watched the pattern improve
+}
+
+TEST_CASE("The pattern rule with end_on best marks each new best check and no other iteration", "[optim]") {
+  // A pattern that walks from nearly uniform to the exemplar's kind (a jittered grid) and
+  // back: the checks improve, then worsen. The marked iterates are exactly the checks that
+  // beat every earlier one, so the last mark is the check nearest the turn.
+  auto rule = StoppingRuleRegistry::instance().create(
+      json{{"type", "pattern"}, {"window", 1000}, {"check_every", 10}, {"min_iterations", 0}, {"end_on", "best"}},
+      "method.convergence");
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> u(0, 1);
+  PointSet ex, goal, start;
+  for (int j = 0; j < 12; ++j)
+    for (int i = 0; i < 12; ++i) {
+      ex.add({(i + 0.4 + 0.2 * u(rng)) / 12, (j + 0.4 + 0.2 * u(rng)) / 12});
+      goal.add({(i + 0.4 + 0.2 * u(rng)) / 12, (j + 0.4 + 0.2 * u(rng)) / 12});
+      start.add({u(rng), u(rng)});
+    }
+  rule->begin_stage(ex);
+  std::vector<double> losses, record;
+  std::vector<int> marked;
+  const int turn = 100;
+  for (int it = 0; it < 200; ++it) {
+    losses.push_back(1.0);
+    const double t = 1.0 - std::abs(it - turn) / double(turn);  // 0 -> 1 at the turn -> 0
+    auto points = [&] {
+      PointSet ps;
+      for (size_t i = 0; i < goal.size(); ++i)
+        ps.add({start[i].x + t * (goal[i].x - start[i].x),
+                start[i].y + t * (goal[i].y - start[i].y)});
+      return ps;
+    };
+    const StopVerdict v = rule->judge(StageView{losses, it, points, true}, record);
+    CHECK_FALSE(v.stop);  // the window is longer than the stage
+    if (v.best) marked.push_back(it);
+  }
+  REQUIRE(record.size() == 20u);
+  REQUIRE_FALSE(marked.empty());
+  const size_t best = static_cast<size_t>(std::min_element(record.begin(), record.end()) - record.begin());
+  CHECK(marked.back() == static_cast<int>(10 * best + 9));  // the stage's best check is the last one marked
+  CHECK(std::abs(marked.back() - turn) <= 20);
+  for (size_t k = 1; k < marked.size(); ++k) CHECK(record[(marked[k] - 9) / 10] < record[(marked[k - 1] - 9) / 10]);
+  CHECK_THROWS_WITH(StoppingRuleRegistry::instance().create(json{{"type", "pattern"}, {"end_on", "first"}}, "method.convergence"),
+                    Catch::Contains("method.convergence.end_on"));
 }
 
 TEST_CASE("Toroidal wrap as published", "[optim]") {
