@@ -410,6 +410,11 @@ torch::Tensor GaborEngine::evaluate(const Stage& stage) {
 }
 
 void GaborEngine::run_stage(const Stage& stage) {
+  if (state_.iteration == 0) {  // the start, as a rule that keeps the best iterate sees it (optim/stopping_rule.hpp)
+    const StopVerdict start =
+        rule_->judge(StageView{state_.stage_losses, -1, [this] { return points_in_play(); }, window_.torus}, state_.stage_watch);
+    if (start.best) state_.stage_best = state_.moving.detach().clone();
+  }
   while (state_.iteration < s_.max_iterations) {
     const int it = state_.iteration;
     const auto ts = Clock::now();

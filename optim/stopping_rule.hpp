@@ -27,7 +27,7 @@ namespace ppsynth {
 // The stage as a rule sees it after one iteration.
 struct StageView {
   const std::vector<double>& losses;  // the stage's losses so far; losses.back() is this iteration's
-  int iteration = 0;                  // 0-based index of this iteration in the stage
+  int iteration = 0;                  // 0-based index of this iteration in the stage; -1: the stage's start
   // The stage's points in play now (moving and frozen points of its classes) on the
   // stage's domain; built only when called (a copy of the positions).
   std::function<PointSet()> points;
@@ -45,8 +45,11 @@ class StoppingRule {
   virtual ~StoppingRule() = default;
   // A stage starts (or resumes): the exemplar's points of the stage's classes.
   virtual void begin_stage(const PointSet& exemplar_in_play) { (void)exemplar_in_play; }
-  // After each iteration. `record` is this rule's memory of the stage so far (empty at the
-  // stage's start; checkpointed).
+  // After each iteration, and once at the stage's start (iteration -1: no loss yet, the
+  // points where the previous stage left them; a stop there is ignored), so that a rule
+  // keeping the best iterate can keep the start when the stage only worsens the pattern.
+  // `record` is this rule's memory of the stage so far (empty at the stage's start;
+  // checkpointed).
   virtual StopVerdict judge(const StageView& view, std::vector<double>& record) = 0;
 };
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <random>
 
+#include "core/metrics/pcf.hpp"
 #include "optim/stopping_rule.hpp"
 #include "optim/gabor_pipeline.hpp"
 #include "optim/sigma_schedule.hpp"
@@ -127,12 +128,55 @@ TEST_CASE("The pattern rule with end_on best marks each new best check and no ot
     CHECK_FALSE(v.stop);  // the window is longer than the stage
     if (v.best) marked.push_back(it);
   }
-  REQUIRE(record.size() == 20u);
+  // The record pairs each check's PCF MSE as optimised (the torus: the stop watches it) with
+  // the one as seen (the plane square, as the evaluation measures: the best is chosen by it).
+  REQUIRE(record.size() == 40u);
+  auto seen = [&](int it) { return record[2 * static_cast<size_t>((it - 9) / 10) + 1]; };
   REQUIRE_FALSE(marked.empty());
-  const size_t best = static_cast<size_t>(std::min_element(record.begin(), record.end()) - record.begin());
-  CHECK(marked.back() == static_cast<int>(10 * best + 9));  // the stage's best check is the last one marked
+  int best = 9;
+  for (int it = 9; it < 200; it += 10)
+    if (seen(it) < seen(best)) best = it;
+  CHECK(marked.back() == best);  // the stage's best check is the last one marked
   CHECK(std::abs(marked.back() - turn) <= 20);
-  for (size_t k = 1; k < marked.size(); ++k) CHECK(record[(marked[k] - 9) / 10] < record[(marked[k - 1] - 9) / 10]);
+  for (size_t k = 1; k < marked.size(); ++k) CHECK(seen(marked[k]) < seen(marked[k - 1]));
+  {  // the last check (iteration 199) by hand: torus first, plane second
+    const double t = 1.0 - std::abs(199 - turn) / double(turn);
+    PointSet ps;
+    for (size_t i = 0; i < goal.size(); ++i)
+      ps.add({start[i].x + t * (goal[i].x - start[i].x), start[i].y + t * (goal[i].y - start[i].y)});
+    PcfOptions torus;
+    torus.periodic = true;
+    CHECK(record[38] == Approx(curve_mse(pcf(ps, torus), pcf(ex))).epsilon(1e-12));
+    CHECK(record[39] == Approx(curve_mse(pcf(ps), pcf(ex))).epsilon(1e-12));
+    CHECK(record[38] != record[39]);
+  }
+
+  // The stage's start (iteration -1) is a candidate too: a stage that only worsens the
+  // pattern keeps its start, and no later check is marked.
+  rule->begin_stage(ex);
+  std::vector<double> worse_record;
+  int marks = 0;
+  bool start_marked = false;
+  for (int it = -1; it < 60; ++it) {
+    const double t = 1.0 - (it + 1) / 60.0;  // from the goal towards uniform
+    auto points = [&] {
+      PointSet ps;
+      for (size_t i = 0; i < goal.size(); ++i)
+        ps.add({start[i].x + t * (goal[i].x - start[i].x), start[i].y + t * (goal[i].y - start[i].y)});
+      return ps;
+    };
+    const StopVerdict v = rule->judge(StageView{losses, it, points, true}, worse_record);
+    if (v.best) (it < 0 ? start_marked = true : ++marks);
+  }
+  CHECK(start_marked);
+  CHECK(marks == 0);
+  CHECK(worse_record.size() == 14u);  // the start and six checks, each as optimised and as seen
+  // Ending on the last iterate, the start is not measured (the stopping window is unchanged).
+  auto last_rule = StoppingRuleRegistry::instance().create(json{{"type", "pattern"}}, "method.convergence");
+  last_rule->begin_stage(ex);
+  std::vector<double> last_record;
+  CHECK_FALSE(last_rule->judge(StageView{losses, -1, [&] { return goal; }, true}, last_record).best);
+  CHECK(last_record.empty());
   CHECK_THROWS_WITH(StoppingRuleRegistry::instance().create(json{{"type", "pattern"}, {"end_on", "first"}}, "method.convergence"),
                     Catch::Contains("method.convergence.end_on"));
 }
