@@ -11,7 +11,7 @@ nlohmann::json presets() {
   return json{
       // Issue 21: the Gabor method's quality in the least time on a CPU, measured over seeds
       // 95-99 on lines, poisson_n64c2_point, Tree1, Cattles and Fluid1 against the default
-      // (docs/performance.md, "Time to quality"; lines: 89 s instead of 745 s idle):
+      // (docs/performance.md, "Time to quality"; lines: 75-81 s instead of 745 s idle):
       //   - bfloat16 network on the channels-last path (oneDNN's bf16 convolutions, AMX
       //     where the CPU has it: 0.18 s instead of 0.97 s per iteration on lines);
       //   - per-sigma grids: the coarse sigmas on coarser grids, the finest on the full one;
@@ -22,7 +22,7 @@ nlohmann::json presets() {
       // 40 filters and the 9/d grid without the 128 floor were measured too and left out:
       // they cost Tree1's structure (PCF MSE 0.023 against 0.012).
       {"fast",
-       {{"description", "bf16 network, per-sigma grids, stop when the pattern stops improving and keep its best: lines in 89 s instead of 745 s"},
+       {{"description", "bf16 network, per-sigma grids, stop when the pattern stops improving and keep its best: lines in 75-81 s instead of 745 s"},
         {"config",
          {{"method",
            {{"feature_net", {{"precision", "bfloat16"}}},
