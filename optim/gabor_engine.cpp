@@ -410,11 +410,15 @@ torch::Tensor GaborEngine::evaluate(const Stage& stage) {
 }
 
 void GaborEngine::run_stage(const Stage& stage) {
-  if (state_.iteration == 0) {  // the start, as a rule that keeps the best iterate sees it (optim/stopping_rule.hpp)
-    const StopVerdict start =
-        rule_->judge(StageView{state_.stage_losses, -1, [this] { return points_in_play(); }, window_.torus}, state_.stage_watch);
-    if (start.best) state_.stage_best = state_.moving.detach().clone();
-  }
+  // The rule's verdict on the points as they are after iteration `it`; a new best is kept
+  // (optim/stopping_rule.hpp). True: the stage has converged.
+  auto judge = [&](int it) {
+    const StopVerdict v =
+        rule_->judge(StageView{state_.stage_losses, it, [this] { return points_in_play(); }, window_.torus}, state_.stage_watch);
+    if (v.best) state_.stage_best = state_.moving.detach().clone();
+    return v.stop;
+  };
+  if (state_.iteration == 0) judge(-1);  // the stage's start, a candidate to end on (a stop there is ignored)
   while (state_.iteration < s_.max_iterations) {
     const int it = state_.iteration;
     const auto ts = Clock::now();
@@ -430,10 +434,7 @@ void GaborEngine::run_stage(const Stage& stage) {
     ev.loss = lv;
     state_.history.push_back({state_.stage, it, lv, ev.seconds});
     ctx_.iteration(ev);
-    const StopVerdict verdict =
-        rule_->judge(StageView{state_.stage_losses, it, [this] { return points_in_play(); }, window_.torus}, state_.stage_watch);
-    if (verdict.best) state_.stage_best = state_.moving.detach().clone();
-    if (verdict.stop) break;
+    if (judge(it)) break;
     if (ctx_.stop_requested()) {
       save_checkpoint();
       throw SynthesisInterrupted();
