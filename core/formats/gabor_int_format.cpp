@@ -82,14 +82,7 @@ PointSet parse_gabor_int(const std::string& text, const std::string& source, con
     throw file_error(source, first_line, std::to_string(names.size()) + " attribute name(s) given for " +
                                              std::to_string(nattr) + " attribute column(s)");
 
-  PointSet ps{Domain{}};
-  for (const auto& n : names) {
-    try {
-      ps.add_attribute(n);
-    } catch (const std::invalid_argument& e) {  // a name given twice in ReadOptions
-      throw file_error(source, 0, e.what());
-    }
-  }
+  PointSet ps = point_set_with_attributes(Domain{}, names, source, 0);  // a name twice: ReadOptions'
   ps.set_class_labels(labels);
   ps.reserve(rows.size() - first);
   std::vector<double> attrs(nattr);

@@ -157,14 +157,7 @@ PointSet parse_json_points(const std::string& text, const std::string& source) {
   if (pts.empty()) throw file_error(source, key_line(text, "points"), "\"points\" is empty: no points");
 
   const std::vector<long> lines = element_lines(text, "points");
-  PointSet ps(domain);
-  for (const auto& n : names) {
-    try {
-      ps.add_attribute(n);
-    } catch (const std::invalid_argument& e) {
-      throw file_error(source, key_line(text, "attributes"), e.what());
-    }
-  }
+  PointSet ps = point_set_with_attributes(domain, names, source, key_line(text, "attributes"));
   if (have_labels) ps.set_class_labels(labels);
   ps.reserve(pts.size());
   const size_t ncol = 3 + names.size();

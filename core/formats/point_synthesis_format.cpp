@@ -72,14 +72,7 @@ PointSet parse_point_synthesis(const std::string& text, const std::string& sourc
       if (!problem.empty()) throw file_error(source, rows[r].line, problem);
     }
 
-  PointSet ps(domain);
-  for (const auto& n : names) {
-    try {
-      ps.add_attribute(n);
-    } catch (const std::invalid_argument& e) {  // a name given twice in ReadOptions
-      throw file_error(source, 0, e.what());
-    }
-  }
+  PointSet ps = point_set_with_attributes(domain, names, source, 0);  // a name twice: ReadOptions'
   ps.set_class_labels(labels);
   ps.reserve(rows.size());
   for (size_t r = 0; r < rows.size(); ++r) {

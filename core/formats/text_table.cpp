@@ -8,6 +8,7 @@
 #include <limits>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/error.hpp"
 
@@ -104,6 +105,19 @@ std::string format_real(double v) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", v);
   return buf;
+}
+
+PointSet point_set_with_attributes(const Domain& domain, const std::vector<std::string>& names,
+                                   const std::string& source, long line) {
+  PointSet ps(domain);
+  for (const auto& n : names) {
+    try {
+      ps.add_attribute(n);
+    } catch (const std::invalid_argument& e) {
+      throw file_error(source, line, e.what());
+    }
+  }
+  return ps;
 }
 
 }  // namespace ppsynth

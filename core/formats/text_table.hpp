@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "core/point_set.hpp"
+
 namespace ppsynth {
 
 // One non-blank line of a text file: its 1-based line number, its text (trailing CR and
@@ -37,6 +39,11 @@ long long parse_integral_real_field(const std::string& field, const std::string&
 // `value` as the int a PointSet stores for a class label or id; values beyond 32 bits throw
 // file_error(source, line, "<what> <value> is out of range ...") instead of being truncated.
 int checked_int(long long value, const std::string& what, const std::string& source, long line);
+
+// An empty point set on `domain` with these attribute columns, in order; a name given twice
+// (by the file or by ReadOptions::attribute_names) throws file_error(source, line, ...).
+PointSet point_set_with_attributes(const Domain& domain, const std::vector<std::string>& names,
+                                   const std::string& source, long line);
 
 // Shortest-safe text for a double that reads back to the same bits ("%.17g").
 std::string format_real(double v);

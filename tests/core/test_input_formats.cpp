@@ -197,3 +197,18 @@ TEST_CASE("a domain or extent beyond the range of a double is refused with the f
   const std::string s = write_file(dir, "s.txt", "1e308 0 1 1\n-1e308 5 1 1\n0 10 1 1\n");
   require_located([&] { read_points(s); }, s, 0, {"range of a double"});
 }
+
+TEST_CASE("an attribute name given twice is refused with the file, by every reader that takes names", "[formats][input]") {
+  const auto dir = test::scratch_dir("input_attribute_twice");
+  ReadOptions twice;
+  twice.attribute_names = {"depth", "depth"};
+  const std::string g = write_file(dir, "two_attrs.txt", "1000 18 7500 3 4\n2000 2500 7500 4 5\n");
+  require_located([&] { read_points(g, twice); }, g, 0, {"duplicate attribute column 'depth'"});
+  twice.format = Format::PointSynthesis;
+  const std::string p = write_file(dir, "tu.txt", "10 20 0 1 2\n30 40 1 2 3\n50 10 0 3 4\n");
+  require_located([&] { read_points(p, twice); }, p, 0, {"duplicate attribute column 'depth'"});
+  // JSON names its own columns: the line of its "attributes" key.
+  const std::string j = write_file(dir, "pts.json",
+                                   "{\n\"attributes\": [\"a\", \"a\"],\n\"points\": [[0.1, 0.2, 0, 1, 2]]\n}\n");
+  require_located([&] { read_points(j); }, j, 2, {"duplicate attribute column 'a'"});
+}
