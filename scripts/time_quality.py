@@ -6,7 +6,8 @@ Every run of the Gabor method writes a snapshot of its points at the end of each
 snapshot against the run's exemplar (`ppsynth eval`: the paper's quadrant protocol for a
 u = 2 output) and pairs it with the run's time up to that stage's end, so a run gives one
 point per stage: the quality a user would have had, had the run stopped there. Runs of the
-same configuration (config name, preset and --set overrides; seeds pooled) form one curve:
+same configuration (a sweep's group as `ppsynth gather` labels it, else the config name and
+preset; seeds pooled) form one curve:
 the median over seeds of the time and of each metric at each stage, with the quartiles.
 
     scripts/time_quality.py RUN_DIR... [-o curve.png] [--json curve.json] [--force]
@@ -19,6 +20,7 @@ import argparse
 import csv
 import json
 import os
+import re
 import statistics
 import subprocess
 import sys
@@ -40,8 +42,19 @@ def ppsynth(*args):
     return r.stdout
 
 
-def label(config):
-    """The configuration a run belongs to, seeds pooled: name, preset, sweep overrides."""
+def label(run_dir, config):
+    """The configuration a run belongs to, seeds pooled: a sweep's run takes its group's label
+    from the sweep's manifest.json (as `ppsynth gather` shows it: name, preset and grid point);
+    another run its config's name and preset."""
+    sweep = os.path.dirname(os.path.dirname(os.path.abspath(run_dir)))
+    manifest = os.path.join(sweep, "manifest.json")
+    if os.path.exists(manifest):
+        with open(manifest) as f:
+            rows = json.load(f).get("rows", [])
+        here = os.path.relpath(os.path.abspath(run_dir), sweep)
+        for row in rows:
+            if row.get("dir") == here and row.get("group_label"):
+                return row["group_label"]
     text = config.get("name") or "run"
     if config.get("preset"):
         text += f" (preset {config['preset']})"
@@ -63,7 +76,7 @@ def stage_seconds(run_dir):
     return [last[k] for k in sorted(last)]
 
 
-def run_points(run_dir, name_override):
+def run_points(run_dir):
     with open(os.path.join(run_dir, "config.json")) as f:
         config = json.load(f)
     with open(os.path.join(run_dir, "run.json")) as f:
@@ -81,7 +94,7 @@ def run_points(run_dir, name_override):
         ev = json.loads(ppsynth("eval", "--exemplar", os.path.join(run_dir, "exemplar.txt"),
                                 "--output", os.path.join(run_dir, "snapshots", snap), "--json", "--no-curves", "-q"))
         points.append({"seconds": t, **{m: ev["all"][m] for m in METRICS}})
-    return name_override or label(config), config.get("seed"), points
+    return label(run_dir, config), config.get("seed"), points
 
 
 def quartiles(v):
@@ -105,23 +118,32 @@ def write_atomic(path, force, write):
         raise
 
 
+TITLES = {"pcf_mse": "PCF MSE", "wasserstein": "Wasserstein", "chamfer": "Chamfer"}
+
+
 def plot(curves, path, force):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, len(METRICS), figsize=(4.2 * len(METRICS), 3.6), constrained_layout=True)
+    fig, axes = plt.subplots(1, len(METRICS), figsize=(4.6 * len(METRICS), 4.6))
     for name, stages in curves.items():
         xs = [s["seconds"][1] for s in stages]
+        # Sweep labels name their grid keys in full; the last part of each key is enough here.
+        short = re.sub(r"\b(?:[a-z_]+\.)+([a-z_]+)=", r"\1=", name)
         for ax, m in zip(axes, METRICS):
             med = [s[m][1] for s in stages]
             err = [[s[m][1] - s[m][0] for s in stages], [s[m][2] - s[m][1] for s in stages]]
-            ax.errorbar(xs, med, yerr=err, marker="o", capsize=3, label=f"{name} (n={stages[0]['n']})")
+            ax.errorbar(xs, med, yerr=err, marker="o", capsize=3, label=f"{short} (n={stages[0]['n']})")
     for ax, m in zip(axes, METRICS):
         ax.set_xscale("log")
-        ax.set_xlabel("seconds to the end of the stage (median over seeds)")
-        ax.set_title(f"{m}: median, q1-q3 over seeds")
+        ax.set_xlabel("seconds to the stage's end")
+        ax.set_title(f"{TITLES.get(m, m)} (lower is better)")
         ax.grid(alpha=0.3)
-    axes[0].legend(fontsize=8)
+    fig.suptitle("Quality after each stage against the time to it: median over seeds, bars q1-q3", fontsize=11)
+    handles, labels = axes[0].get_legend_handles_labels()
+    rows = (len(labels) + 1) // 2
+    fig.legend(handles, labels, loc="lower center", ncol=2, fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0, 0.06 * rows + 0.02, 1, 0.95))  # the legend's rows below the plots
     write_atomic(path, force, lambda tmp: fig.savefig(tmp, dpi=110))
 
 
@@ -134,7 +156,7 @@ def main():
     args = ap.parse_args()
     per_run = {}
     for d in args.runs:
-        name, seed, pts = run_points(d, None)
+        name, seed, pts = run_points(d)
         per_run.setdefault(name, []).append(pts)
     curves = {}
     for name, runs in per_run.items():
