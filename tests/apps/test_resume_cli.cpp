@@ -101,11 +101,12 @@ TEST_CASE("kill -9 loses at most a checkpoint interval: from a stage boundary an
   SECTION("2 classes, checkpoints at stage boundaries only: resumes from the boundary") {
     const std::string cfg = "poisson_n64c2_point.json";
     const std::string run = (d / "run2").string();
-    CHECK(interrupt("synthesize " + quick_run(cfg, "--set checkpoint_seconds=1e6 ") + "-o " + run,
-                    iteration_of("class 2/2 \\(id 1\\), sigma 1/2", 4), SIGKILL) == 128 + SIGKILL);
+    const std::string boundaries_only = quick_run(cfg, "--set checkpoint_seconds=1e6 ");
+    CHECK(interrupt("synthesize " + boundaries_only + "-o " + run, iteration_of("class 2/2 \\(id 1\\), sigma 1/2", 4),
+                    SIGKILL) == 128 + SIGKILL);
     REQUIRE(fs::exists(run + "/checkpoint.bin"));
     // the run's own config says checkpoint_seconds=1e6: compare against a reference made with it
-    REQUIRE(run_ppsynth("synthesize " + quick_run(cfg, "--set checkpoint_seconds=1e6 ") + "-o " + (d / "ref2b").string()).status == 0);
+    REQUIRE(run_ppsynth("synthesize " + boundaries_only + "-o " + (d / "ref2b").string()).status == 0);
     REQUIRE(run_ppsynth("synthesize -q --resume " + run).status == 0);
     check_same_run(d / "ref2b", run);
   }
