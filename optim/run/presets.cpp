@@ -11,7 +11,7 @@ nlohmann::json presets() {
   return json{
       // Issue 21: the Gabor method's quality in the least time on a CPU, measured over seeds
       // 95-99 on lines, poisson_n64c2_point, Tree1, Cattles and Fluid1 against the default
-      // (docs/performance.md, "Time to quality"; lines: 75-81 s instead of 745 s idle):
+      // (docs/performance.md, "Time to quality"; lines: median 69 s over 5 seeds instead of 745 s idle):
       //   - bfloat16 network on the channels-last path (oneDNN's bf16 convolutions, AMX
       //     where the CPU has it: 0.18 s instead of 0.97 s per iteration on lines);
       //   - per-sigma grids: the coarse sigmas on coarser grids, the finest on the full one;
