@@ -18,6 +18,7 @@ renamed; an existing file is replaced only with --force).
 """
 import argparse
 import csv
+import functools
 import json
 import os
 import re
@@ -42,19 +43,26 @@ def ppsynth(*args):
     return r.stdout
 
 
+@functools.lru_cache(maxsize=None)
+def sweep_group_labels(sweep):
+    """{run dir relative to the sweep: group label} from a sweep's manifest.json (read once per
+    sweep); empty for a directory that is not a sweep."""
+    manifest = os.path.join(sweep, "manifest.json")
+    if not os.path.exists(manifest):
+        return {}
+    with open(manifest) as f:
+        rows = json.load(f).get("rows", [])
+    return {row["dir"]: row["group_label"] for row in rows if row.get("dir") and row.get("group_label")}
+
+
 def label(run_dir, config):
     """The configuration a run belongs to, seeds pooled: a sweep's run takes its group's label
     from the sweep's manifest.json (as `ppsynth gather` shows it: name, preset and grid point);
     another run its config's name and preset."""
     sweep = os.path.dirname(os.path.dirname(os.path.abspath(run_dir)))
-    manifest = os.path.join(sweep, "manifest.json")
-    if os.path.exists(manifest):
-        with open(manifest) as f:
-            rows = json.load(f).get("rows", [])
-        here = os.path.relpath(os.path.abspath(run_dir), sweep)
-        for row in rows:
-            if row.get("dir") == here and row.get("group_label"):
-                return row["group_label"]
+    group = sweep_group_labels(sweep).get(os.path.relpath(os.path.abspath(run_dir), sweep))
+    if group:
+        return group
     text = config.get("name") or "run"
     if config.get("preset"):
         text += f" (preset {config['preset']})"
