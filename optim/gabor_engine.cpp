@@ -9,6 +9,7 @@
 #include "core/memory_budget.hpp"
 #include "models/point_tensor.hpp"
 #include "optim/initializer.hpp"
+#include "optim/random_tiles.hpp"
 
 namespace ppsynth {
 
@@ -382,16 +383,37 @@ ProgressEvent GaborEngine::event(const Stage& stage) const {
   return ev;
 }
 
-torch::Tensor GaborEngine::evaluate(const Stage& stage) {
+torch::Tensor GaborEngine::measure(const torch::Tensor& points, const torch::Tensor& weights, const torch::Tensor& jitter,
+                                   const Stage& stage, bool tile) {
   const auto ta = Clock::now();
-  const auto mv = confined(state_.moving);
-  const auto jitter = pipe_->draw_jitter(jitter_rng_);
-  auto pts = frozen_.size(0) > 0 ? torch::cat({frozen_, mv}) : mv;
-  auto maps = pipe_->output_maps(pts, out_weights_, stage.sigma, jitter);
+  auto maps = tile ? pipe_->tile_maps(points, weights, stage.sigma, jitter) : pipe_->output_maps(points, weights, stage.sigma, jitter);
   const auto tb = Clock::now();
   auto feats = measured_part(pipe_->features(maps), measured_);
   const auto tc = Clock::now();
   auto l = pipe_->loss(feats);
+  phases_.maps += std::chrono::duration<double>(tb - ta).count();
+  phases_.net += std::chrono::duration<double>(tc - tb).count();
+  phases_.loss += since(tc);
+  return l;
+}
+
+torch::Tensor GaborEngine::evaluate(const Stage& stage) {
+  const auto mv = confined(state_.moving);
+  auto pts = frozen_.size(0) > 0 ? torch::cat({frozen_, mv}) : mv;
+  torch::Tensor l, jitter;
+  if (s_.measure_tiles) {  // the mean over the tiles of the cut (optim/random_tiles.hpp)
+    const int u = s_.upscale;
+    const auto tiles = cut_into_tiles(pts, u, tile_offset(ctx_.seed, state_.stage, state_.iteration, u));
+    for (const auto& t : tiles) {
+      const auto w = out_weights_.defined() ? out_weights_.index_select(0, t.rows) : torch::Tensor();
+      const auto v = measure(t.local, w, pipe_->draw_jitter(jitter_rng_, true), stage, true) / static_cast<double>(u * u);
+      l = l.defined() ? l + v : v;
+    }
+  } else {
+    jitter = pipe_->draw_jitter(jitter_rng_);
+    l = measure(pts, out_weights_, jitter, stage, false);
+  }
+  const auto tc = Clock::now();
   for (auto& t : map_terms_) {  // beside the paper's (optim/map_term.hpp); their maps and nets count as loss time
     const auto v = t.term->evaluate(mv, jitter, stage);
     if (v.defined()) l = l + t.weight * v;
@@ -402,8 +424,6 @@ torch::Tensor GaborEngine::evaluate(const Stage& stage) {
   for (auto& t : terms_) l = l + t.weight * state_.stage_scale * t.term->evaluate(mv, frozen_);
   const auto td = Clock::now();
   l.backward();
-  phases_.maps += std::chrono::duration<double>(tb - ta).count();
-  phases_.net += std::chrono::duration<double>(tc - tb).count();
   phases_.loss += std::chrono::duration<double>(td - tc).count();
   phases_.backward += since(td);
   return l;

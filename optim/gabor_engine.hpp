@@ -4,6 +4,9 @@
 //
 //   stage:  targets <- exemplar classes -> Rasterizer -> FeatureNet -> CompositeLoss target
 //           repeat: wrap(moving) + frozen -> Rasterizer(u) -> FeatureNet -> CompositeLoss
+//                   (method.measure "tiles": cut into exemplar-sized tiles at a random
+//                   offset, each -> Rasterizer -> FeatureNet -> CompositeLoss, averaged;
+//                   optim/random_tiles.hpp)
 //                   (windows: confine(moving) + frozen, in the window's coordinates)
 //                   [+ map terms on maps of their own (optim/map_term.hpp); not in the paper]
 //                   [+ point terms on the positions (optim/point_term.hpp); not in the paper]
@@ -56,6 +59,9 @@ class GaborEngine {
   void enter_stage(const Stage& stage);   // targets and a fresh (or restored) optimiser
   void run_stage(const Stage& stage);
   torch::Tensor evaluate(const Stage& stage);  // the loss at the current positions, after backward
+  // The paper's loss of one raster: the output's grid, or a tile of it on the exemplar's grid.
+  torch::Tensor measure(const torch::Tensor& points, const torch::Tensor& weights, const torch::Tensor& jitter,
+                        const Stage& stage, bool tile);
   void finish_stage(const Stage& stage);
   void save_checkpoint();
   PointSet points_in_play() const;  // the stage's moving and frozen points on its domain

@@ -51,6 +51,11 @@ json gabor_defaults() {
       // measures its square) or "output" (the grid's part inside the output rectangle: the
       // pad of a clean or context border is seen by the maps but not measured, so its outer
       // edge, where plane maps lose a point's influence, asks nothing of the rectangle).
+      // Where the losses measure the output of the paper's u x u square: "grid" (its whole
+      // grid, as published: points park on its border) or "tiles" (u x u tiles of the
+      // exemplar's size cut at a random offset every iteration, each rasterised and measured
+      // as the exemplar is: no border; optim/random_tiles.hpp).
+      {"measure", "grid"},
       {"window", {{"pixels", 384}, {"margin", nullptr}, {"receptive_field", 16}, {"statistics", "grid"}}},
       // --quick: every knob that sets the cost, shrunk (tests and smoke runs).
       {"quick", {{"res", 24}, {"channels", 8}, {"max_iterations", 4}, {"num_sigmas", 2}}},
@@ -128,6 +133,15 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   const bool per_sigma = get_bool(p["grid"], "per_sigma", "method.grid");
   for (double sigma : s.sigmas)  // at most res; the finest sigma gets res itself
     s.sigma_res.push_back(per_sigma ? std::max(8, static_cast<int>(std::ceil(s.res * s.sigmas.back() / sigma - 1e-9))) : s.res);
+  const json& measure = p["measure"];
+  if (!measure.is_string() || (measure != "grid" && measure != "tiles"))
+    throw config_error("method.measure", "expected \"grid\" or \"tiles\", got " + measure.dump());
+  s.measure_tiles = measure == "tiles";
+  if (s.measure_tiles && shape.rectangle)
+    throw config_error("method.measure", "\"tiles\" measures the paper's u x u square; a rectangle output "
+                                         "(output.size or output.points) takes output.border instead");
+  if (s.measure_tiles && !p["map_terms"].empty())
+    throw config_error("method.measure", "\"tiles\" does not combine with method.map_terms (their maps are the whole grid's)");
   if (!shape.rectangle) {
     s.out_res = s.upscale * s.res;
     s.out_scale = s.upscale;
@@ -213,12 +227,13 @@ void GaborPipeline::redraw_network(uint64_t seed) {
 void GaborPipeline::set_targets(const torch::Tensor& ex_points, const torch::Tensor& ex_weights, double sigma) {
   torch::NoGradGuard ng;
   auto f = net_->forward(ex_rast_->forward(ex_points, ex_weights, sigma, {}));
-  loss_.set_target(f, LossContext{s_.upscale, seed_});
+  // Tiles are the exemplar's size: their features match the targets' one to one.
+  loss_.set_target(f, LossContext{s_.measure_tiles ? 1 : s_.upscale, seed_});
 }
 
-torch::Tensor GaborPipeline::draw_jitter(std::mt19937_64& rng) const {
+torch::Tensor GaborPipeline::draw_jitter(std::mt19937_64& rng, bool tile) const {
   if (!s_.jitter || !out_rast_->uses_jitter()) return {};
-  const int64_t R = out_res_;
+  const int64_t R = tile ? res_ : out_res_;
   const float amp = 1.0f / static_cast<float>(R + 1);
   std::uniform_real_distribution<float> unif(-1.0f, 1.0f);
   auto j = torch::empty({R * R, 2});

@@ -36,6 +36,9 @@ struct GaborSettings {
   double out_scale = 0;
   double window_margin = 0;     // rectangles: exemplar units reserved on each side of a window's interior
   bool statistics_in_output = false;  // rectangles: the losses measure the grid's part inside the output only
+  // method.measure = "tiles" (the paper's u x u torus only): the output measured as u x u
+  // exemplar-sized tiles cut at a random offset, each on the exemplar's grid (optim/random_tiles.hpp).
+  bool measure_tiles = false;
   // The grid of each sigma stage (coarse -> fine): `res` and `out_res` at every stage, or with
   // method.grid.per_sigma coarser grids at the coarser sigmas, keeping the finest stage's
   // grid positions per sigma (the Gabor frequencies scale with 1/sigma, so each stage's
@@ -64,11 +67,15 @@ class GaborPipeline {
   // The three stages of one output evaluation.
   torch::Tensor output_maps(const torch::Tensor& points, const torch::Tensor& weights, double sigma,
                             const torch::Tensor& jitter) { return out_rast_->forward(points, weights, sigma, jitter); }
+  // A tile of the output the exemplar's size, rasterised as the exemplar is (method.measure = "tiles").
+  torch::Tensor tile_maps(const torch::Tensor& points, const torch::Tensor& weights, double sigma,
+                          const torch::Tensor& jitter) { return ex_rast_->forward(points, weights, sigma, jitter); }
   Features features(const torch::Tensor& maps) { return net_->forward(maps); }
   torch::Tensor loss(const Features& f) { return loss_.forward(f); }
-  // Independent uniform offsets in [-1, 1] / (out_res + 1) per grid position and axis, or an
-  // undefined tensor when jitter is off or meaningless for the rasterizer.
-  torch::Tensor draw_jitter(std::mt19937_64& rng) const;
+  // Independent uniform offsets in [-1, 1] / (R + 1) per grid position and axis of the output
+  // grid (R = out_res) or of a tile (R = res), or an undefined tensor when jitter is off or
+  // meaningless for the rasterizer.
+  torch::Tensor draw_jitter(std::mt19937_64& rng, bool tile = false) const;
   // A new random network (the published code draws one per class for attribute scenes).
   void redraw_network(uint64_t seed);
   // Neighbours per grid position for the next stage (rebuilds the rasterizers if it changes).
