@@ -28,6 +28,20 @@ struct Found {
   std::string dir, group, group_label;
 };
 
+// How gather evaluates an output itself (a reference; every run with --protocol): the
+// evaluation's defaults, the protocol if one is asked for, no curves.
+EvalOptions eval_options(const GatherOptions& g) {
+  EvalOptions e;
+  e.include_curves = false;
+  if (g.protocol) e.protocol = *g.protocol;
+  return e;
+}
+
+std::string evaluation_text(const GatherOptions& g) {
+  return g.protocol ? std::string("every output evaluated again, protocol ") + patch_protocol_name(*g.protocol)
+                    : std::string("each run's metrics.json");
+}
+
 // The numbers of one evaluation (metrics.json), as "<scope>/<metric>".
 std::vector<std::pair<std::string, double>> metric_values(const nlohmann::json& m) {
   std::vector<std::pair<std::string, double>> v;
@@ -136,11 +150,16 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
   for (const Found& f : found) {
     const std::string canonical = fs::weakly_canonical(f.dir).string();
     if (!seen.insert(canonical).second) continue;  // named twice
-    if (!fs::exists(f.dir + "/metrics.json")) {
-      r.unfinished.push_back(f.dir + " (no metrics.json: evaluate was off)");
+    GatheredRun run{f.dir, f.group, f.group_label, 0, {}};
+    if (options.protocol) {  // measured again, the same way for every run
+      const RunOutcome o = load_run(f.dir);
+      run.values = metric_values(evaluate(o.exemplar, o.output, eval_options(options)));
+    } else if (fs::exists(f.dir + "/metrics.json")) {
+      run.values = metric_values(read_run_json(f.dir + "/metrics.json"));
+    } else {
+      r.unfinished.push_back(f.dir + " (no metrics.json: evaluate was off; --protocol measures it)");
       continue;
     }
-    GatheredRun run{f.dir, f.group, f.group_label, 0, metric_values(read_run_json(f.dir + "/metrics.json"))};
     const nlohmann::json info = read_run_json(f.dir + "/run.json");
     run.seed = info.value("seed", uint64_t{0});
     run.values.push_back({"run/seconds", info.value("total_seconds", 0.0)});
@@ -199,7 +218,7 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
     if (const auto file = reference_file.find(exemplar_of[g]); file != reference_file.end()) {
       const auto first = std::find_if(r.runs.begin(), r.runs.end(), [&](const GatheredRun& x) { return x.group == g; });
       const PointSet exemplar = load_run(first->dir).exemplar;
-      for (const auto& [k, v] : metric_values(evaluate(exemplar, read_points(file->second)))) ref[k] = v;
+      for (const auto& [k, v] : metric_values(evaluate(exemplar, read_points(file->second), eval_options(options)))) ref[k] = v;
     }
     for (auto& s : by_group[g]) {
       const Summary sum = summarize(s.values);
@@ -323,6 +342,7 @@ nlohmann::json to_json(const GatherResult& r) {
                      {"n", c.n}, {"n_baseline", c.n_baseline}, {"ratio_of_medians", c.ratio}, {"bootstrap_5", c.lo},
                      {"bootstrap_95", c.hi}});
   return {{"references", refs}, {"bound", r.options.bound}, {"runs", runs}, {"summaries", sums},
+          {"evaluation", r.options.protocol ? std::string(patch_protocol_name(*r.options.protocol)) : std::string("metrics.json")},
           {"baselines", r.options.baselines}, {"comparisons", comps}, {"left_out", r.unfinished}};
 }
 
@@ -365,7 +385,7 @@ std::vector<std::pair<std::string, std::string>> write_plots(const GatherResult&
 }  // namespace
 
 std::string format_gather(const GatherResult& r) {
-  std::string s;
+  std::string s = "evaluation: " + evaluation_text(r.options) + "\n";
   char line[512];
   std::snprintf(line, sizeof line, "%-40s %-12s %-22s %3s %11s %11s %11s %9s %7s\n", "group", "scope", "metric", "n", "median",
                 "q1", "q3", "ref", "ratio");
@@ -417,7 +437,8 @@ void write_gather(const GatherResult& r, const std::string& out, bool force) {
     html.add_paragraph("Every finished run, grouped by configuration with the seeds pooled: one dot per seed, the box from "
                        "the first to the third quartile with the median, whiskers to the extremes.");
     std::vector<std::pair<std::string, std::string>> kv = {{"runs", std::to_string(r.runs.size())},
-                                                           {"left out (unfinished)", std::to_string(r.unfinished.size())}};
+                                                           {"left out (unfinished)", std::to_string(r.unfinished.size())},
+                                                           {"evaluation", evaluation_text(r.options)}};
     if (!r.options.references.empty()) {
       kv.push_back({"reference", references_text(r.options)});
       kv.push_back({"bound", num(r.options.bound, "%g") + " x the reference's value"});

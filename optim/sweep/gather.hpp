@@ -11,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/metrics/eval_protocol.hpp"
+
 namespace ppsynth {
 
 // A reference output (a published one, say) and the exemplar it was synthesised from: it is
@@ -30,6 +32,10 @@ struct GatherOptions {
   // Group labels to compare the other groups of their exemplar with ("lines": the default
   // config's group): ratio of medians and its bootstrap interval (below).
   std::vector<std::string> baselines;
+  // Unset: each run's metrics.json (the evaluation its run made). Set: every run's output
+  // (and every reference) evaluated again against its exemplar with this protocol, e.g.
+  // crops for finished u = 2 runs measured away from their frame (docs/large_outputs.md).
+  std::optional<PatchProtocol> protocol;
 };
 
 // One finished run and the numbers taken from it.

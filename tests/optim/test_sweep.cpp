@@ -8,7 +8,9 @@
 #include <fstream>
 
 #include "core/error.hpp"
+#include "core/metrics/evaluation.hpp"
 #include "core/metrics/summary_stats.hpp"
+#include "optim/run/run_store.hpp"
 #include "optim/sweep/gather.hpp"
 #include "optim/sweep/sweep_executors.hpp"
 #include "optim/sweep/sweep_plan.hpp"
@@ -148,6 +150,25 @@ TEST_CASE("tasks run rows, skip finished ones, and gather pools seeds against a 
   for (const char* f : {"gather.csv", "gather.md", "gather.json", "per_seed.csv", "index.html"}) CHECK(fs::exists(d / "g" / f));
   CHECK_THROWS_WITH(write_gather(g, (d / "g").string(), false), Catch::Contains("--force"));
   CHECK_NOTHROW(write_gather(g, (d / "g").string(), true));
+
+  // --protocol: every output (and the reference) evaluated again, here by 20 random crops,
+  // giving what `ppsynth eval --protocol crops` gives, in place of metrics.json's quadrants.
+  GatherOptions c = o;
+  c.protocol = PatchProtocol::Crops;
+  const GatherResult gc = gather_runs({dir}, c);
+  const auto crops = std::find_if(gc.summaries.begin(), gc.summaries.end(),
+                                  [](const MetricSummary& s) { return s.scope == "all" && s.metric == "pcf_mse"; });
+  REQUIRE(crops != gc.summaries.end());
+  REQUIRE(crops->seeds == std::vector<uint64_t>{3, 5, 6});
+  EvalOptions e;
+  e.protocol = PatchProtocol::Crops;
+  e.include_curves = false;
+  const RunOutcome seed3 = load_run((fs::path(dir) / m.rows[0].dir).string());
+  CHECK(crops->values[0] == Approx(evaluate(seed3.exemplar, seed3.output, e)["all"]["pcf_mse"].get<double>()));
+  CHECK(crops->values[0] != Approx(pcf->values[0]));  // the quadrants said something else
+  REQUIRE(crops->reference);
+  CHECK(*crops->reference == Approx(crops->values[0]));
+  CHECK(format_gather(gc).find("protocol crops") != std::string::npos);
 }
 
 TEST_CASE("summaries: NumPy's quantiles, non-finite values left out", "[sweep][stats]") {

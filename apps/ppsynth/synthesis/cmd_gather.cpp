@@ -1,4 +1,5 @@
-// `ppsynth gather DIR... [-o OUT] [--reference [EXEMPLAR=]FILE ...] [--bound B] [--baseline GROUP ...] [--force]`
+// `ppsynth gather DIR... [-o OUT] [--reference [EXEMPLAR=]FILE ...] [--bound B] [--baseline GROUP ...]
+//                 [--protocol quadrants|crops|auto] [--force]`
 // Statistics over seeds of every finished run under the directories (sweeps, run directories,
 // folders of them): prints the table; with -o writes gather.csv, gather.md, gather.json,
 // per_seed.csv and index.html (strip plots). The library: optim/sweep/gather.hpp.
@@ -15,6 +16,7 @@ struct Opts {
   std::string out;
   std::vector<std::string> references, baselines;
   double bound = 1.25;
+  std::string protocol;
   bool force = false;
 };
 
@@ -30,8 +32,12 @@ ppsynth::app::RunFn setup(CLI::App& cmd) {
   cmd.add_option("--baseline", o->baselines,
                  "a group label (e.g. the default config's, \"lines\"): every group of its exemplar gets the ratio of its "
                  "medians to the baseline's with a 90 % bootstrap interval (repeatable)");
+  cmd.add_option("--protocol", o->protocol,
+                 "evaluate every run's output (and reference) again with this protocol instead of reading its metrics.json: "
+                 "quadrants (the paper's), crops (20 random exemplar-sized crops: the pattern away from the output's frame) or auto");
   return [o]() -> int {
     ppsynth::GatherOptions opts;
+    if (!o->protocol.empty()) opts.protocol = ppsynth::parse_patch_protocol(o->protocol);
     opts.baselines = o->baselines;
     for (const auto& r : o->references) opts.references.push_back(ppsynth::parse_reference(r));
     opts.bound = o->bound;
