@@ -12,21 +12,13 @@
 #include "optim/method.hpp"
 #include "optim/synthesis_state.hpp"
 #include "tests/support/same_bits.hpp"
+#include "tests/support/small_exemplar.hpp"
 
 using namespace ppsynth;
 using ppsynth::test::same_bits;
 
 namespace {
 
-PointSet exemplar(int classes, bool disks) {
-  PointSet ps;
-  if (disks) ps.add_attribute("radius");
-  for (int c = 0; c < classes; ++c) {
-    auto pts = jittered_grid_points(c == 0 ? 16 : 9, 11 + c);
-    for (size_t i = 0; i < pts.size(); ++i) ps.add(pts[i], c, disks ? std::vector<double>{0.02 + 0.01 * c} : std::vector<double>{});
-  }
-  return ps;
-}
 
 struct Run {
   PointSet output;
@@ -59,7 +51,7 @@ Run synthesize(const PointSet& ex, const std::string* resume = nullptr, const st
 TEST_CASE("a run resumed from any checkpoint ends bit for bit as the uninterrupted one", "[optim][checkpoint]") {
   for (auto [classes, disks] : {std::pair{1, false}, std::pair{2, false}, std::pair{2, true}}) {
     INFO(classes << " classes, disks " << disks);
-    const PointSet ex = exemplar(classes, disks);
+    const PointSet ex = test::small_exemplar(classes, disks);
     const Run whole = synthesize(ex);
     // checkpoints: every iteration plus every stage boundary
     REQUIRE(whole.checkpoints.size() > 2u * classes * 2);
@@ -87,7 +79,7 @@ TEST_CASE("a stage stopped by the pattern rule resumes to the same stopping iter
   spec["quick"]["max_iterations"] = 80;
   spec["grid"] = {{"per_sigma", true}};
   spec["convergence"] = {{"type", "pattern"}, {"window", 10}, {"check_every", 5}, {"threshold", 0.5}, {"min_iterations", 0}};
-  const PointSet ex = exemplar(1, false);
+  const PointSet ex = test::small_exemplar(1, false);
   const Run whole = synthesize(ex, nullptr, nullptr, spec);
   REQUIRE(whole.stats["stages"].size() == 2);
   const int first_stage = whole.stats["stages"][0]["iterations"];
@@ -111,7 +103,7 @@ TEST_CASE("a stage that ends on its best iterate ends there, and resumes to the 
   spec["quick"]["max_iterations"] = 60;
   spec["quick"]["num_sigmas"] = 1;
   spec["convergence"] = {{"type", "pattern"}, {"window", 1000}, {"check_every", 5}, {"min_iterations", 0}};
-  const PointSet ex = exemplar(1, false);
+  const PointSet ex = test::small_exemplar(1, false);
   const Run last = synthesize(ex, nullptr, nullptr, spec);
   spec["convergence"]["end_on"] = "best";
   const Run best = synthesize(ex, nullptr, nullptr, spec);
@@ -129,7 +121,7 @@ TEST_CASE("a stage that ends on its best iterate ends there, and resumes to the 
 }
 
 TEST_CASE("the stop flag saves a checkpoint and throws; resuming from it finishes the run", "[optim][checkpoint]") {
-  const PointSet ex = exemplar(2, false);
+  const PointSet ex = test::small_exemplar(2, false);
   const Run whole = synthesize(ex);
   std::atomic<bool> stop{true};  // stop at the end of the first iteration
   Run stopped;
@@ -147,7 +139,7 @@ TEST_CASE("the stop flag saves a checkpoint and throws; resuming from it finishe
 }
 
 TEST_CASE("the resume comparison sees a perturbed generator, optimiser or position", "[optim][checkpoint]") {
-  const PointSet ex = exemplar(1, false);
+  const PointSet ex = test::small_exemplar(1, false);
   const Run whole = synthesize(ex);
   // a checkpoint in the middle of the first stage: the optimiser has moments, the generator has drawn
   SynthesisState st = deserialize_state(whole.checkpoints[2], "test");
@@ -180,8 +172,8 @@ TEST_CASE("the resume comparison sees a perturbed generator, optimiser or positi
 }
 
 TEST_CASE("a checkpoint of another synthesis is refused", "[optim][checkpoint]") {
-  const Run one = synthesize(exemplar(1, false));
-  const PointSet other = exemplar(2, false);
+  const Run one = synthesize(test::small_exemplar(1, false));
+  const PointSet other = test::small_exemplar(2, false);
   CHECK_THROWS_AS(synthesize(other, &one.checkpoints[1]), InputError);
   const std::string garbage = "not a checkpoint";
   CHECK_THROWS_WITH(synthesize(other, &garbage), Catch::Contains("checkpoint"));

@@ -16,22 +16,13 @@
 #include "optim/run/run_config.hpp"
 #include "optim/synthesis_state.hpp"
 #include "tests/support/same_bits.hpp"
+#include "tests/support/small_exemplar.hpp"
 
 using namespace ppsynth;
 using ppsynth::test::same_bits;
 
 namespace {
 
-PointSet exemplar(int classes, bool disks) {
-  PointSet ps;
-  if (disks) ps.add_attribute("radius");
-  for (int c = 0; c < classes; ++c) {
-    auto pts = jittered_grid_points(c == 0 ? 16 : 9, 21 + c);
-    for (size_t i = 0; i < pts.size(); ++i)
-      ps.add(pts[i], c, disks ? std::vector<double>{0.02 + 0.01 * c + 0.005 * (i % 2)} : std::vector<double>{});
-  }
-  return ps;
-}
 
 json method_params(const json& spec) {
   json m;
@@ -101,7 +92,7 @@ TEST_CASE("the cut partitions the torus's points into u x u tiles, each in its o
 }
 
 TEST_CASE("a tile holding the exemplar itself has the exemplar's loss: zero, where the whole grid's is not", "[optim][tiles]") {
-  const PointSet ex = exemplar(1, false);
+  const PointSet ex = test::small_exemplar(1, false);
   json p = method_params(json{{"type", "gabor"}, {"measure", "tiles"}, {"jitter", false}});
   p["grid"]["res"] = 32;
   p["feature_net"]["channels"] = 8;
@@ -134,7 +125,7 @@ TEST_CASE("a tile holding the exemplar itself has the exemplar's loss: zero, whe
 TEST_CASE("a tiles run resumes from any checkpoint bit for bit, and differs from the whole grid's", "[optim][tiles][checkpoint]") {
   for (auto [classes, disks] : {std::pair{1, false}, std::pair{2, true}}) {
     INFO(classes << " classes, disks " << disks);
-    const PointSet ex = exemplar(classes, disks);
+    const PointSet ex = test::small_exemplar(classes, disks);
     auto run = [&](const std::string& measure, const std::string* resume, std::vector<std::string>* saved) {
       auto method = MethodRegistry::instance().create(
           json{{"type", "gabor"}, {"measure", measure},
@@ -160,7 +151,7 @@ TEST_CASE("a tiles run resumes from any checkpoint bit for bit, and differs from
 }
 
 TEST_CASE("method.measure is refused where it means nothing, naming the key", "[optim][tiles]") {
-  const PointSet ex = exemplar(1, false);
+  const PointSet ex = test::small_exemplar(1, false);
   OutputShape square;
   square.upscale = 2;
   CHECK_THROWS_WITH(resolve_gabor_settings(method_params(json{{"type", "gabor"}, {"measure", "quadrants"}}), ex, square, false),

@@ -15,6 +15,7 @@
 #include "optim/run/run_config.hpp"
 #include "optim/synthesis_state.hpp"
 #include "tests/support/same_bits.hpp"
+#include "tests/support/small_exemplar.hpp"
 #include "optim/window_plan.hpp"
 
 using namespace ppsynth;
@@ -22,16 +23,6 @@ using ppsynth::test::same_bits;
 
 namespace {
 
-PointSet exemplar(int classes, bool disks) {
-  PointSet ps;
-  if (disks) ps.add_attribute("radius");
-  for (int c = 0; c < classes; ++c) {
-    auto pts = jittered_grid_points(c == 0 ? 25 : 9, 11 + c);
-    for (size_t i = 0; i < pts.size(); ++i)
-      ps.add(pts[i], c, disks ? std::vector<double>{0.02 + 0.005 * (i % 3) + 0.01 * c} : std::vector<double>{});
-  }
-  return ps;
-}
 
 OutputShape shape_of(const json& output, const PointSet& ex) {
   json config = resolve_run_config(json{{"output", output}}, {});
@@ -79,7 +70,7 @@ Run synthesize(const PointSet& ex, const OutputShape& shape, int pixels, int ite
 }  // namespace
 
 TEST_CASE("output shapes: the paper's square, rectangles and point counts, with their errors", "[optim][windows]") {
-  const PointSet ex = exemplar(2, false);  // 25 + 9 points on the unit square
+  const PointSet ex = test::small_exemplar(2, false, 25, 0.005);  // 25 + 9 points on the unit square
   const OutputShape paper = shape_of(json::object(), ex);
   CHECK_FALSE(paper.rectangle);
   CHECK(paper.expected_points(ex) == 4 * 34);
@@ -143,7 +134,7 @@ TEST_CASE("window layout: interiors tile the canvas, overlaps hold two margins, 
 }
 
 TEST_CASE("a rectangle output: its domain, counts near the density's, classes and radii kept", "[optim][windows]") {
-  const PointSet ex = exemplar(2, true);
+  const PointSet ex = test::small_exemplar(2, true, 25, 0.005);
   const OutputShape shape = shape_of(json{{"size", {3, 1.5}}}, ex);
   const Run run = synthesize(ex, shape, 24, 3);  // 24 positions = 1.5 units: 2 x 1 windows and more
   const PointSet& out = run.output;
@@ -163,13 +154,13 @@ TEST_CASE("a rectangle output: its domain, counts near the density's, classes an
   }
 
   // A published border keeps the count exact: the canvas is the rectangle.
-  const OutputShape exact = shape_of(json{{"points", 200}, {"border", "published"}}, exemplar(1, false));
-  const Run counted = synthesize(exemplar(1, false), exact, 24, 2);
+  const OutputShape exact = shape_of(json{{"points", 200}, {"border", "published"}}, test::small_exemplar(1, false, 25, 0.005));
+  const Run counted = synthesize(test::small_exemplar(1, false, 25, 0.005), exact, 24, 2);
   CHECK(counted.output.size() == 200);
 }
 
 TEST_CASE("the exemplar-context border: exact counts inside the rectangle, the pad frozen and left out", "[optim][windows]") {
-  const PointSet ex = exemplar(2, true);
+  const PointSet ex = test::small_exemplar(2, true, 25, 0.005);
   const OutputShape shape = shape_of(json{{"size", {3, 1.5}}, {"border", "context"}}, ex);
   REQUIRE(shape.exemplar_pad);
   REQUIRE(shape.pad > 0);
@@ -209,7 +200,7 @@ TEST_CASE("the exemplar-context border: exact counts inside the rectangle, the p
 }
 
 TEST_CASE("window statistics \"output\": the losses measure the grid's part inside the output only", "[optim][windows]") {
-  const PointSet ex = exemplar(2, true);
+  const PointSet ex = test::small_exemplar(2, true, 25, 0.005);
   // Where every window grid lies inside the output (a published border: the canvas is the
   // output), the measured part is the whole grid: the same run, bit for bit.
   const OutputShape exact = shape_of(json{{"size", {2.5, 1.2}}, {"border", "published"}}, ex);
@@ -229,7 +220,7 @@ TEST_CASE("window statistics \"output\": the losses measure the grid's part insi
 }
 
 TEST_CASE("a window run resumed from any checkpoint ends bit for bit as the uninterrupted one", "[optim][windows][checkpoint]") {
-  const PointSet ex = exemplar(2, true);
+  const PointSet ex = test::small_exemplar(2, true, 25, 0.005);
   const std::string border = GENERATE(as<std::string>{}, "clean", "context");
   const OutputShape shape = shape_of(json{{"size", {2.5, 1.2}}, {"border", border}}, ex);
   const Run whole = synthesize(ex, shape, 20, 3, nullptr, true);
@@ -250,7 +241,7 @@ TEST_CASE("no seam: where windows meet, the pattern's density and spacing are th
   // positions per unit): the interiors meet at several x. The points within 0.25 of a meeting
   // line against the others (both away from the output's border): density, mean
   // nearest-neighbour distance, and the share of points closer than 0.3 mean spacings.
-  const PointSet ex = exemplar(1, false);
+  const PointSet ex = test::small_exemplar(1, false, 25, 0.005);
   auto method = MethodRegistry::instance().create(
       json{{"type", "gabor"}, {"window", {{"pixels", 96}}},
            {"quick", {{"res", 32}, {"channels", 8}, {"max_iterations", 30}, {"num_sigmas", 2}}}},
@@ -298,7 +289,7 @@ TEST_CASE("no seam: where windows meet, the pattern's density and spacing are th
 }
 
 TEST_CASE("the window grid, the memory of an iteration, does not grow with the output", "[optim][windows]") {
-  const PointSet ex = exemplar(1, false);
+  const PointSet ex = test::small_exemplar(1, false, 25, 0.005);
   GaborSettings small, large;
   const json p = [] {
     json m;
@@ -315,7 +306,7 @@ TEST_CASE("the window grid, the memory of an iteration, does not grow with the o
 }
 
 TEST_CASE("per-sigma grids: coarser at coarse sigmas, the finest unchanged, margins for the farthest reach", "[optim][windows]") {
-  const PointSet ex = exemplar(1, false);
+  const PointSet ex = test::small_exemplar(1, false, 25, 0.005);
   auto params = [](bool per_sigma) {
     json m;
     MethodRegistry::instance().create(json{{"type", "gabor"}, {"grid", {{"per_sigma", per_sigma}}}}, "method", &m);
