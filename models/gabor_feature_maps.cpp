@@ -144,6 +144,7 @@ struct MapsParams {
   double sigma = 0;        // output-grid sigma (already divided by u)
   double frequency = 0;    // f = base_frequency u
   int k = 0;
+  int divisor = 0;  // each grid position's sum over its k neighbours is divided by this
   bool periodic = false;
   std::vector<GaborChannel> channels;
 
@@ -154,6 +155,7 @@ struct MapsParams {
     ctx->saved_data["sigma"] = sigma;
     ctx->saved_data["frequency"] = frequency;
     ctx->saved_data["k"] = static_cast<int64_t>(k);
+    ctx->saved_data["divisor"] = static_cast<int64_t>(divisor);
     ctx->saved_data["periodic"] = periodic;
     ctx->saved_data["channels"] = codes;
   }
@@ -162,6 +164,7 @@ struct MapsParams {
     mp.sigma = ctx->saved_data["sigma"].toDouble();
     mp.frequency = ctx->saved_data["frequency"].toDouble();
     mp.k = static_cast<int>(ctx->saved_data["k"].toInt());
+    mp.divisor = static_cast<int>(ctx->saved_data["divisor"].toInt());
     mp.periodic = ctx->saved_data["periodic"].toBool();
     for (int64_t code : ctx->saved_data["channels"].toIntVector())
       mp.channels.push_back({static_cast<int>(code / 1000) - 1, static_cast<int>(code % 1000) - 1});
@@ -181,7 +184,7 @@ void maps_forward(const torch::Tensor& P, const torch::Tensor& W, const torch::T
   const int64_t A = has_w ? W.size(1) : 0;
   const T inv2s2 = T(1) / (T(2) * T(mp.sigma) * T(mp.sigma));
   const T w2pi = T(kTwoPi * mp.frequency);
-  const T invk = T(1) / T(mp.k);
+  const T invk = T(1) / T(mp.divisor);
   const int C = static_cast<int>(mp.channels.size());
   const Phases<T> PP(P.data_ptr<T>(), P.size(0), w2pi), GP(grid.data_ptr<T>(), grid.size(0), w2pi);
   const Wrap<T> wrap(mp.periodic, w2pi);
@@ -217,7 +220,7 @@ void maps_backward(const torch::Tensor& P, const torch::Tensor& W, const torch::
   const T inv_s2 = T(1) / (T(mp.sigma) * T(mp.sigma));
   const T inv2s2 = inv_s2 / T(2);
   const T w2pi = T(kTwoPi * mp.frequency);
-  const T invk = T(1) / T(mp.k);
+  const T invk = T(1) / T(mp.divisor);
   const int C = static_cast<int>(mp.channels.size());
   // One accumulator per thread: grid positions scatter into shared points.
   const int nthreads = at::get_num_threads();
@@ -316,6 +319,7 @@ torch::Tensor GaborFeatureMapsImpl::forward(const torch::Tensor& points, const t
   mp->sigma = sigma / opt_.upscale;
   mp->frequency = opt_.base_frequency * opt_.upscale;
   mp->k = static_cast<int>(std::min<int64_t>(opt_.k, n));
+  mp->divisor = opt_.divisor > 0 ? opt_.divisor : mp->k;
   mp->periodic = opt_.periodic;
   mp->channels = gabor_channels(A, opt_.spatial_only);
   torch::Tensor grid = grid_.to(points.scalar_type());

@@ -33,6 +33,11 @@ struct GaborMapsOptions {
   int res = 128;           // grid positions per axis (the output grid is u * exemplar res)
   double upscale = 1.0;    // u
   int k = 30;              // neighbours per grid position
+  // Each position's sum over its neighbours is divided by this; 0: by the neighbours summed,
+  // min(k, N). A tile of the output (optim/random_tiles.hpp) holding fewer points than the
+  // exemplar's k takes the exemplar's divisor, so that a point weighs in it what it weighs
+  // in the exemplar's maps, whatever the tile's count.
+  int divisor = 0;
   double base_frequency = 1.5;
   bool spatial_only = false;
   bool periodic = false;   // unit torus: nearest images, minimum-image offsets

@@ -23,6 +23,7 @@ std::unique_ptr<Rasterizer> make(const json& p, const RasterizerArgs& a, bool sp
   o.res = a.res;
   o.upscale = a.upscale;
   o.k = a.k;
+  o.divisor = a.divisor;
   o.base_frequency = get_number(p, "base_frequency", "rasterizer");
   o.spatial_only = spatial_only;
   // Each raster chooses on its own: periodic output maps alone remove border parking but

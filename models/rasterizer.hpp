@@ -25,6 +25,7 @@ struct RasterizerArgs {
   double upscale = 1;   // u
   int k = 0;            // neighbours (Gabor): the method's "k", which defaults to GaborMapsOptions::k
   bool output = false;  // the raster of the synthesised points (not the exemplar's)
+  int divisor = 0;      // Gabor: GaborMapsOptions::divisor (0: the neighbours summed)
 };
 
 using RasterizerRegistry = Registry<Rasterizer, RasterizerArgs>;

@@ -204,6 +204,11 @@ void GaborPipeline::build_rasterizers() {
   RasterizerArgs ex_args{res_, 1.0, s_.k}, out_args{out_res_, s_.out_scale, s_.k, true};
   ex_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", ex_args, &resolved_rast_);
   out_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", out_args);
+  if (s_.measure_tiles) {
+    RasterizerArgs tile_args = ex_args;
+    tile_args.divisor = tile_divisor_;
+    tile_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", tile_args);
+  }
 }
 
 void GaborPipeline::set_neighbours(int k) {
@@ -226,6 +231,12 @@ void GaborPipeline::redraw_network(uint64_t seed) {
 
 void GaborPipeline::set_targets(const torch::Tensor& ex_points, const torch::Tensor& ex_weights, double sigma) {
   torch::NoGradGuard ng;
+  // A tile's maps divide as the exemplar's do: by its neighbours summed, min(k, its points).
+  const int divisor = static_cast<int>(std::min<int64_t>(s_.k, ex_points.size(0)));
+  if (s_.measure_tiles && divisor != tile_divisor_) {
+    tile_divisor_ = divisor;
+    build_rasterizers();
+  }
   auto f = net_->forward(ex_rast_->forward(ex_points, ex_weights, sigma, {}));
   // Tiles are the exemplar's size: their features match the targets' one to one.
   loss_.set_target(f, LossContext{s_.measure_tiles ? 1 : s_.upscale, seed_});

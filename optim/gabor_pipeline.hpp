@@ -69,7 +69,7 @@ class GaborPipeline {
                             const torch::Tensor& jitter) { return out_rast_->forward(points, weights, sigma, jitter); }
   // A tile of the output the exemplar's size, rasterised as the exemplar is (method.measure = "tiles").
   torch::Tensor tile_maps(const torch::Tensor& points, const torch::Tensor& weights, double sigma,
-                          const torch::Tensor& jitter) { return ex_rast_->forward(points, weights, sigma, jitter); }
+                          const torch::Tensor& jitter) { return tile_rast_->forward(points, weights, sigma, jitter); }
   Features features(const torch::Tensor& maps) { return net_->forward(maps); }
   torch::Tensor loss(const Features& f) { return loss_.forward(f); }
   // Independent uniform offsets in [-1, 1] / (R + 1) per grid position and axis of the output
@@ -91,7 +91,10 @@ class GaborPipeline {
   json p_;
   GaborSettings s_;
   uint64_t seed_;
-  std::unique_ptr<Rasterizer> ex_rast_, out_rast_;
+  // tile_rast_ (method.measure "tiles"): the exemplar's raster, dividing by the exemplar's
+  // neighbour count (tile_divisor_) even where a tile holds fewer points.
+  std::unique_ptr<Rasterizer> ex_rast_, out_rast_, tile_rast_;
+  int tile_divisor_ = 0;
   std::unique_ptr<FeatureNet> net_;
   CompositeLoss loss_;
   json resolved_rast_, resolved_net_;

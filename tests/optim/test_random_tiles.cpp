@@ -9,6 +9,7 @@
 
 #include "core/generators/lattices.hpp"
 #include "core/output_shape.hpp"
+#include "models/gabor_feature_maps.hpp"
 #include "models/point_tensor.hpp"
 #include "optim/gabor_pipeline.hpp"
 #include "optim/method.hpp"
@@ -120,6 +121,15 @@ TEST_CASE("a tile holding the exemplar itself has the exemplar's loss: zero, whe
   for (const auto& t : cut_into_tiles(out, 2, {0.13, 0.31}))
     shifted += pipe.loss(pipe.features(pipe.tile_maps(t.local, {}, s.sigmas.back(), {}))).item<double>() / 4;
   CHECK(shifted > 1e3 * std::max(tiled, 1e-12));
+
+  // A tile holding fewer points than the exemplar's k (16 here: every exemplar point) divides
+  // as the exemplar does, by 16, not by its own 12: a point weighs what it weighs there.
+  const auto twelve = positions_tensor(ex).slice(0, 0, 12);
+  GaborMapsOptions o;
+  o.res = 32;
+  GaborFeatureMaps own_count(o);  // divides by min(k, 12) = 12
+  const auto by_own = own_count->forward(twelve, {}, s.sigmas.back(), {});
+  CHECK(torch::allclose(pipe.tile_maps(twelve, {}, s.sigmas.back(), {}), by_own * (12.0 / 16.0), 1e-5, 1e-7));
 }
 
 TEST_CASE("a tiles run resumes from any checkpoint bit for bit, and differs from the whole grid's", "[optim][tiles][checkpoint]") {
