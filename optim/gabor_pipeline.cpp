@@ -43,6 +43,11 @@ json gabor_defaults() {
       // Not in the paper: losses on the positions themselves (optim/point_term.hpp), by
       // registered name: {"separation": {"weight": 1}, "pcf_match": {"weight": 10}}. Empty = the paper.
       {"terms", json::object()},
+      // Where the losses measure the output of the paper's u x u square: "grid" (its whole
+      // grid, as published: points park on its border) or "tiles" (u x u tiles of the
+      // exemplar's size cut at a random offset every iteration, each rasterised and measured
+      // as the exemplar is: no border; optim/random_tiles.hpp).
+      {"measure", "grid"},
       // Rectangle outputs ("output": {"size"} or {"points"}) run window by window
       // (optim/window_plan.hpp): windows of at most `pixels` grid positions across; a margin
       // of 3 sigma_max + `receptive_field` positions (the network's half-width) on each side
@@ -51,11 +56,6 @@ json gabor_defaults() {
       // measures its square) or "output" (the grid's part inside the output rectangle: the
       // pad of a clean or context border is seen by the maps but not measured, so its outer
       // edge, where plane maps lose a point's influence, asks nothing of the rectangle).
-      // Where the losses measure the output of the paper's u x u square: "grid" (its whole
-      // grid, as published: points park on its border) or "tiles" (u x u tiles of the
-      // exemplar's size cut at a random offset every iteration, each rasterised and measured
-      // as the exemplar is: no border; optim/random_tiles.hpp).
-      {"measure", "grid"},
       {"window", {{"pixels", 384}, {"margin", nullptr}, {"receptive_field", 16}, {"statistics", "grid"}}},
       // --quick: every knob that sets the cost, shrunk (tests and smoke runs).
       {"quick", {{"res", 24}, {"channels", 8}, {"max_iterations", 4}, {"num_sigmas", 2}}},

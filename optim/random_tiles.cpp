@@ -1,7 +1,5 @@
 #include "optim/random_tiles.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <random>
 
 namespace ppsynth {
