@@ -471,9 +471,7 @@ void GaborEngine::finish_stage(const Stage& stage) {
     if (state_.stage_best.defined()) state_.moving.copy_(state_.stage_best);
     auto w = confined(state_.moving).to(torch::kFloat64);
     auto a = w.accessor<double, 2>();
-    const Domain& g = window_.grid;
-    for (size_t i = 0; i < moving_idx_.size(); ++i)
-      out_[moving_idx_[i]] = window_.torus ? Vec2{a[i][0], a[i][1]} : Vec2{g.x0 + g.width() * a[i][0], g.y0 + g.height() * a[i][1]};
+    for (size_t i = 0; i < moving_idx_.size(); ++i) out_[moving_idx_[i]] = to_output(window_, a[i][0], a[i][1]);
   }
   ProgressEvent ev = event(stage);
   state_.stages.push_back({{"stage", stage.label}, {"class", stage.own_class}, {"sigma", stage.sigma}, {"k", stage.k},
@@ -511,8 +509,9 @@ PointSet GaborEngine::points_in_play() const {
   // A window's pattern is its grid's part of where points move: a frozen exemplar pad
   // ("context") is the exemplar's, and counting it would hide how the moving points change.
   PointSet ps(window_.torus ? Domain{} : intersection(g, shape_.moving_area()));
+  const int64_t nf = frozen_.size(0);
   for (int64_t i = 0; i < local.size(0); ++i) {
-    const Vec2 p = window_.torus ? Vec2{a[i][0], a[i][1]} : Vec2{g.x0 + g.width() * a[i][0], g.y0 + g.height() * a[i][1]};
+    const Vec2 p = i >= nf || window_.torus ? to_output(window_, a[i][0], a[i][1]) : Vec2{g.x0 + g.width() * a[i][0], g.y0 + g.height() * a[i][1]};
     if (inside(ps.domain(), p)) ps.add(p);  // a window's frozen context beyond its grid is not its pattern
   }
   return ps;

@@ -6,6 +6,13 @@
 
 namespace ppsynth {
 
+Vec2 to_output(const StageWindow& w, double u, double v) {
+  if (w.torus) return {u, v};
+  const Domain& g = w.grid;
+  const Domain& m = w.movable;
+  return {std::clamp(g.x0 + g.width() * u, m.x0, m.x1), std::clamp(g.y0 + g.height() * v, m.y0, m.y1)};
+}
+
 SynthesisPlan class_sigma_plan(const PointSet& exemplar, const GaborSettings& s,
                                const std::vector<std::vector<size_t>>& out_index) {
   SynthesisPlan plan;

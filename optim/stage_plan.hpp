@@ -32,6 +32,12 @@ struct StageWindow {
   int index = 0, count = 1;  // window i of n (0-based)
 };
 
+// A grid-local position (u, v) in output coordinates: on the torus as it is; in a window,
+// corner + side * (u, v) kept inside `movable`. Local positions are float: a point held at the
+// movable edge in float maps back up to a few 1e-8 beyond it, and an output point outside
+// its domain is one the readers refuse.
+Vec2 to_output(const StageWindow& window, double u, double v);
+
 struct Stage {
   std::string label;                   // "class 1/2 (id 0), sigma 1/4": progress and loss curves
   int group = 0;                       // stages of a group continue one optimisation of `moving`
