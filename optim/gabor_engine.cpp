@@ -401,7 +401,7 @@ torch::Tensor GaborEngine::evaluate(const Stage& stage) {
   const auto mv = confined(state_.moving);
   auto pts = frozen_.size(0) > 0 ? torch::cat({frozen_, mv}) : mv;
   torch::Tensor l, jitter;
-  if (s_.measure_tiles) {  // the mean over the tiles of the cut (optim/random_tiles.hpp)
+  if (s_.measure_tiles()) {  // the mean over the tiles of the cut (optim/random_tiles.hpp)
     const int u = s_.upscale;
     const auto tiles = cut_into_tiles(pts, u, tile_offset(ctx_.seed, state_.stage, state_.iteration, u));
     for (const auto& t : tiles) {
@@ -410,6 +410,7 @@ torch::Tensor GaborEngine::evaluate(const Stage& stage) {
       l = l.defined() ? l + v : v;
     }
   } else {
+    if (s_.measure == GaborSettings::Measure::rolled) pts = roll_torus(pts, tile_offset(ctx_.seed, state_.stage, state_.iteration, 1));
     jitter = pipe_->draw_jitter(jitter_rng_);
     l = measure(pts, out_weights_, jitter, stage, false);
   }

@@ -44,9 +44,11 @@ json gabor_defaults() {
       // registered name: {"separation": {"weight": 1}, "pcf_match": {"weight": 10}}. Empty = the paper.
       {"terms", json::object()},
       // Where the losses measure the output of the paper's u x u square: "grid" (its whole
-      // grid, as published: points park on its border) or "tiles" (u x u tiles of the
+      // grid, as published: points park on its border), "tiles" (u x u tiles of the
       // exemplar's size cut at a random offset every iteration, each rasterised and measured
-      // as the exemplar is: no border; optim/random_tiles.hpp).
+      // as the exemplar is) or "rolled" (the whole grid of the torus rolled by a random offset
+      // every iteration: the grid's edge never stays where a point could park on it;
+      // optim/random_tiles.hpp).
       {"measure", "grid"},
       // Rectangle outputs ("output": {"size"} or {"points"}) run window by window
       // (optim/window_plan.hpp): windows of at most `pixels` grid positions across; a margin
@@ -134,14 +136,16 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   for (double sigma : s.sigmas)  // at most res; the finest sigma gets res itself
     s.sigma_res.push_back(per_sigma ? std::max(8, static_cast<int>(std::ceil(s.res * s.sigmas.back() / sigma - 1e-9))) : s.res);
   const json& measure = p["measure"];
-  if (!measure.is_string() || (measure != "grid" && measure != "tiles"))
-    throw config_error("method.measure", "expected \"grid\" or \"tiles\", got " + measure.dump());
-  s.measure_tiles = measure == "tiles";
-  if (s.measure_tiles && shape.rectangle)
-    throw config_error("method.measure", "\"tiles\" measures the paper's u x u square; a rectangle output "
+  if (!measure.is_string() || (measure != "grid" && measure != "tiles" && measure != "rolled"))
+    throw config_error("method.measure", "expected \"grid\", \"tiles\" or \"rolled\", got " + measure.dump());
+  s.measure = measure == "tiles" ? GaborSettings::Measure::tiles
+              : measure == "rolled" ? GaborSettings::Measure::rolled : GaborSettings::Measure::grid;
+  const std::string named = "\"" + measure.get<std::string>() + "\"";
+  if (s.measure != GaborSettings::Measure::grid && shape.rectangle)
+    throw config_error("method.measure", named + " measures the paper's u x u square; a rectangle output "
                                          "(output.size or output.points) takes output.border instead");
-  if (s.measure_tiles && !p["map_terms"].empty())
-    throw config_error("method.measure", "\"tiles\" does not combine with method.map_terms (their maps are the whole grid's)");
+  if (s.measure != GaborSettings::Measure::grid && !p["map_terms"].empty())
+    throw config_error("method.measure", named + " does not combine with method.map_terms (their maps are the unrolled grid's)");
   if (!shape.rectangle) {
     s.out_res = s.upscale * s.res;
     s.out_scale = s.upscale;
@@ -204,7 +208,7 @@ void GaborPipeline::build_rasterizers() {
   RasterizerArgs ex_args{res_, 1.0, s_.k}, out_args{out_res_, s_.out_scale, s_.k, true};
   ex_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", ex_args, &resolved_rast_);
   out_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", out_args);
-  if (s_.measure_tiles) {
+  if (s_.measure_tiles()) {
     RasterizerArgs tile_args = ex_args;
     tile_args.divisor = tile_divisor_;
     tile_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", tile_args);
@@ -233,13 +237,13 @@ void GaborPipeline::set_targets(const torch::Tensor& ex_points, const torch::Ten
   torch::NoGradGuard ng;
   // A tile's maps divide as the exemplar's do: by its neighbours summed, min(k, its points).
   const int divisor = static_cast<int>(std::min<int64_t>(s_.k, ex_points.size(0)));
-  if (s_.measure_tiles && divisor != tile_divisor_) {
+  if (s_.measure_tiles() && divisor != tile_divisor_) {
     tile_divisor_ = divisor;
     build_rasterizers();
   }
   auto f = net_->forward(ex_rast_->forward(ex_points, ex_weights, sigma, {}));
   // Tiles are the exemplar's size: their features match the targets' one to one.
-  loss_.set_target(f, LossContext{s_.measure_tiles ? 1 : s_.upscale, seed_});
+  loss_.set_target(f, LossContext{s_.measure_tiles() ? 1 : s_.upscale, seed_});
 }
 
 torch::Tensor GaborPipeline::draw_jitter(std::mt19937_64& rng, bool tile) const {

@@ -36,9 +36,14 @@ struct GaborSettings {
   double out_scale = 0;
   double window_margin = 0;     // rectangles: exemplar units reserved on each side of a window's interior
   bool statistics_in_output = false;  // rectangles: the losses measure the grid's part inside the output only
-  // method.measure = "tiles" (the paper's u x u torus only): the output measured as u x u
-  // exemplar-sized tiles cut at a random offset, each on the exemplar's grid (optim/random_tiles.hpp).
-  bool measure_tiles = false;
+  // method.measure (the paper's u x u torus only for all but "grid"): "grid" measures the
+  // whole grid as published; "tiles" cuts the output at a random offset into u x u
+  // exemplar-sized tiles, each on the exemplar's grid; "rolled" measures the whole grid of
+  // the torus rolled by a random offset (optim/random_tiles.hpp). Both offsets change with
+  // every iteration.
+  enum class Measure { grid, tiles, rolled };
+  Measure measure = Measure::grid;
+  bool measure_tiles() const { return measure == Measure::tiles; }
   // The grid of each sigma stage (coarse -> fine): `res` and `out_res` at every stage, or with
   // method.grid.per_sigma coarser grids at the coarser sigmas, keeping the finest stage's
   // grid positions per sigma (the Gabor frequencies scale with 1/sigma, so each stage's

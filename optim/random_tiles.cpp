@@ -13,10 +13,14 @@ std::pair<double, double> tile_offset(uint64_t seed, int stage, int iteration, i
   return {ox, unif(rng)};
 }
 
-std::vector<Tile> cut_into_tiles(const torch::Tensor& points, int u, std::pair<double, double> offset) {
+torch::Tensor roll_torus(const torch::Tensor& points, std::pair<double, double> offset) {
   const auto shift = torch::tensor({{offset.first, offset.second}}, points.options().requires_grad(false));
-  auto s = points - shift;
-  s = s - torch::floor(s).detach();  // frac(p - offset): the torus, identity gradient
+  const auto s = points - shift;
+  return s - torch::floor(s).detach();
+}
+
+std::vector<Tile> cut_into_tiles(const torch::Tensor& points, int u, std::pair<double, double> offset) {
+  const auto s = roll_torus(points, offset);
   const auto cell = torch::clamp(torch::floor(s.detach() * u), 0, u - 1).to(torch::kInt64);  // N x 2
   const auto id = cell.select(1, 1) * u + cell.select(1, 0);
   std::vector<Tile> tiles;

@@ -1,5 +1,6 @@
 #pragma once
-// Random tiles: the output measured as the exemplar is (`method.measure: "tiles"`).
+// Random tiles: the output measured as the exemplar is (`method.measure: "tiles"`), and the
+// torus rolled under the whole grid (`"rolled"`).
 //
 // The exemplar is one window of a pattern that goes on past its edges; its maps fall off
 // near its border and its Gram and correlation targets include that fall-off. The paper
@@ -25,6 +26,12 @@ struct Tile {
 // The cut's offset in [0, 1/u)^2, a function of (seed, stage, iteration) alone: a resumed run
 // cuts where the uninterrupted one did without state in the checkpoint.
 std::pair<double, double> tile_offset(uint64_t seed, int stage, int iteration, int u);
+
+// `points` (N x 2, the unit torus, may require grad) rolled by `offset`: frac(p - offset),
+// with an identity gradient. `method.measure: "rolled"` measures the whole grid of these,
+// at tile_offset(seed, stage, iteration, 1): the grid's edge, where the paper's points park,
+// lies somewhere else at every iteration.
+torch::Tensor roll_torus(const torch::Tensor& points, std::pair<double, double> offset);
 
 // `points` (N x 2, the unit torus, may require grad) cut into u x u tiles at `offset`:
 // tile (i, j) holds the points p with frac(p - offset) in [i/u, (i+1)/u) x [j/u, (j+1)/u),

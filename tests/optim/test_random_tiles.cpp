@@ -1,7 +1,8 @@
-// method.measure "tiles" (optim/random_tiles.hpp): the u x u torus cut into exemplar-sized
-// tiles at a random offset, each measured as the exemplar is. The cut partitions the points
-// and keeps their gradient; a tile holding the exemplar itself has the exemplar's loss (zero);
-// a tiles run resumes bit for bit; and the key is refused where it has no meaning.
+// method.measure "tiles" and "rolled" (optim/random_tiles.hpp): the u x u torus cut into
+// exemplar-sized tiles at a random offset, each measured as the exemplar is, or rolled under
+// the whole grid. The cut partitions the points and keeps their gradient; a tile holding the
+// exemplar itself has the exemplar's loss (zero); the roll wraps and keeps the gradient; both
+// runs resume bit for bit; and the key is refused where it has no meaning.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -92,6 +93,24 @@ TEST_CASE("the cut partitions the torus's points into u x u tiles, each in its o
   CHECK(tile_offset(17, 2, 40, 2) != tile_offset(18, 2, 40, 2));
 }
 
+TEST_CASE("the rolled torus: frac(p - offset), every point in the unit square, the gradient kept", "[optim][tiles]") {
+  auto pts = torch::tensor({{0.05, 0.9}, {0.5, 0.5}, {0.99, 0.01}}, torch::kFloat32).set_requires_grad(true);
+  const auto off = tile_offset(17, 2, 40, 1);
+  CHECK(off.first < 1.0);
+  CHECK(off.second < 1.0);
+  const auto r = roll_torus(pts, {0.1, 0.2});
+  const auto a = r.detach();
+  CHECK(a[0][0].item<float>() == Approx(0.95));
+  CHECK(a[0][1].item<float>() == Approx(0.7));
+  CHECK(a[1][0].item<float>() == Approx(0.4));
+  CHECK(a[2][0].item<float>() == Approx(0.89));
+  CHECK(a[2][1].item<float>() == Approx(0.81));
+  CHECK(a.min().item<float>() >= 0.0f);
+  CHECK(a.max().item<float>() < 1.0f);
+  (r * torch::tensor({{1.0, 2.0}}, torch::kFloat32)).sum().backward();
+  CHECK(torch::equal(pts.grad(), torch::tensor({{1.0, 2.0}, {1.0, 2.0}, {1.0, 2.0}}, torch::kFloat32)));
+}
+
 TEST_CASE("a tile holding the exemplar itself has the exemplar's loss: zero, where the whole grid's is not", "[optim][tiles]") {
   const PointSet ex = test::small_exemplar(1, false);
   json p = method_params(json{{"type", "gabor"}, {"measure", "tiles"}, {"jitter", false}});
@@ -100,7 +119,7 @@ TEST_CASE("a tile holding the exemplar itself has the exemplar's loss: zero, whe
   OutputShape shape;
   shape.upscale = 2;
   const GaborSettings s = resolve_gabor_settings(p, ex, shape, false);
-  REQUIRE(s.measure_tiles);
+  REQUIRE(s.measure_tiles());
   GaborPipeline pipe(p, s, 9);
   pipe.set_targets(positions_tensor(ex), {}, s.sigmas.back());
   // The output: the exemplar tiled 2 x 2 on the unit square (each copy zoomed out by 2).
@@ -132,9 +151,10 @@ TEST_CASE("a tile holding the exemplar itself has the exemplar's loss: zero, whe
   CHECK(torch::allclose(pipe.tile_maps(twelve, {}, s.sigmas.back(), {}), by_own * (12.0 / 16.0), 1e-5, 1e-7));
 }
 
-TEST_CASE("a tiles run resumes from any checkpoint bit for bit, and differs from the whole grid's", "[optim][tiles][checkpoint]") {
+TEST_CASE("a tiles or rolled run resumes from any checkpoint bit for bit, and differs from the whole grid's", "[optim][tiles][checkpoint]") {
+  const std::string measure = GENERATE(as<std::string>{}, "tiles", "rolled");
   for (auto [classes, disks] : {std::pair{1, false}, std::pair{2, true}}) {
-    INFO(classes << " classes, disks " << disks);
+    INFO(measure << ", " << classes << " classes, disks " << disks);
     const PointSet ex = test::small_exemplar(classes, disks);
     auto run = [&](const std::string& measure, const std::string* resume, std::vector<std::string>* saved) {
       auto method = MethodRegistry::instance().create(
@@ -150,13 +170,16 @@ TEST_CASE("a tiles run resumes from any checkpoint bit for bit, and differs from
       return method->synthesize(ex, ctx);
     };
     std::vector<std::string> cps;
-    const PointSet whole = run("tiles", nullptr, &cps);
+    const PointSet whole = run(measure, nullptr, &cps);
     REQUIRE(cps.size() > 8);
     for (size_t i : {size_t{2}, cps.size() / 2, cps.size() - 2}) {
       INFO("checkpoint " << i);
-      CHECK(same_bits(run("tiles", &cps[i], nullptr), whole));
+      CHECK(same_bits(run(measure, &cps[i], nullptr), whole));
     }
+    CHECK(same_bits(run(measure, nullptr, nullptr), whole));  // the offsets are the seed's, not a clock's
     CHECK_FALSE(same_bits(run("grid", nullptr, nullptr), whole));
+    CHECK_FALSE(same_bits(run(measure == "tiles" ? "rolled" : "tiles", nullptr, nullptr), whole));
+    for (size_t i = 0; i < whole.size(); ++i) CHECK(whole.domain().contains(whole[i], 0.0));
   }
 }
 
@@ -167,10 +190,15 @@ TEST_CASE("method.measure is refused where it means nothing, naming the key", "[
   CHECK_THROWS_WITH(resolve_gabor_settings(method_params(json{{"type", "gabor"}, {"measure", "quadrants"}}), ex, square, false),
                     Catch::Contains("method.measure"));
   const OutputShape rect = resolve_output_shape(resolve_run_config(json{{"output", {{"size", {2, 2}}}}}, {}), ex);
-  CHECK_THROWS_WITH(resolve_gabor_settings(method_params(json{{"type", "gabor"}, {"measure", "tiles"}}), ex, rect, false),
-                    Catch::Contains("method.measure"));
-  CHECK_THROWS_WITH(resolve_gabor_settings(method_params(json{{"type", "gabor"}, {"measure", "tiles"},
-                                                              {"map_terms", {{"class_own", {{"weight", 1}}}}}}),
-                                           ex, square, false),
-                    Catch::Contains("method.map_terms"));
+  for (const char* measure : {"tiles", "rolled"}) {
+    INFO(measure);
+    CHECK_THROWS_WITH(resolve_gabor_settings(method_params(json{{"type", "gabor"}, {"measure", measure}}), ex, rect, false),
+                      Catch::Contains("method.measure"));
+    CHECK_THROWS_WITH(resolve_gabor_settings(method_params(json{{"type", "gabor"}, {"measure", measure},
+                                                                {"map_terms", {{"class_own", {{"weight", 1}}}}}}),
+                                             ex, square, false),
+                      Catch::Contains("method.map_terms"));
+  }
+  CHECK(resolve_gabor_settings(method_params(json{{"type", "gabor"}, {"measure", "rolled"}}), ex, square, false).measure ==
+        GaborSettings::Measure::rolled);
 }
