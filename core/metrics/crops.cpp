@@ -25,10 +25,11 @@ double density_zoom(const PointSet& exemplar, const PointSet& output) {
   return std::sqrt(density_ex / density_out);
 }
 
-CropPlan plan_crops(const PointSet& exemplar, const PointSet& output, int count, uint64_t seed) {
+CropPlan plan_crops(const PointSet& exemplar, const PointSet& output, int count, uint64_t seed, double zoom) {
   if (count < 1) throw InputError("crops: the crop count must be >= 1 (got " + std::to_string(count) + ")");
+  if (!(zoom >= 0) || !std::isfinite(zoom)) throw InputError("crops: the zoom must be a number > 0 (0: from the densities)");
   CropPlan p;
-  p.zoom = density_zoom(exemplar, output);
+  p.zoom = zoom > 0 ? zoom : density_zoom(exemplar, output);
   p.width = exemplar.domain().width() * p.zoom;
   p.height = exemplar.domain().height() * p.zoom;
   const Domain& d = output.domain();
@@ -38,7 +39,7 @@ CropPlan plan_crops(const PointSet& exemplar, const PointSet& output, int count,
     std::ostringstream s;
     s << "crops: an exemplar-sized crop is " << p.width << " x " << p.height << " output units (the exemplar's "
       << exemplar.domain().width() << " x " << exemplar.domain().height() << " at zoom " << p.zoom
-      << ", from the densities: " << exemplar.size() << " exemplar points, " << output.size()
+      << (zoom > 0 ? ", as given" : ", from the densities") << ": " << exemplar.size() << " exemplar points, " << output.size()
       << " output points) but the output domain is " << d.width() << " x " << d.height()
       << ": the output is smaller than the exemplar; evaluate it with --protocol quadrants";
     throw InputError(s.str());

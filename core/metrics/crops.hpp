@@ -8,7 +8,10 @@
 //   z = sqrt((N_ex / A_ex) / (N_out / A_out))      (output units per exemplar unit)
 // (all classes counted), so a crop holds about as many points as the exemplar: z = 1 for
 // outputs in exemplar units, 1/2 for the paper's u = 2 unit square. The zoom is read from the
-// two sets' densities rather than from a run config, so any pair of files can be evaluated.
+// two sets' densities when nothing else is known, so any pair of files can be evaluated; a run
+// knows its own (OutputShape::zoom(): the scale it synthesised at) and passes it, so that an
+// output made at another density than the exemplar's domain's (output.density "bounds") is
+// cut at its own scale and not rescaled back to the domain's density.
 // Placement: lower-left corners uniform in [x0, x1 - w] x [y0, y1 - h] of the output domain,
 // from a 64-bit Mersenne Twister seeded with `seed` (the top 53 bits of each draw: the same
 // windows on every platform for a seed). Crops may overlap; a crop that does not fit (the
@@ -29,7 +32,7 @@ struct CropPlan {
   std::vector<Domain> windows;     // `count` windows inside the output domain
 };
 
-// `count` crops (>= 1) of the exemplar's size at the densities' zoom, seeded.
-CropPlan plan_crops(const PointSet& exemplar, const PointSet& output, int count, uint64_t seed);
+// `count` crops (>= 1) of the exemplar's size at `zoom` (0: the densities'), seeded.
+CropPlan plan_crops(const PointSet& exemplar, const PointSet& output, int count, uint64_t seed, double zoom = 0);
 
 }  // namespace ppsynth

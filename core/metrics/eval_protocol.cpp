@@ -60,10 +60,10 @@ const char* patch_protocol_name(PatchProtocol p) {
 }
 
 ProtocolPlan plan_protocol(const PointSet& exemplar, const PointSet& output, PatchProtocol requested, int crops,
-                           uint64_t seed) {
+                           uint64_t seed, double zoom) {
   ProtocolPlan p;
   p.requested = requested;
-  p.zoom = density_zoom(exemplar, output);
+  p.zoom = zoom > 0 ? zoom : density_zoom(exemplar, output);
   if (requested == PatchProtocol::Auto) {
     p.used = quadrants_fit(exemplar, output, p.reason) ? PatchProtocol::Quadrants : PatchProtocol::Crops;
   } else {
@@ -76,7 +76,7 @@ ProtocolPlan plan_protocol(const PointSet& exemplar, const PointSet& output, Pat
     p.patch_height = 0.5 * output.domain().height();
     return p;
   }
-  CropPlan c = plan_crops(exemplar, output, crops, seed);
+  CropPlan c = plan_crops(exemplar, output, crops, seed, zoom);
   p.windows = std::move(c.windows);
   p.patch_width = c.width;
   p.patch_height = c.height;

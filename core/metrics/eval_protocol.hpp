@@ -32,15 +32,16 @@ struct ProtocolPlan {
   PatchProtocol used = PatchProtocol::Quadrants;  // never Auto
   std::string reason;            // why `used` (auto's rule in words, or "requested")
   std::vector<Domain> windows;   // on the output domain, one per patch
-  double zoom = 1;               // output units per exemplar unit, from the densities
+  double zoom = 1;               // output units per exemplar unit: given, or from the densities
   double patch_width = 0, patch_height = 0;  // output units
   uint64_t seed = 0;             // crops only
 };
 
 // Resolves `requested` for this pair and places the windows. InputError when crops do not
 // fit the output (crops.hpp).
+// `zoom` > 0: the output's scale as its run made it (crops.hpp); 0: from the densities.
 ProtocolPlan plan_protocol(const PointSet& exemplar, const PointSet& output, PatchProtocol requested,
-                           int crops = kDefaultCrops, uint64_t seed = kDefaultCropSeed);
+                           int crops = kDefaultCrops, uint64_t seed = kDefaultCropSeed, double zoom = 0);
 
 // evaluate()'s "protocol" object: { "name", "requested", "reason", "patches",
 // "crop_size": [w, h] (output units: a quadrant's or a crop's), "zoom" } and for crops

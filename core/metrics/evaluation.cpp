@@ -145,6 +145,8 @@ void check_eval_options(const EvalOptions& opt) {
   if (opt.protocol != PatchProtocol::Auto && opt.protocol != PatchProtocol::Quadrants &&
       opt.protocol != PatchProtocol::Crops)
     throw InputError("protocol (--protocol) must be auto, quadrants or crops");
+  if (!(opt.zoom >= 0) || !std::isfinite(opt.zoom))
+    throw InputError("zoom (--zoom) must be a number > 0 (output units per exemplar unit; 0 = from the densities)");
   if (opt.crops < 1 || opt.crops > kMaxCrops)
     throw InputError("crops (--crops) must be in 1.." + std::to_string(kMaxCrops) + " (got " +
                      std::to_string(opt.crops) + ")");
@@ -164,7 +166,7 @@ json evaluate(const PointSet& exemplar, const PointSet& output, const EvalOption
   r["exemplar"] = set_summary(exemplar);
   r["output"] = set_summary(output);
   r["upscale"] = std::sqrt(static_cast<double>(output.size()) / exemplar.size());
-  const ProtocolPlan plan = plan_protocol(exemplar, output, opt.protocol, opt.crops, opt.crop_seed);
+  const ProtocolPlan plan = plan_protocol(exemplar, output, opt.protocol, opt.crops, opt.crop_seed, opt.zoom);
   const bool crops = plan.used == PatchProtocol::Crops;
   r["protocol"] = protocol_json(plan);
   progress("all classes: PCF, Chamfer, Wasserstein in {} {}", plan.windows.size(), patch_protocol_name(plan.used));

@@ -70,6 +70,7 @@ struct EvalOptions {
   PatchProtocol protocol = PatchProtocol::Auto;  // eval_protocol.hpp
   int crops = kDefaultCrops;                     // crops protocol: how many crops
   uint64_t crop_seed = kDefaultCropSeed;         // crops protocol: where they go
+  double zoom = 0;  // crops protocol: output units per exemplar unit (a run's OutputShape::zoom()); 0: from the densities
 };
 
 // Refuses options no evaluation can use (InputError naming the option and the command's

@@ -58,7 +58,11 @@ SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec,
               (r.stats.is_object() ? r.stats.value("seconds_before_resume", 0.0) : 0.0);
   r.initialization = std::move(initial.initial);
   r.stages = stage_results(r.stats);
-  if (spec["evaluate"].get<bool>()) r.metrics = evaluate(exemplar, r.output);
+  if (spec["evaluate"].get<bool>()) {
+    EvalOptions eo;
+    eo.zoom = ctx.output.zoom();  // crops at the scale the output was made at, whatever its density
+    r.metrics = evaluate(exemplar, r.output, eo);
+  }
   return r;
 }
 

@@ -8,10 +8,12 @@
 #include <set>
 
 #include "core/atomic_file.hpp"
+#include "core/config/config.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/metrics/evaluation.hpp"
 #include "core/metrics/summary_stats.hpp"
+#include "core/output_shape.hpp"
 #include "core/render/plot_strips.hpp"
 #include "core/report/html_report.hpp"
 #include "core/run_directory.hpp"
@@ -34,6 +36,16 @@ EvalOptions eval_options(const GatherOptions& g) {
   EvalOptions e;
   e.include_curves = false;
   if (g.protocol) e.protocol = *g.protocol;
+  return e;
+}
+
+// A run's output evaluated at the scale it was made at (its config's output shape), as the
+// run's own metrics.json was: crops are exemplar-sized at that scale whatever its density.
+EvalOptions eval_options(const GatherOptions& g, const RunOutcome& run) {
+  EvalOptions e = eval_options(g);
+  json c = run.config;
+  c["output"] = merge(output_defaults(), c.value("output", json::object()));
+  e.zoom = resolve_output_shape(c, run.exemplar).zoom();
   return e;
 }
 
@@ -153,7 +165,7 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
     GatheredRun run{f.dir, f.group, f.group_label, 0, {}};
     if (options.protocol) {  // measured again, the same way for every run
       const RunOutcome o = load_run(f.dir);
-      run.values = metric_values(evaluate(o.exemplar, o.output, eval_options(options)));
+      run.values = metric_values(evaluate(o.exemplar, o.output, eval_options(options, o)));
     } else if (fs::exists(f.dir + "/metrics.json")) {
       run.values = metric_values(read_run_json(f.dir + "/metrics.json"));
     } else {

@@ -29,14 +29,15 @@ def _arrays(node):
 def evaluate(exemplar, output, bins: int = 100, r_max: float = 0.0, periodic_pcf: bool = False,
              curves: bool = True, spectrum: bool = False,
              wasserstein_exact_limit: int = _native.WASSERSTEIN_EXACT_PAIRS,
-             protocol: str = "auto", crops: int = 20, crop_seed: int = 1) -> dict:
+             protocol: str = "auto", crops: int = 20, crop_seed: int = 1, zoom: float = 0.0) -> dict:
     """Metrics of ``output`` against ``exemplar`` (PointSets, arrays or file names), the
     numbers of ``ppsynth eval --json`` on the same points.
 
     ``protocol``: ``"quadrants"`` (the paper's: the output's four quadrants are compared with
     the exemplar), ``"crops"`` (``crops`` random exemplar-sized crops placed from
     ``crop_seed``, for outputs of other sizes and shapes; rows then carry ``per_crop`` values
-    and ``pcf_mse_quartiles``), or ``"auto"`` (quadrants for a square output holding 3-5
+    and ``pcf_mse_quartiles``; ``zoom``: output units per exemplar unit, the crops' scale, 0 to
+    read it from the two densities), or ``"auto"`` (quadrants for a square output holding 3-5
     times the exemplar's points, else crops; ``"protocol"`` in the result says which). Keys:
 
     - ``"all"``: all classes together: ``pcf_mse``, ``wasserstein``, ``chamfer`` and ``pcf``
@@ -55,5 +56,5 @@ def evaluate(exemplar, output, bins: int = 100, r_max: float = 0.0, periodic_pcf
     out = _as_points(output, "output")
     text = _native.evaluate_json(ex._to_native(), out._to_native(), int(bins), float(r_max), bool(periodic_pcf),
                                  bool(curves), bool(spectrum), int(wasserstein_exact_limit), str(protocol), int(crops),
-                                 int(crop_seed))
+                                 int(crop_seed), float(zoom))
     return _arrays(json.loads(text))

@@ -12,7 +12,8 @@ void bind_evaluation(py::module_& m) {
   m.def(
       "evaluate_json",
       [](const py::dict& exemplar, const py::dict& output, int bins, double r_max, bool periodic_pcf, bool curves,
-         bool spectrum, size_t wasserstein_exact_limit, const std::string& protocol, int crops, uint64_t crop_seed) {
+         bool spectrum, size_t wasserstein_exact_limit, const std::string& protocol, int crops, uint64_t crop_seed,
+         double zoom) {
         EvalOptions opt;
         opt.pcf.bins = bins;
         opt.pcf.r_max = r_max;
@@ -23,6 +24,7 @@ void bind_evaluation(py::module_& m) {
         opt.protocol = parse_patch_protocol(protocol);
         opt.crops = crops;
         opt.crop_seed = crop_seed;
+        opt.zoom = zoom;
         check_eval_options(opt);
         const PointSet ex = from_python(exemplar, "exemplar");
         const PointSet out = from_python(output, "output");
@@ -33,7 +35,7 @@ void bind_evaluation(py::module_& m) {
       },
       py::arg("exemplar"), py::arg("output"), py::arg("bins"), py::arg("r_max"), py::arg("periodic_pcf"),
       py::arg("curves"), py::arg("spectrum"), py::arg("wasserstein_exact_limit"), py::arg("protocol"), py::arg("crops"),
-      py::arg("crop_seed"));
+      py::arg("crop_seed"), py::arg("zoom"));
   m.attr("WASSERSTEIN_EXACT_PAIRS") = kWassersteinExactPairs;
 }
 

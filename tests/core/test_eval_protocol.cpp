@@ -38,6 +38,30 @@ PointSet jittered_output(double w, double h, uint64_t seed) {
 
 }  // namespace
 
+TEST_CASE("crops at a given zoom: the output's own scale, not its density's", "[metrics][protocol]") {
+  const PointSet ex = exemplar64();
+  // 4 x 1 exemplar units holding 10 % more points than the exemplar's density: the densities
+  // say zoom 0.95 (crops holding 64 points); the run that made it says 1 (crops of its scale).
+  const PointSet out = jittered_grid_points(282, 5, Domain{0, 0, 4, 1});
+  const CropPlan by_density = plan_crops(ex, out, 20, 7);
+  CHECK(by_density.zoom == Approx(std::sqrt(256.0 / 282.0)));
+  const CropPlan given = plan_crops(ex, out, 20, 7, 1.0);
+  CHECK(given.zoom == 1.0);
+  for (const Domain& w : given.windows) {
+    CHECK(w.width() == Approx(1.0));
+    CHECK(w.height() == Approx(1.0));
+  }
+  EvalOptions o;
+  o.protocol = PatchProtocol::Crops;
+  o.include_curves = false;
+  o.zoom = 1.0;
+  CHECK(evaluate(ex, out, o)["protocol"]["zoom"].get<double>() == 1.0);
+  o.zoom = 0;
+  CHECK(evaluate(ex, out, o)["protocol"]["zoom"].get<double>() == Approx(by_density.zoom));
+  o.zoom = -1;
+  CHECK_THROWS_WITH(evaluate(ex, out, o), Catch::Contains("--zoom"));
+}
+
 TEST_CASE("crops: exemplar-sized windows inside the output, the same for a seed", "[metrics][protocol]") {
   const PointSet ex = exemplar64();
   const PointSet out = jittered_output(4, 1, 2);

@@ -24,7 +24,7 @@ struct Args {
   uint64_t crop_seed = ppsynth::kDefaultCropSeed;
   bool json = false, no_curves = false, spectrum = false, periodic = false;
   int bins = 100;
-  double r_max = 0;
+  double r_max = 0, zoom = 0;
   size_t wasserstein_pairs = ppsynth::kWassersteinExactPairs;
 };
 
@@ -50,11 +50,16 @@ ppsynth::app::RunFn setup(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--crops", a->crops, "crops protocol: number of crops, 1..10000")->capture_default_str();
   app.add_option("--crop-seed", a->crop_seed, "crops protocol: seed of the crop positions")->capture_default_str();
+  app.add_option("--zoom", a->zoom,
+                 "crops protocol: output units per exemplar unit (0.5 for the paper's u = 2 square, 1 for a rectangle in "
+                 "exemplar units; default 0: from the two densities, which rescales an output made at another density)")
+      ->capture_default_str();
   return [a]() {
     ppsynth::EvalOptions opt;
     opt.protocol = ppsynth::parse_patch_protocol(a->protocol);
     opt.crops = a->crops;
     opt.crop_seed = a->crop_seed;
+    opt.zoom = a->zoom;
     opt.include_curves = !a->no_curves;
     opt.spectrum = a->spectrum;
     opt.pcf.periodic = a->periodic;
