@@ -24,18 +24,11 @@ void OutputShape::require_no_exemplar_pad(const std::string& method) const {
                                             " takes \"clean\" or \"published\"");
 }
 
-void OutputShape::require_domain_density(const std::string& method) const {
-  if (density_scale != 1)
-    throw config_error("output.density", "\"bounds\" sets the count of a method that places points one by one; " + method +
-                                             " copies the exemplar, whose density it keeps: \"domain\"");
-}
-
 std::vector<size_t> OutputShape::class_counts(const PointSet& ex, const Domain& d) const {
   const auto per_class = ex.class_counts();
   std::vector<size_t> n(per_class.size(), 0);
-  // Output area in exemplar areas: the paper's unit square holds u^2 exemplars; "bounds"
-  // counts an exemplar's area as its points' bounding box.
-  const double exemplars = density_scale * (rectangle ? d.area() / ex.domain().area() : d.area() * upscale * upscale);
+  // Output area in exemplar areas: the paper's unit square holds u^2 exemplars.
+  const double exemplars = rectangle ? d.area() / ex.domain().area() : d.area() * upscale * upscale;
   for (size_t c = 0; c < per_class.size(); ++c)
     if (per_class[c] > 0) n[c] = std::max<size_t>(1, static_cast<size_t>(std::llround(per_class[c] * exemplars)));
   return n;
@@ -48,35 +41,23 @@ double OutputShape::expected_points(const PointSet& ex) const {
 }
 
 std::string OutputShape::describe() const {
-  char dens[64] = "";
-  if (density_scale != 1) std::snprintf(dens, sizeof dens, ", the points' bounds' density (x %.3f)", density_scale);
-  if (!rectangle)
-    return "u = " + std::to_string(upscale) + " (unit square, " + std::to_string(upscale * upscale) + " exemplars" + dens + ")";
-  char buf[224];
-  std::snprintf(buf, sizeof buf, "%g x %g exemplar units, %s border%s", width, height,
-                exemplar_pad ? "context" : clean_border ? "clean" : "published", dens);
+  if (!rectangle) return "u = " + std::to_string(upscale) + " (unit square, " + std::to_string(upscale * upscale) + " exemplars)";
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%g x %g exemplar units, %s border", width, height,
+                exemplar_pad ? "context" : clean_border ? "clean" : "published");
   return buf;
 }
 
 nlohmann::json output_defaults() {
   // null size and points: the paper's u x u output ("upscale").
   // "pad": null (= "auto") so that the config check takes a length as well as "auto".
-  return {{"size", nullptr}, {"points", nullptr}, {"border", "clean"}, {"pad", nullptr}, {"density", "domain"}};
+  return {{"size", nullptr}, {"points", nullptr}, {"border", "clean"}, {"pad", nullptr}};
 }
 
 OutputShape resolve_output_shape(const nlohmann::json& r, const PointSet& ex) {
   OutputShape o;
   o.upscale = get_int(r, "upscale", "");
   const auto& j = r.at("output");
-  const std::string density = get_string(j, "density", "output");
-  if (density == "bounds") {
-    const Domain b = ex.bounds();
-    if (ex.size() < 2 || !(b.area() > 0))
-      throw config_error("output.density", "\"bounds\" needs an exemplar whose points span an area");
-    o.density_scale = ex.domain().area() / b.area();
-  } else if (density != "domain") {
-    throw config_error("output.density", "expected \"domain\" or \"bounds\", got \"" + density + "\"");
-  }
   const bool has_size = !j["size"].is_null(), has_points = !j["points"].is_null();
   if (!has_size && !has_points) return o;
   if (has_size && has_points) throw config_error("output", "give \"size\" or \"points\", not both");
@@ -92,7 +73,7 @@ OutputShape resolve_output_shape(const nlohmann::json& r, const PointSet& ex) {
     if (!j["points"].is_number_integer() || j["points"].get<long long>() < 1)
       throw config_error("output.points", "expected a point count >= 1");
     if (ex.empty()) throw config_error("output.points", "the exemplar has no points, so no density");
-    const double area = static_cast<double>(j["points"].get<long long>()) * E.area() / (o.density_scale * static_cast<double>(ex.size()));
+    const double area = static_cast<double>(j["points"].get<long long>()) * E.area() / static_cast<double>(ex.size());
     const double aspect = E.width() / E.height();
     o.width = std::sqrt(area * aspect);
     o.height = std::sqrt(area / aspect);

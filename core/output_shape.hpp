@@ -16,12 +16,6 @@
 // "published" synthesises on the rectangle itself and keeps the method's border behaviour.
 // "pad": null or "auto" = 2 mean nearest-neighbour distances of the exemplar, or a length in
 // exemplar units (docs/large_outputs.md).
-// "density" (every output, the paper's square too): the exemplar's points per area, over
-// "domain" (its domain: the paper's u^2 |exemplar| on the square) or "bounds" (the bounding
-// box of its points). The Gabor paper's exemplars were scaled into [0.02, 0.98]: their
-// points fill 0.92 of the domain, and a lattice (`lines`) holds 13 % more points per area
-// than 20 per unit square; an output without a frame to absorb the difference stretches or
-// breaks the lattice (docs/large_outputs.md "The exemplar's density").
 //
 // Torch-free: every method (optim/method.hpp) gets one in its SynthesisContext.
 #include <string>
@@ -40,7 +34,6 @@ struct OutputShape {
   bool clean_border = true;    // rectangle only: synthesise padded, keep the crop
   bool exemplar_pad = false;   // "context": the pad holds the tiled exemplar, frozen
   double pad = 0;              // resolved pad (exemplar units; 0 when !clean_border)
-  double density_scale = 1;    // "density": "bounds" = domain area / bounding-box area; "domain" = 1
 
   // The domain of the output: the unit square, or [0, W] x [0, H].
   Domain domain() const;
@@ -51,15 +44,12 @@ struct OutputShape {
   Domain moving_area() const;
   // Methods without a frozen pad call this: "context" is then an error naming output.border.
   void require_no_exemplar_pad(const std::string& method) const;
-  // Methods whose count follows from copies of the exemplar call this: "bounds" is then an
-  // error naming output.density.
-  void require_domain_density(const std::string& method) const;
   // Output units per exemplar unit: 1/u for the paper's outputs, 1 for rectangles.
   double zoom() const { return rectangle ? 1.0 : 1.0 / upscale; }
   // Points of each exemplar class over `d` (an area in output units) at the exemplar's
   // density, rounded; at least 1 for a class of the exemplar.
   std::vector<size_t> class_counts(const PointSet& exemplar, const Domain& d) const;
-  // What the output will hold: u^2 x |exemplar| exactly ("domain" density), or the density's count.
+  // What the output will hold: u^2 x |exemplar| exactly, or the rectangle's expectation.
   double expected_points(const PointSet& exemplar) const;
   // The config's shape in words ("u = 2 (unit square)", "4 x 1 exemplar units, clean border").
   std::string describe() const;

@@ -89,16 +89,6 @@ PointSet PointSet::mapped_to(const Domain& target) const {
   return out;
 }
 
-Domain PointSet::bounds() const {
-  if (pos_.empty()) return {domain_.x0, domain_.y0, domain_.x0, domain_.y0};
-  Domain b{pos_[0].x, pos_[0].y, pos_[0].x, pos_[0].y};
-  for (const Vec2& p : pos_) {
-    b.x0 = std::min(b.x0, p.x), b.y0 = std::min(b.y0, p.y);
-    b.x1 = std::max(b.x1, p.x), b.y1 = std::max(b.y1, p.y);
-  }
-  return b;
-}
-
 PointSet PointSet::crop(const Domain& window) const {
   std::vector<size_t> idx;
   for (size_t i = 0; i < size(); ++i) {

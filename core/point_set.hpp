@@ -59,8 +59,6 @@ class PointSet {
   const std::vector<int>& class_labels() const { return class_labels_; }
   // Number of points of each class.
   std::vector<size_t> class_counts() const;
-  // The points' bounding box (the domain's corner, zero-sized, when empty).
-  Domain bounds() const;
 
   size_t num_attributes() const { return attr_names_.size(); }
   const std::vector<std::string>& attribute_names() const { return attr_names_; }

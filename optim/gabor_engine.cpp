@@ -42,8 +42,8 @@ PointSet initialize_in_blocks(const Initializer& init, size_t n, int cls, uint64
   return all;
 }
 
-// The output before optimisation: per class, the density's count over the moving area (u^2
-// points per exemplar point on the paper's unit square at output.density "domain"); attributes tiled from
+// The output before optimisation: per class, u^2 points per exemplar point (the paper's
+// unit square) or the density's count over the canvas (rectangles); attributes tiled from
 // the class's exemplar points (radius divided by u on the unit square); positions from the
 // initialiser or an explicit initialisation.
 PointSet initial_output(const PointSet& ex, const SynthesisContext& ctx, const Initializer& init,
@@ -60,7 +60,7 @@ PointSet initial_output(const PointSet& ex, const SynthesisContext& ctx, const I
   for (int c = 0; c < K; ++c) {
     PointSet ex_c = ex.subset_class(c);
     if (ex_c.empty()) continue;
-    const size_t n = counts[c];  // the square's: u^2 per exemplar point at the domain's density
+    const size_t n = shape.rectangle ? counts[c] : ex_c.size() * static_cast<size_t>(u * u);
     PointSet start;
     if (ctx.initialization) {
       start = ctx.initialization->subset_class(c);

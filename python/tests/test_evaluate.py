@@ -58,3 +58,10 @@ def test_evaluate_crops_equals_eval_json_on_a_rectangle(tmp_path):
     assert as_lists(r) == expected
     with pytest.raises(ValueError, match="protocol"):
         ppsynth.evaluate(ex, out, protocol="halves")
+    # zoom: the crops' scale as the run made the output, as `eval --zoom` takes it; 0 reads it
+    # from the densities (20 exemplar points per unit against 100 over 4 units: 0.89).
+    dense = ppsynth.PointSet(rng.random((100, 2)) * [4.0, 1.0], domain=(0, 0, 4, 1))
+    assert ppsynth.evaluate(ex, dense, bins=40, protocol="crops", zoom=1.0)["protocol"]["zoom"] == 1.0
+    assert ppsynth.evaluate(ex, dense, bins=40, protocol="crops")["protocol"]["zoom"] == pytest.approx((80 / 100) ** 0.5)
+    with pytest.raises(ValueError, match="zoom"):
+        ppsynth.evaluate(ex, dense, protocol="crops", zoom=-1.0)

@@ -99,41 +99,6 @@ TEST_CASE("output shapes: the paper's square, rectangles and point counts, with 
   CHECK_THROWS_WITH(resolve_run_config(json{{"output", {{"sizes", {1, 1}}}}}, {}), Catch::Contains("output.sizes"));
 }
 
-TEST_CASE("output density \"bounds\": the exemplar's points per area of their bounding box, for the square and rectangles", "[optim][windows]") {
-  // An exemplar scaled into [0.02, 0.98] as the Gabor paper's are: 25 + 9 points whose box is 0.96 x 0.96.
-  PointSet ex = test::small_exemplar(2, false, 25, 0.005);
-  const Domain b0 = ex.bounds();
-  for (auto& p : ex.positions()) p = {0.02 + 0.96 * (p.x - b0.x0) / b0.width(), 0.02 + 0.96 * (p.y - b0.y0) / b0.height()};
-  const Domain b = ex.bounds();
-  CHECK(b.x0 == Approx(0.02));
-  CHECK(b.x1 == Approx(0.98));
-  const double scale = 1 / (0.96 * 0.96);
-  const OutputShape square = shape_of(json{{"density", "bounds"}}, ex);
-  CHECK(square.density_scale == Approx(scale));
-  CHECK(square.class_counts(ex, square.domain()) == std::vector<size_t>{static_cast<size_t>(std::lround(100 * scale)),
-                                                                         static_cast<size_t>(std::lround(36 * scale))});
-  CHECK(shape_of(json::object(), ex).class_counts(ex, Domain{}) == std::vector<size_t>{100, 36});  // "domain": the paper's
-  const OutputShape strip = shape_of(json{{"size", {4, 1}}, {"density", "bounds"}}, ex);
-  CHECK(strip.class_counts(ex, strip.domain()) == std::vector<size_t>{static_cast<size_t>(std::lround(100 * scale)),
-                                                                       static_cast<size_t>(std::lround(36 * scale))});
-  // "points": the area that holds them at that density.
-  CHECK(shape_of(json{{"points", 3400}, {"density", "bounds"}}, ex).width == Approx(10 * 0.96));
-  CHECK_THROWS_WITH(shape_of(json{{"density", "box"}}, ex), Catch::Contains("output.density"));
-  PointSet one;
-  one.add({0.5, 0.5});
-  CHECK_THROWS_WITH(shape_of(json{{"density", "bounds"}}, one), Catch::Contains("output.density"));
-
-  // The Gabor method makes that count on the paper's square; copying methods refuse it.
-  const Run run = synthesize(ex, square, 32, 2);
-  CHECK(run.output.class_counts() == square.class_counts(ex, square.domain()));
-  for (const char* m : {"tiled_copy", "roveri2015"}) {
-    auto method = MethodRegistry::instance().create(json{{"type", m}}, "method");
-    SynthesisContext ctx;
-    ctx.output = square;
-    CHECK_THROWS_WITH(method->synthesize(ex, ctx), Catch::Contains("output.density"));
-  }
-}
-
 TEST_CASE("window layout: interiors tile the canvas, overlaps hold two margins, the movable part stays in the grid",
           "[optim][windows]") {
   const Domain canvas{-0.5, -0.5, 9.5, 4.5};

@@ -93,7 +93,6 @@ class Roveri2015Method : public SynthesisMethod {
     const OutputShape& shape = ctx.output;
     const bool rect = shape.rectangle;
     shape.require_no_exemplar_pad("roveri2015");
-    shape.require_domain_density("roveri2015");  // its count follows from patch copies
     if (!rect && shape.upscale < 1) throw InputError("roveri2015: upscale must be >= 1");
     const auto t_start = std::chrono::steady_clock::now();
     const Domain E = exemplar.domain();

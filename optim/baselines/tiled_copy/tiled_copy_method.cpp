@@ -36,7 +36,6 @@ class TiledCopyMethod : public SynthesisMethod {
 
   PointSet synthesize(const PointSet& exemplar, const SynthesisContext& ctx) override {
     validate(exemplar, "exemplar");
-    ctx.output.require_domain_density("tiled_copy");
     Vec2 off = offset_;
     if (random_) {  // seeded: the same seed gives the same copy
       std::mt19937_64 rng(ctx.seed);
