@@ -435,7 +435,9 @@ void GaborEngine::run_stage(const Stage& stage) {
   // (optim/stopping_rule.hpp). True: the stage has converged.
   auto judge = [&](int it) {
     const StopVerdict v =
-        rule_->judge(StageView{state_.stage_losses, it, [this] { return points_in_play(); }, window_.torus}, state_.stage_watch);
+        rule_->judge(StageView{state_.stage_losses, it, [this] { return points_in_play(); }, window_.torus,
+                               window_.torus ? 1.0 / s_.upscale : 1.0},
+                     state_.stage_watch);
     if (v.best) state_.stage_best = state_.moving.detach().clone();
     return v.stop;
   };

@@ -32,6 +32,7 @@ struct StageView {
   // stage's domain; built only when called (a copy of the positions).
   std::function<PointSet()> points;
   bool periodic = false;  // the domain is a torus (the paper's unit square)
+  double zoom = 1;        // the points' units per exemplar unit (1/u on the paper's square)
 };
 
 // A rule's verdict after one iteration.

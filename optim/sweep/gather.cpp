@@ -190,7 +190,9 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
       const auto [scope, metric] = split_key(key);
       auto it = std::find_if(list.begin(), list.end(), [&](const MetricSummary& s) { return s.scope == scope && s.metric == metric; });
       if (it == list.end()) {
-        list.push_back(MetricSummary{run.group, run.group_label, scope, metric, {}, {}});
+        MetricSummary fresh;
+        fresh.group = run.group, fresh.group_label = run.group_label, fresh.scope = scope, fresh.metric = metric;
+        list.push_back(std::move(fresh));
         it = std::prev(list.end());
       }
       it->values.push_back(value);

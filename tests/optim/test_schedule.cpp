@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
+#include "core/metrics/crops.hpp"
+#include "core/metrics/patches.hpp"
 #include "core/metrics/pcf.hpp"
 #include "optim/stopping_rule.hpp"
 #include "optim/gabor_pipeline.hpp"
@@ -179,6 +182,59 @@ TEST_CASE("The pattern rule with end_on best marks each new best check and no ot
   CHECK(last_record.empty());
   CHECK_THROWS_WITH(StoppingRuleRegistry::instance().create(json{{"type", "pattern"}, {"end_on", "first"}}, "method.convergence"),
                     Catch::Contains("method.convergence.end_on"));
+}
+
+TEST_CASE("Pattern rule, best_by crops: the best is judged on exemplar-sized crops, not the whole rectangle", "[optim]") {
+  auto rule = StoppingRuleRegistry::instance().create(
+      json{{"type", "pattern"}, {"window", 1000}, {"check_every", 1}, {"min_iterations", 0}, {"end_on", "best"},
+           {"best_by", "crops"}},
+      "method.convergence");
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> u(0, 1);
+  PointSet ex;
+  for (int j = 0; j < 8; ++j)
+    for (int i = 0; i < 8; ++i) ex.add({(i + 0.3 + 0.4 * u(rng)) / 8, (j + 0.3 + 0.4 * u(rng)) / 8});
+  rule->begin_stage(ex);
+  // Iterates on the paper's u = 2 square (zoom 1/2): jittered grids of 256 points, more or
+  // less jittered, some with points parked on the border.
+  std::vector<PointSet> iterates;
+  for (int k = 0; k < 12; ++k) {
+    PointSet ps;
+    const double jitter = 0.2 + 0.6 * u(rng);
+    for (int j = 0; j < 16; ++j)
+      for (int i = 0; i < 16; ++i) {
+        Vec2 p{(i + 0.5 + jitter * (u(rng) - 0.5)) / 16, (j + 0.5 + jitter * (u(rng) - 0.5)) / 16};
+        if (k % 3 == 0 && (i == 0 || j == 0)) p = {i == 0 ? 0.0 : p.x, j == 0 ? 0.0 : p.y};  // parked
+        ps.add(p);
+      }
+    iterates.push_back(ps);
+  }
+  // What the rule should see: 20 crops of half the square, at the rule's own places (seed
+  // 7919), each on the unit square with the exemplar's r_max.
+  PcfOptions o;
+  o.r_max = pcf_unit(ex.size(), 1.0);
+  const Curve target = pcf(ex, o);
+  auto by_crops = [&](const PointSet& ps) {
+    const CropPlan plan = plan_crops(ex, ps, 20, 7919, 0.5);
+    double sum = 0;
+    for (const PointSet& patch : cut_patches(ps, plan.windows)) sum += curve_mse(pcf(patch, o), target);
+    return sum / 20;
+  };
+  std::vector<double> losses, record;
+  double best = std::numeric_limits<double>::infinity();
+  int differs = 0;
+  for (int it = 0; it < static_cast<int>(iterates.size()); ++it) {
+    losses.push_back(1.0);
+    const StopVerdict v = rule->judge(StageView{losses, it, [&] { return iterates[it]; }, true, 0.5}, record);
+    const double expected = by_crops(iterates[it]);
+    CHECK(record.back() == Approx(expected).epsilon(1e-12));
+    CHECK(v.best == (expected < best));
+    best = std::min(best, expected);
+    differs += std::abs(record.back() - curve_mse(pcf(iterates[it]), pcf(ex))) > 1e-6;
+  }
+  CHECK(differs == static_cast<int>(iterates.size()));  // not the whole rectangle's value
+  CHECK_THROWS_WITH(StoppingRuleRegistry::instance().create(json{{"type", "pattern"}, {"best_by", "quadrants"}}, "method.convergence"),
+                    Catch::Contains("method.convergence.best_by"));
 }
 
 TEST_CASE("Toroidal wrap as published", "[optim]") {
