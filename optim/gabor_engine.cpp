@@ -512,9 +512,13 @@ PointSet GaborEngine::points_in_play() const {
   // A window's pattern is its grid's part of where points move: a frozen exemplar pad
   // ("context") is the exemplar's, and counting it would hide how the moving points change.
   PointSet ps(window_.torus ? Domain{} : intersection(g, shape_.moving_area()));
-  const int64_t nf = frozen_.size(0);
+  const int64_t frozen = frozen_.size(0);
   for (int64_t i = 0; i < local.size(0); ++i) {
-    const Vec2 p = i >= nf || window_.torus ? to_output(window_, a[i][0], a[i][1]) : Vec2{g.x0 + g.width() * a[i][0], g.y0 + g.height() * a[i][1]};
+    // Moving points as finish_stage writes them (held inside the movable part); a window's
+    // frozen ones where they are, which may be past the grid (the filter below leaves those
+    // out). On the torus both are the positions themselves.
+    const bool frozen_in_window = i < frozen && !window_.torus;
+    const Vec2 p = frozen_in_window ? Vec2{g.x0 + g.width() * a[i][0], g.y0 + g.height() * a[i][1]} : to_output(window_, a[i][0], a[i][1]);
     if (inside(ps.domain(), p)) ps.add(p);  // a window's frozen context beyond its grid is not its pattern
   }
   return ps;
