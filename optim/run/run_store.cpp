@@ -13,6 +13,7 @@
 #include "core/formats/point_io.hpp"
 #include "core/log.hpp"
 #include "core/paths.hpp"
+#include "core/processor.hpp"
 #include "core/render/plot_curves.hpp"
 #include "core/render/plot_points.hpp"
 #include "core/revision.hpp"
@@ -67,16 +68,24 @@ bool same_points(const PointSet& a, const PointSet& b) {
   return true;
 }
 
-// A run made with another thread count may differ from a run here in the last bits: say so.
-std::string note_threads(const std::string& dir) {
-  const nlohmann::json run = read_run_json(dir + "/run.json");
-  if (run.contains("threads") && run["threads"] != at::get_num_threads())
-    spdlog::warn("{} was made with {} threads, this process uses {}: a new run here may differ in the last bits",
-                 dir, run["threads"].dump(), at::get_num_threads());
+// A run made with another thread count or processor gives other bits than a new run here.
+std::string note_made_differently(const std::string& dir) {
+  const std::string differences = made_differently(read_run_json(dir + "/run.json"));
+  if (!differences.empty()) spdlog::warn("{} was made with {}: a new run here may differ from it", dir, differences);
   return dir;
 }
 
 }  // namespace
+
+std::string made_differently(const nlohmann::json& recorded) {
+  std::string out;
+  if (recorded.contains("threads") && recorded["threads"] != at::get_num_threads())
+    out = recorded["threads"].dump() + " threads (this process " + std::to_string(at::get_num_threads()) + ")";
+  if (recorded.contains("processor") && recorded["processor"].is_string() && recorded["processor"] != processor_kind())
+    out += (out.empty() ? "" : " and ") + ("the processor " + recorded["processor"].get<std::string>() + " (this one " +
+                                           processor_kind() + ")");
+  return out;
+}
 
 nlohmann::json synthesis_key(nlohmann::json c) {
   for (const char* k : {"name", "description", "snapshots", "evaluate", "exemplar", "format", "checkpoint_seconds"}) c.erase(k);
@@ -130,6 +139,8 @@ void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const
                         {"quick", quick},
                         // results depend on it in the last bits (reductions split across threads)
                         {"threads", at::get_num_threads()},
+                        // and on the processor's instruction set (core/processor.hpp)
+                        {"processor", processor_kind()},
                         {"synthesis_seconds", synthesis_seconds},
                         {"total_seconds", o.seconds},
                         {"peak_rss_mib", peak_resident_mib()},
@@ -169,13 +180,13 @@ std::string find_matching_run(const nlohmann::json& resolved, bool quick, const 
   for (auto& root : roots) {
     std::error_code ec;
     if (!fs::is_directory(root, ec)) throw InputError("--reuse " + root + ": not a directory");
-    if (matches(root)) return note_threads(root);
+    if (matches(root)) return note_made_differently(root);
     std::vector<fs::path> subdirs;
     for (auto& e : fs::directory_iterator(root, ec))
       if (e.is_directory()) subdirs.push_back(e.path());
     std::sort(subdirs.begin(), subdirs.end());  // deterministic choice when several match
     for (auto& d : subdirs)
-      if (matches(d)) return note_threads(d.string());
+      if (matches(d)) return note_made_differently(d.string());
   }
   return "";
 }

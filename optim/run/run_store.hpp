@@ -2,8 +2,8 @@
 // The run store: a run as a directory of files, written, read back and found again.
 //   output.txt (project format) + output.<exemplar format>.txt, exemplar.txt (as synthesised),
 //   init.txt, exemplar_vs_output.png, snapshots/stageNN.{txt,png} (paper Fig. 4), loss.csv +
-//   loss.png, config.json (resolved), run.json (seed, revision, threads, wall times, the
-//   method's stats), metrics.json and pcf.png (`ppsynth eval` of the output vs the exemplar).
+//   loss.png, config.json (resolved), run.json (seed, revision, threads, processor, wall times,
+//   the method's stats), metrics.json and pcf.png (`ppsynth eval` of the output vs the exemplar).
 // Directories are opened through RunDirectory (core/run_directory.hpp); running a synthesis
 // into one is optim/run/run_synthesis.hpp.
 #include <chrono>
@@ -55,6 +55,11 @@ std::string find_matching_run(const nlohmann::json& resolved, bool quick, const 
 
 // The run's name: the config's, else the exemplar's file stem.
 std::string run_name(const nlohmann::json& resolved);
+
+// What a run recorded of how it computed (`threads`, `processor`: run.json or the running
+// marker) that differs from this process, as a phrase ("4 threads (this process 1)"); "" when
+// nothing differs. Either difference changes the trajectory from its last bits on.
+std::string made_differently(const nlohmann::json& recorded);
 
 // A JSON file of a run directory; InputError naming it when missing or malformed.
 nlohmann::json read_run_json(const std::string& path);

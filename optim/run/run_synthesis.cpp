@@ -10,6 +10,7 @@
 #include "core/log.hpp"
 #include "core/formats/text_table.hpp"
 #include "core/output_shape.hpp"
+#include "core/processor.hpp"
 #include "core/run_directory.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/run/run_observers.hpp"
@@ -85,7 +86,8 @@ RunOutcome run_synthesis(const nlohmann::json& r, const RunRequest& req) {
   try {
     // What a resume needs, written first: the resolved config and the way it ran.
     write_text_atomic(dir.path() + "/config.json", r.dump(2) + "\n");
-    dir.mark_running({{"quick", req.quick}, {"threads", at::get_num_threads()}, {"seed", r["seed"]}});
+    dir.mark_running(
+        {{"quick", req.quick}, {"threads", at::get_num_threads()}, {"processor", processor_kind()}, {"seed", r["seed"]}});
   } catch (...) {
     dir.discard();
     throw;
@@ -107,10 +109,11 @@ RunOutcome resume_synthesis(const std::string& path, const RunRequest& req) {
     throw InputError("--resume " + dir.path() + ": no checkpoint (the run stopped before its first one, or its method (" +
                      o.config["method"].value("type", "?") + ") cannot resume); start it again with --force");
   const std::string bytes = read_file_text(checkpoint);
-  if (marker.contains("threads") && marker["threads"] != at::get_num_threads())
-    spdlog::warn("--resume {}: the run started with {} threads, this process uses {}: the result may differ in the last bits "
-                 "from an uninterrupted run (set PPSYNTH_THREADS={})",
-                 dir.path(), marker["threads"].dump(), at::get_num_threads(), marker["threads"].dump());
+  // A SLURM requeue may land on another node: the resumed run is then not the uninterrupted one.
+  if (const std::string differences = made_differently(marker); !differences.empty())
+    spdlog::warn("--resume {}: the run started with {}: the result may differ from an uninterrupted run's "
+                 "(the same thread count is PPSYNTH_THREADS={})",
+                 dir.path(), differences, marker.value("threads", nlohmann::json()).dump());
   RunRequest r = req;
   r.quick = marker.value("quick", false);
   const std::string name = run_name(o.config);

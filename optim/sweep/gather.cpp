@@ -138,6 +138,25 @@ BaselineComparison compare_medians(const std::vector<double>& a, const std::vect
   return c;
 }
 
+// One note per group whose runs name more than one processor.
+std::vector<std::string> processor_notes(const std::vector<GatheredRun>& runs) {
+  std::map<std::string, std::map<std::string, std::vector<uint64_t>>> seeds;  // group label -> processor -> seeds
+  for (const auto& run : runs) seeds[run.group_label][run.processor.empty() ? "not recorded" : run.processor].push_back(run.seed);
+  std::vector<std::string> notes;
+  for (const auto& [label, by_processor] : seeds) {
+    if (by_processor.size() < 2) continue;
+    std::string text = label + ": its seeds ran on " + std::to_string(by_processor.size()) + " kinds of processor (";
+    bool first = true;
+    for (const auto& [processor, list] : by_processor) {
+      text += std::string(first ? "" : "; ") + processor + ": seed" + (list.size() > 1 ? "s" : "");
+      for (size_t i = 0; i < list.size(); ++i) text += (i ? ", " : " ") + std::to_string(list[i]);
+      first = false;
+    }
+    notes.push_back(text + "): their seconds do not compare, and a seed run on another kind is another trajectory");
+  }
+  return notes;
+}
+
 }  // namespace
 
 ReferenceOutput parse_reference(const std::string& text) {
@@ -162,7 +181,7 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
   for (const Found& f : found) {
     const std::string canonical = fs::weakly_canonical(f.dir).string();
     if (!seen.insert(canonical).second) continue;  // named twice
-    GatheredRun run{f.dir, f.group, f.group_label, 0, {}};
+    GatheredRun run{f.dir, f.group, f.group_label, 0, {}, {}};
     if (options.protocol) {  // measured again, the same way for every run
       const RunOutcome o = load_run(f.dir);
       run.values = metric_values(evaluate(o.exemplar, o.output, eval_options(options, o)));
@@ -174,12 +193,14 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
     }
     const nlohmann::json info = read_run_json(f.dir + "/run.json");
     run.seed = info.value("seed", uint64_t{0});
+    run.processor = info.value("processor", std::string());
     run.values.push_back({"run/seconds", info.value("total_seconds", 0.0)});
     r.runs.push_back(std::move(run));
   }
   std::sort(r.runs.begin(), r.runs.end(), [](const GatheredRun& a, const GatheredRun& b) {
     return std::tie(a.group_label, a.group, a.seed, a.dir) < std::tie(b.group_label, b.group, b.seed, b.dir);
   });
+  r.notes = processor_notes(r.runs);
   // group -> key -> summary, keys in first-seen order
   std::map<std::string, std::vector<MetricSummary>> by_group;
   std::vector<std::string> group_order;
@@ -357,10 +378,16 @@ nlohmann::json to_json(const GatherResult& r) {
                      {"bootstrap_95", c.hi}});
   return {{"references", refs}, {"bound", r.options.bound}, {"runs", runs}, {"summaries", sums},
           {"evaluation", r.options.protocol ? std::string(patch_protocol_name(*r.options.protocol)) : std::string("metrics.json")},
-          {"baselines", r.options.baselines}, {"comparisons", comps}, {"left_out", r.unfinished}};
+          {"baselines", r.options.baselines}, {"comparisons", comps}, {"left_out", r.unfinished}, {"notes", r.notes}};
 }
 
 // One strip plot per scope and metric, a column per group.
+std::string notes_markdown(const std::vector<std::string>& notes) {
+  std::string md;
+  for (const auto& n : notes) md += "Note: " + n + ".\n\n";
+  return md;
+}
+
 std::vector<std::pair<std::string, std::string>> write_plots(const GatherResult& r, const std::string& dir) {
   std::vector<std::pair<std::string, std::string>> keys;  // scope, metric in first-seen order
   for (const auto& s : r.summaries)
@@ -423,6 +450,7 @@ std::string format_gather(const GatherResult& r) {
     }
   }
   if (!r.unfinished.empty()) s += std::to_string(r.unfinished.size()) + " run(s) left out (not finished)\n";
+  for (const auto& n : r.notes) s += "note: " + n + "\n";
   return s;
 }
 
@@ -438,7 +466,7 @@ void write_gather(const GatherResult& r, const std::string& out, bool force) {
     write_table_csv(d + "/per_seed.csv", seed_header, seed_rows);
     std::string md = "# Gathered runs\n\n" + std::to_string(r.runs.size()) + " finished runs" +
                      (r.options.references.empty() ? "" : "; reference " + references_text(r.options) + ", bound " + num(r.options.bound, "%g") + " x") +
-                     ".\n\n" + table_markdown(summary_header(), summary_rows(r)) +
+                     ".\n\n" + notes_markdown(r.notes) + table_markdown(summary_header(), summary_rows(r)) +
                      (r.comparisons.empty() ? std::string()
                                             : "\n## Against baselines\n\nRatio of medians and its 90 % bootstrap interval "
                                               "(seeds resampled); each baseline against itself shows the spread of chance.\n\n" +
@@ -458,6 +486,7 @@ void write_gather(const GatherResult& r, const std::string& out, bool force) {
       kv.push_back({"bound", num(r.options.bound, "%g") + " x the reference's value"});
     }
     html.add_key_values(kv);
+    for (const auto& n : r.notes) html.add_paragraph("Note: " + n + ".");
     html.add_image_row(write_plots(r, d));
     html.add_heading("Summary");
     html.add_table(summary_header(), summary_rows(r));

@@ -43,6 +43,7 @@ struct GatheredRun {
   std::string dir, group, group_label;
   uint64_t seed = 0;
   std::vector<std::pair<std::string, double>> values;  // "<scope>/<metric>" -> value
+  std::string processor;  // run.json's (core/processor.hpp); "" for runs made before it was recorded
 };
 
 struct MetricSummary {
@@ -68,6 +69,9 @@ struct GatherResult {
   std::vector<MetricSummary> summaries;  // by group, then scope, then metric
   std::vector<BaselineComparison> comparisons;  // by baseline, then group, scope, metric
   std::vector<std::string> unfinished;   // run directories left out (not complete)
+  // What a reader of the numbers must know: a group whose seeds ran on more than one kind of
+  // processor (their seconds do not compare, and a seed rerun elsewhere is another sample).
+  std::vector<std::string> notes;
   GatherOptions options;
 };
 

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/metrics/evaluation.hpp"
 #include "core/metrics/summary_stats.hpp"
+#include "core/processor.hpp"
 #include "optim/run/run_store.hpp"
 #include "optim/sweep/gather.hpp"
 #include "optim/sweep/sweep_executors.hpp"
@@ -169,6 +170,25 @@ TEST_CASE("tasks run rows, skip finished ones, and gather pools seeds against a 
   REQUIRE(crops->reference);
   CHECK(*crops->reference == Approx(crops->values[0]));
   CHECK(format_gather(gc).find("protocol crops") != std::string::npos);
+
+  // Each run records its processor; a group whose seeds ran on two kinds says so (a sweep's
+  // SLURM tasks may land on different nodes).
+  CHECK(g.notes.empty());
+  for (const auto& run : g.runs) CHECK(run.processor == processor_kind());
+  const fs::path run_json = fs::path(dir) / m.rows[1].dir / "run.json";
+  json info = read_run_json(run_json.string());
+  CHECK(made_differently(info).empty());
+  info["processor"] = "Other CPU (avx2)";
+  std::ofstream(run_json) << info.dump(2);
+  CHECK(made_differently(info).find("Other CPU (avx2)") != std::string::npos);
+  const GatherResult mixed = gather_runs({dir}, o);
+  REQUIRE(mixed.notes.size() == 1);
+  CHECK_THAT(mixed.notes[0], Catch::Contains("2 kinds of processor") && Catch::Contains("Other CPU (avx2): seed 5") &&
+                                 Catch::Contains(processor_kind() + ": seeds 3, 6"));
+  CHECK(format_gather(mixed).find("note: lines") != std::string::npos);
+  write_gather(mixed, (d / "g").string(), true);
+  std::ifstream md(d / "g" / "gather.md");
+  CHECK(std::string(std::istreambuf_iterator<char>(md), {}).find("Note: lines") != std::string::npos);
 }
 
 TEST_CASE("summaries: NumPy's quantiles, non-finite values left out", "[sweep][stats]") {
