@@ -64,6 +64,7 @@ class Result:
     metrics: Optional[dict]       # evaluate(exemplar, output) when config "evaluate" is on
     seconds: float                # wall time of the synthesis
     threads: int                  # LibTorch's thread count (results depend on it in the last bits)
+    processor: str                # "MODEL (ISA)": results depend on the instruction set too
     config: dict                  # the resolved config
     resumed: bool                 # continued from checkpoint_dir
 
@@ -160,7 +161,7 @@ def synthesize(exemplar=None, config: ConfigLike = None, seed: Optional[int] = N
                     np.array([x[4] for x in rows], dtype=np.float64))
     return Result(PointSet._from_native(r["output"]), PointSet._from_native(r["initialization"]),
                   [Stage(**s) for s in r["stages"]], losses, json.loads(r["stats_json"]),
-                  _loads_or_none(r["metrics_json"]), r["seconds"], r["threads"], spec, r["resumed"])
+                  _loads_or_none(r["metrics_json"]), r["seconds"], r["threads"], r["processor"], spec, r["resumed"])
 
 
 def _run_result(r: dict) -> RunResult:

@@ -18,6 +18,7 @@
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/formats/text_table.hpp"
+#include "core/processor.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/run/run_observers.hpp"
 #include "optim/run/run_synthesis.hpp"
@@ -216,6 +217,7 @@ py::dict synthesize_in_memory(const py::dict& exemplar_py, const std::string& sp
   d["metrics_json"] = r.metrics.dump();
   d["seconds"] = r.seconds;
   d["threads"] = used_threads;
+  d["processor"] = processor_kind();
   d["resumed"] = resume_state.has_value();
   return d;
 }

@@ -45,6 +45,7 @@ def test_run_equals_the_command_file_for_file(tmp_path):
     run_py = json.loads((tmp_path / "py" / "run.json").read_text())
     run_cmd = json.loads((tmp_path / "cmd" / "run.json").read_text())
     assert run_py["seed"] == run_cmd["seed"] == 7 and run_py["threads"] == run_cmd["threads"] == 1
+    assert run_py["processor"] == run_cmd["processor"] != ""
     assert r.metrics["all"]["pcf_mse"] == json.loads((tmp_path / "cmd" / "metrics.json").read_text())["all"]["pcf_mse"]
 
 
@@ -59,6 +60,7 @@ def test_synthesize_in_memory_equals_the_command(tmp_path):
     assert np.all(np.isfinite(r.losses.loss))
     assert r.metrics["all"]["pcf"]["r"].shape == (100,)
     assert r.config["seed"] == 11 and r.threads == 1 and not r.resumed
+    assert r.processor == json.loads((tmp_path / "cmd" / "run.json").read_text())["processor"]
 
 
 def test_same_seed_same_points_and_progress_is_reported():
