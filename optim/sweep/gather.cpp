@@ -28,6 +28,7 @@ namespace {
 
 struct Found {
   std::string dir, group, group_label;
+  nlohmann::json key;  // a run made outside a sweep: what decides its group (null for a sweep's row)
 };
 
 // How gather evaluates an output itself (a reference; every run with --protocol): the
@@ -85,14 +86,47 @@ Found loose_run(const std::string& dir) {
   key.erase("seed");
   key["exemplar"] = config["exemplar"];
   key["quick"] = read_run_json(dir + "/run.json").value("quick", false);
-  return {dir, json_id(key), run_name(config) + " (" + config["method"].value("type", std::string("?")) + ")"};
+  return {dir, json_id(key), run_name(config) + " (" + config["method"].value("type", std::string("?")) + ")", key};
+}
+
+// Runs made outside a sweep with one name but other settings (`--set upscale=3`) would be
+// groups of one label, which no reader and no --baseline could tell apart: each such label
+// gets the keys in which its groups differ, as a sweep's grid labels them ("lines (gabor)
+// [upscale=3]").
+void label_by_differences(std::vector<Found>& found) {
+  std::map<std::string, std::map<std::string, nlohmann::json>> groups;  // label -> group -> flattened key
+  for (const Found& f : found)
+    if (!f.key.is_null()) groups[f.group_label].emplace(f.group, f.key.flatten());
+  std::map<std::string, std::string> suffix;  // group -> " [k=v, ...]"
+  for (const auto& [label, by_group] : groups) {
+    if (by_group.size() < 2) continue;
+    std::set<std::string> paths;
+    for (const auto& [g, flat] : by_group)
+      for (auto it = flat.begin(); it != flat.end(); ++it) paths.insert(it.key());
+    for (const auto& [g, flat] : by_group) {
+      std::string text;
+      for (const auto& path : paths) {
+        const nlohmann::json mine = flat.contains(path) ? flat[path] : nlohmann::json();
+        const bool differs = std::any_of(by_group.begin(), by_group.end(), [&](const auto& other) {
+          return (other.second.contains(path) ? other.second[path] : nlohmann::json()) != mine;
+        });
+        if (!differs) continue;
+        std::string dotted = path.substr(1);
+        std::replace(dotted.begin(), dotted.end(), '/', '.');
+        text += (text.empty() ? "" : ", ") + dotted + "=" + (mine.is_string() ? mine.get<std::string>() : mine.dump());
+      }
+      suffix[g] = " [" + text + "]";
+    }
+  }
+  for (Found& f : found)
+    if (const auto it = suffix.find(f.group); it != suffix.end()) f.group_label += it->second;
 }
 
 void discover(const std::string& dir, std::vector<Found>& found, std::vector<std::string>& unfinished, int depth) {
   if (fs::is_regular_file(fs::path(dir) / "manifest.json")) {
     for (const auto& row : load_sweep(dir).rows) {
       const std::string d = (fs::path(dir) / row.dir).string();
-      if (run_dir_state(d) == RunDirState::Complete) found.push_back({d, row.group, row.group_label});
+      if (run_dir_state(d) == RunDirState::Complete) found.push_back({d, row.group, row.group_label, nullptr});
       else unfinished.push_back(d);
     }
     return;
@@ -177,6 +211,7 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
     if (!fs::is_directory(d)) throw InputError(d + ": not a directory");
     discover(d, found, r.unfinished, 0);
   }
+  label_by_differences(found);
   std::set<std::string> seen;
   for (const Found& f : found) {
     const std::string canonical = fs::weakly_canonical(f.dir).string();

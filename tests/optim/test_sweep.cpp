@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "core/error.hpp"
 #include "core/metrics/evaluation.hpp"
@@ -272,4 +273,26 @@ TEST_CASE("gather compares groups with a baseline: ratio of medians and a bootst
   CHECK(std::string(std::istreambuf_iterator<char>(md), {}).find("## Against baselines") != std::string::npos);
   o.baselines = {"lines"};
   CHECK_THROWS_WITH(gather_runs({dir}, o), Catch::Contains("--baseline 'lines'") && Catch::Contains("max_iterations=3"));
+
+  // The same runs outside a sweep (copied): one name, two settings. Each group's label names
+  // the keys in which it differs, so the two stay apart and either can be the baseline.
+  std::vector<std::string> loose;
+  for (size_t i = 0; i < m.rows.size(); ++i) {
+    loose.push_back((d / "loose" / std::to_string(i)).string());
+    fs::create_directories(loose.back());
+    fs::copy(fs::path(dir) / m.rows[i].dir, loose.back(), fs::copy_options::recursive);
+  }
+  GatherOptions l;
+  l.baselines = {"lines (gabor) [method.quick.max_iterations=1]"};
+  const GatherResult gl = gather_runs(loose, l);
+  std::set<std::string> labels;
+  for (const auto& run : gl.runs) labels.insert(run.group_label);
+  CHECK(labels == std::set<std::string>{"lines (gabor) [method.quick.max_iterations=1]", "lines (gabor) [method.quick.max_iterations=3]"});
+  const auto loose_other = std::find_if(gl.comparisons.begin(), gl.comparisons.end(), [](const BaselineComparison& c) {
+    return c.group_label == "lines (gabor) [method.quick.max_iterations=3]" && c.scope == "all" && c.metric == "pcf_mse";
+  });
+  REQUIRE(loose_other != gl.comparisons.end());
+  CHECK(loose_other->ratio == Approx(other.ratio));
+  // a single loose run keeps its plain label
+  CHECK(gather_runs({loose[0]}, GatherOptions{}).runs.at(0).group_label == "lines (gabor)");
 }
