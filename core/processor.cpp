@@ -33,11 +33,14 @@ std::string processor_kind_from_cpuinfo(const std::string& cpuinfo) {
 }
 
 std::string processor_kind() {
-  std::ifstream in("/proc/cpuinfo");
-  if (!in) return "unknown";
-  std::stringstream text;
-  text << in.rdbuf();
-  return processor_kind_from_cpuinfo(text.str());
+  static const std::string kind = [] {  // read once: a process does not change its processor kind
+    std::ifstream in("/proc/cpuinfo");
+    if (!in) return std::string("unknown");
+    std::stringstream text;
+    text << in.rdbuf();
+    return processor_kind_from_cpuinfo(text.str());
+  }();
+  return kind;
 }
 
 }  // namespace ppsynth

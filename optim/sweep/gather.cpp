@@ -416,13 +416,14 @@ nlohmann::json to_json(const GatherResult& r) {
           {"baselines", r.options.baselines}, {"comparisons", comps}, {"left_out", r.unfinished}, {"notes", r.notes}};
 }
 
-// One strip plot per scope and metric, a column per group.
+// The notes (GatherResult::notes) as paragraphs above the Markdown's tables.
 std::string notes_markdown(const std::vector<std::string>& notes) {
   std::string md;
   for (const auto& n : notes) md += "Note: " + n + ".\n\n";
   return md;
 }
 
+// One strip plot per scope and metric, a column per group.
 std::vector<std::pair<std::string, std::string>> write_plots(const GatherResult& r, const std::string& dir) {
   std::vector<std::pair<std::string, std::string>> keys;  // scope, metric in first-seen order
   for (const auto& s : r.summaries)
