@@ -28,7 +28,7 @@ namespace {
 
 struct Found {
   std::string dir, group, group_label;
-  nlohmann::json key;  // a run made outside a sweep: what decides its group (null for a sweep's row)
+  nlohmann::json key;  // what decides its group (group_key)
 };
 
 // How gather evaluates an output itself (a reference; every run with --protocol): the
@@ -78,25 +78,31 @@ std::vector<std::pair<std::string, double>> metric_values(const nlohmann::json& 
   return v;
 }
 
-// The group of a run directory made outside a sweep: its config without the seed (the same
-// key a sweep's plan uses, so both pool together).
-Found loose_run(const std::string& dir) {
+// What decides a finished run's group: its config without the seed (the same key a sweep's
+// plan uses, so runs made outside a sweep pool with its rows).
+nlohmann::json group_key(const std::string& dir) {
   const nlohmann::json config = read_run_json(dir + "/config.json");
   nlohmann::json key = synthesis_key(config);
   key.erase("seed");
   key["exemplar"] = config["exemplar"];
   key["quick"] = read_run_json(dir + "/run.json").value("quick", false);
+  return key;
+}
+
+// The group of a run directory made outside a sweep.
+Found loose_run(const std::string& dir) {
+  const nlohmann::json config = read_run_json(dir + "/config.json");
+  const nlohmann::json key = group_key(dir);
   return {dir, json_id(key), run_name(config) + " (" + config["method"].value("type", std::string("?")) + ")", key};
 }
 
-// Runs made outside a sweep with one name but other settings (`--set upscale=3`) would be
-// groups of one label, which no reader and no --baseline could tell apart: each such label
-// gets the keys in which its groups differ, as a sweep's grid labels them ("lines (gabor)
-// [upscale=3]").
+// Groups of one label but other settings (runs made outside a sweep with `--set upscale=3`;
+// two sweeps of one run config with other `set`s) would be columns no reader and no
+// --baseline could tell apart: each such label gets the keys in which its groups differ, as a
+// sweep's grid labels them ("lines (gabor) [upscale=3]").
 void label_by_differences(std::vector<Found>& found) {
   std::map<std::string, std::map<std::string, nlohmann::json>> groups;  // label -> group -> flattened key
-  for (const Found& f : found)
-    if (!f.key.is_null()) groups[f.group_label].emplace(f.group, f.key.flatten());
+  for (const Found& f : found) groups[f.group_label].emplace(f.group, f.key.flatten());
   std::map<std::string, std::string> suffix;  // group -> " [k=v, ...]"
   for (const auto& [label, by_group] : groups) {
     if (by_group.size() < 2) continue;
@@ -104,7 +110,8 @@ void label_by_differences(std::vector<Found>& found) {
     for (const auto& [g, flat] : by_group)
       for (auto it = flat.begin(); it != flat.end(); ++it) paths.insert(it.key());
     for (const auto& [g, flat] : by_group) {
-      std::string text;
+      // The keys it sets that differ; the ones it leaves unset only where it sets none.
+      std::string set, unset;
       for (const auto& path : paths) {
         const nlohmann::json mine = flat.contains(path) ? flat[path] : nlohmann::json();
         const bool differs = std::any_of(by_group.begin(), by_group.end(), [&](const auto& other) {
@@ -113,9 +120,10 @@ void label_by_differences(std::vector<Found>& found) {
         if (!differs) continue;
         std::string dotted = path.substr(1);
         std::replace(dotted.begin(), dotted.end(), '/', '.');
+        std::string& text = mine.is_null() ? unset : set;
         text += (text.empty() ? "" : ", ") + dotted + "=" + (mine.is_string() ? mine.get<std::string>() : mine.dump());
       }
-      suffix[g] = " [" + text + "]";
+      suffix[g] = " [" + (set.empty() ? unset : set) + "]";
     }
   }
   for (Found& f : found)
@@ -126,7 +134,7 @@ void discover(const std::string& dir, std::vector<Found>& found, std::vector<std
   if (fs::is_regular_file(fs::path(dir) / "manifest.json")) {
     for (const auto& row : load_sweep(dir).rows) {
       const std::string d = (fs::path(dir) / row.dir).string();
-      if (run_dir_state(d) == RunDirState::Complete) found.push_back({d, row.group, row.group_label, nullptr});
+      if (run_dir_state(d) == RunDirState::Complete) found.push_back({d, row.group, row.group_label, group_key(d)});
       else unfinished.push_back(d);
     }
     return;

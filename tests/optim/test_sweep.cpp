@@ -296,3 +296,21 @@ TEST_CASE("gather compares groups with a baseline: ratio of medians and a bootst
   // a single loose run keeps its plain label
   CHECK(gather_runs({loose[0]}, GatherOptions{}).runs.at(0).group_label == "lines (gabor)");
 }
+
+TEST_CASE("gather tells apart two sweeps of one run config with other settings", "[sweep]") {
+  const auto d = test::scratch_dir("sweep_two_sets");
+  std::vector<std::string> dirs;
+  for (const int iterations : {1, 2}) {
+    json spec = tiny_spec();
+    spec["seeds"] = {3};
+    spec["set"] = {"method.quick.max_iterations=" + std::to_string(iterations), "method.quick.res=16"};
+    dirs.push_back((d / ("sw" + std::to_string(iterations))).string());
+    plan_sweep(expand_sweep_spec(spec, "spec", ""), dirs.back());
+    REQUIRE(run_sweep_task(dirs.back(), 0, nullptr) == RowState::Done);
+  }
+  std::set<std::string> labels;
+  for (const auto& run : gather_runs(dirs, GatherOptions{}).runs) labels.insert(run.group_label);
+  CHECK(labels == std::set<std::string>{"lines [method.quick.max_iterations=1]", "lines [method.quick.max_iterations=2]"});
+  // alone, a sweep keeps its plain labels
+  CHECK(gather_runs({dirs[0]}, GatherOptions{}).runs.at(0).group_label == "lines");
+}
