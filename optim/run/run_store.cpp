@@ -77,6 +77,14 @@ std::string note_made_differently(const std::string& dir) {
 
 }  // namespace
 
+nlohmann::json group_key(const nlohmann::json& resolved, bool quick) {
+  nlohmann::json key = synthesis_key(resolved);
+  key.erase("seed");
+  key["exemplar"] = resolved["exemplar"];
+  key["quick"] = quick;
+  return key;
+}
+
 std::string made_differently(const nlohmann::json& recorded) {
   std::string out;
   if (recorded.contains("threads") && recorded["threads"] != at::get_num_threads())

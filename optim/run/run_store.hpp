@@ -40,6 +40,10 @@ RunOutcome load_run(const std::string& dir);
 // exemplar's file name and format (exemplars are compared by content).
 nlohmann::json synthesis_key(nlohmann::json resolved);
 
+// What pools runs as seeds of one configuration (a sweep's group, gather's): the synthesis key
+// without the seed, with the exemplar's file and the quick setting.
+nlohmann::json group_key(const nlohmann::json& resolved, bool quick);
+
 // True when two resolved run configs describe the same synthesis apart from the exemplar:
 // everything but the keys that only label or decorate a run (name, description, snapshots,
 // evaluate, checkpoint_seconds) and the exemplar's file name and format (exemplars are

@@ -28,7 +28,7 @@ namespace {
 
 struct Found {
   std::string dir, group, group_label;
-  nlohmann::json key;  // what decides its group (group_key)
+  nlohmann::json key;  // what decides its group (run_store's group_key)
 };
 
 // How gather evaluates an output itself (a reference; every run with --protocol): the
@@ -78,21 +78,15 @@ std::vector<std::pair<std::string, double>> metric_values(const nlohmann::json& 
   return v;
 }
 
-// What decides a finished run's group: its config without the seed (the same key a sweep's
-// plan uses, so runs made outside a sweep pool with its rows).
-nlohmann::json group_key(const std::string& dir) {
-  const nlohmann::json config = read_run_json(dir + "/config.json");
-  nlohmann::json key = synthesis_key(config);
-  key.erase("seed");
-  key["exemplar"] = config["exemplar"];
-  key["quick"] = read_run_json(dir + "/run.json").value("quick", false);
-  return key;
+// What decides a finished run's group (run_store's group_key, as a sweep's plan computes it).
+nlohmann::json run_group_key(const std::string& dir, const nlohmann::json& config) {
+  return group_key(config, read_run_json(dir + "/run.json").value("quick", false));
 }
 
 // The group of a run directory made outside a sweep.
 Found loose_run(const std::string& dir) {
   const nlohmann::json config = read_run_json(dir + "/config.json");
-  const nlohmann::json key = group_key(dir);
+  const nlohmann::json key = run_group_key(dir, config);
   return {dir, json_id(key), run_name(config) + " (" + config["method"].value("type", std::string("?")) + ")", key};
 }
 
@@ -134,7 +128,7 @@ void discover(const std::string& dir, std::vector<Found>& found, std::vector<std
   if (fs::is_regular_file(fs::path(dir) / "manifest.json")) {
     for (const auto& row : load_sweep(dir).rows) {
       const std::string d = (fs::path(dir) / row.dir).string();
-      if (run_dir_state(d) == RunDirState::Complete) found.push_back({d, row.group, row.group_label, group_key(d)});
+      if (run_dir_state(d) == RunDirState::Complete) found.push_back({d, row.group, row.group_label, run_group_key(d, read_run_json(d + "/config.json"))});
       else unfinished.push_back(d);
     }
     return;

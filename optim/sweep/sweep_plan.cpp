@@ -186,11 +186,8 @@ SweepManifest expand_sweep_spec(const nlohmann::json& user, const std::string& s
       std::vector<std::string> overrides = common;
       overrides.insert(overrides.end(), point.begin(), point.end());
       nlohmann::json unseeded = resolve_run_config(src.config, src.has_common ? point : overrides);
-      nlohmann::json group_key = synthesis_key(unseeded);
-      group_key.erase("seed");
-      group_key["exemplar"] = unseeded["exemplar"];
-      group_key["quick"] = quick;
-      const std::string group = json_id(group_key);
+      const nlohmann::json key_of_group = group_key(unseeded, quick);
+      const std::string group = json_id(key_of_group);
       // The preset in the label: a preset's runs and the default's are told apart in gather
       // and its --baseline even when the preset comes from the spec's "set".
       const std::string preset = unseeded["preset"].is_string() ? " (preset " + unseeded["preset"].get<std::string>() + ")" : "";
@@ -199,7 +196,7 @@ SweepManifest expand_sweep_spec(const nlohmann::json& user, const std::string& s
         SweepRow row;
         row.config = unseeded;
         row.config["seed"] = seed;
-        nlohmann::json key = group_key;
+        nlohmann::json key = key_of_group;
         key["seed"] = seed;
         row.id = json_id(key);
         if (!ids.insert(row.id).second) continue;  // the same run named twice
