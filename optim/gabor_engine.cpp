@@ -206,7 +206,7 @@ void GaborEngine::restore(const std::string& bytes) {
     ev.stage_index = r.stage;
     ev.stage_count = static_cast<int>(plan_.size());
     ev.iteration = r.iteration;
-    ev.max_iterations = s_.max_iterations;
+    ev.max_iterations = iteration_cap(plan_.at(r.stage));
     ev.loss = r.loss;
     ev.seconds = r.seconds;
     ev.window = plan_.at(r.stage).window.index;
@@ -358,7 +358,10 @@ void GaborEngine::enter_stage(const Stage& stage) {
   rule_->begin_stage(ex_active);
   for (auto& t : map_terms_) t.term->begin_stage(stage);
   phases_.targets += since(t0);
-  optimizer_ = OptimizerRegistry::instance().create(p_["optimizer"], "method.optimizer", state_.moving, stage.sigma_index);
+  relax_mask_ = stage.border_relax ? border_band() : torch::Tensor();
+  json optimizer = p_["optimizer"];
+  if (stage.border_relax && s_.relax_lr > 0) optimizer["lr"] = json::array({s_.relax_lr});
+  optimizer_ = OptimizerRegistry::instance().create(optimizer, "method.optimizer", state_.moving, stage.sigma_index);
   if (!state_.optimizer.empty()) optimizer_->load_state(state_.optimizer);  // resumed inside the stage
   stage_start_ = Clock::now();
   // Resumed inside the stage: its clock goes on from the last iteration recorded before.
@@ -367,13 +370,30 @@ void GaborEngine::enter_stage(const Stage& stage) {
   if (state_.iteration == 0) ctx_.stage_begin(event(stage));
 }
 
+int GaborEngine::iteration_cap(const Stage& stage) const {
+  return stage.border_relax ? s_.relax_iterations : s_.max_iterations;
+}
+
+torch::Tensor GaborEngine::border_band() const {
+  // From the positions the stage starts from (out_ changes only at stage ends, and a
+  // checkpoint holds it), so a run resumed inside the stage moves the same points.
+  const double b = s_.relax_band;
+  auto mask = torch::zeros({static_cast<int64_t>(moving_idx_.size()), 1}, torch::kBool);
+  auto m = mask.accessor<bool, 2>();
+  for (size_t i = 0; i < moving_idx_.size(); ++i) {
+    const Vec2 p = out_[moving_idx_[i]];
+    m[static_cast<int64_t>(i)][0] = p.x < b || p.x > 1 - b || p.y < b || p.y > 1 - b;
+  }
+  return mask;
+}
+
 ProgressEvent GaborEngine::event(const Stage& stage) const {
   ProgressEvent ev;
   ev.stage = stage.label;
   ev.stage_index = state_.stage;
   ev.stage_count = static_cast<int>(plan_.size());
   ev.iteration = state_.iteration;
-  ev.max_iterations = s_.max_iterations;
+  ev.max_iterations = iteration_cap(stage);
   ev.seconds = since(stage_start_);
   ev.window = stage.window.index;
   ev.windows = stage.window.count;
@@ -398,7 +418,7 @@ torch::Tensor GaborEngine::measure(const torch::Tensor& points, const torch::Ten
 }
 
 torch::Tensor GaborEngine::evaluate(const Stage& stage) {
-  const auto mv = confined(state_.moving);
+  const auto mv = confined(relax_mask_.defined() ? torch::where(relax_mask_, state_.moving, state_.moving.detach()) : state_.moving);
   auto pts = frozen_.size(0) > 0 ? torch::cat({frozen_, mv}) : mv;
   torch::Tensor l, jitter;
   if (s_.measure_tiles()) {  // the mean over the tiles of the cut (optim/random_tiles.hpp)
@@ -410,7 +430,7 @@ torch::Tensor GaborEngine::evaluate(const Stage& stage) {
       l = l.defined() ? l + v : v;
     }
   } else {
-    if (s_.measure == GaborSettings::Measure::rolled) pts = roll_torus(pts, tile_offset(ctx_.seed, state_.stage, state_.iteration, 1));
+    if (s_.measure == GaborSettings::Measure::rolled || stage.border_relax) pts = roll_torus(pts, tile_offset(ctx_.seed, state_.stage, state_.iteration, 1));
     jitter = pipe_->draw_jitter(jitter_rng_);
     l = measure(pts, out_weights_, jitter, stage, false);
   }
@@ -441,8 +461,10 @@ void GaborEngine::run_stage(const Stage& stage) {
     if (v.best) state_.stage_best = state_.moving.detach().clone();
     return v.stop;
   };
-  if (state_.iteration == 0) judge(-1);  // the stage's start, a candidate to end on (a stop there is ignored)
-  while (state_.iteration < s_.max_iterations) {
+  // A border relax runs its fixed count: its pattern is the finished stage's, judged already.
+  const bool judged = !stage.border_relax;
+  if (judged && state_.iteration == 0) judge(-1);  // the stage's start, a candidate to end on (a stop there is ignored)
+  while (state_.iteration < iteration_cap(stage)) {
     const int it = state_.iteration;
     const auto ts = Clock::now();
     const double inner_before = phases_.maps + phases_.net + phases_.loss + phases_.backward;
@@ -457,7 +479,7 @@ void GaborEngine::run_stage(const Stage& stage) {
     ev.loss = lv;
     state_.history.push_back({state_.stage, it, lv, ev.seconds});
     ctx_.iteration(ev);
-    if (judge(it)) break;
+    if (judged && judge(it)) break;
     if (ctx_.stop_requested()) {
       save_checkpoint();
       throw SynthesisInterrupted();
@@ -492,6 +514,7 @@ void GaborEngine::finish_stage(const Stage& stage) {
   state_.stage_scale = -1;
   state_.optimizer.clear();
   optimizer_.reset();
+  relax_mask_ = torch::Tensor();
   if (state_.stage >= static_cast<int>(plan_.size()) || plan_[state_.stage].group != stage.group) {
     if (!window_.torus)  // the window's own part is done: no later window moves it
       for (size_t i : moving_idx_)

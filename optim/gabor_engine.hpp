@@ -68,6 +68,8 @@ class GaborEngine {
   json phase_seconds() const;       // phases_ by name (run.json's "phase_seconds")
   PointSet synthesised() const;     // out_ without a frozen exemplar pad, on the area where points move
   ProgressEvent event(const Stage& stage) const;
+  int iteration_cap(const Stage& stage) const;  // the border relax's count, else method.max_iterations
+  torch::Tensor border_band() const;            // relax_mask_ of a border relax stage
 
   json p_;
   const PointSet& exemplar_;
@@ -96,6 +98,9 @@ class GaborEngine {
   // method.window.statistics = "output": the grid's part inside the output rectangle, as
   // fractions of the grid {x0, y0, x1, y1}; empty: the losses measure the whole grid.
   std::vector<double> measured_;
+  // A border relax stage: [moving x 1], true for the points in the band (the others get no
+  // gradient, so a fresh Adam leaves them where they are); undefined in every other stage.
+  torch::Tensor relax_mask_;
   std::unique_ptr<PositionOptimizer> optimizer_;
   Clock::time_point stage_start_, last_checkpoint_, run_start_;
   double seconds_before_ = 0;  // wall time of the processes before a resume (from the checkpoint)

@@ -50,6 +50,13 @@ json gabor_defaults() {
       // every iteration: the grid's edge never stays where a point could park on it;
       // optim/random_tiles.hpp).
       {"measure", "grid"},
+      // Not in the paper: after each class's sigma stages on the u x u torus, `iterations` more
+      // at the finest sigma that move only that class's points within `band` mean
+      // nearest-neighbour spacings (of the output) of the grid's edge, the rest frozen, with the
+      // grid rolled by a random offset every iteration as "rolled" does: the points the
+      // published grid parked on its edge go back into the pattern around them (Adam at `lr`,
+      // null: the finest sigma's rate). 0 iterations: the paper's border.
+      {"border_relax", {{"iterations", 0}, {"band", 1.0}, {"lr", nullptr}}},
       // Rectangle outputs ("output": {"size"} or {"points"}) run window by window
       // (optim/window_plan.hpp): windows of at most `pixels` grid positions across; a margin
       // of 3 sigma_max + `receptive_field` positions (the network's half-width) on each side
@@ -74,6 +81,7 @@ json gabor_bounds() {
       {"max_iterations", "int [1, 1000000000]"},
       {"class_order", "int [0, 1000000]"},
       {"window", {{"pixels", "int [16, 8192]"}, {"receptive_field", "int [0, 1000]"}}},
+      {"border_relax", {{"iterations", "int [0, 1000000000]"}, {"band", "(0, inf)"}}},
       {"quick", {{"res", "int [8, 8192]"}, {"channels", "int [1, 4096]"}, {"max_iterations", "int [1, 1000000000]"},
                  {"num_sigmas", "int [1, 64]"}}},
   };
@@ -146,6 +154,23 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
                                          "(output.size or output.points) takes output.border instead");
   if (s.measure != GaborSettings::Measure::grid && !p["map_terms"].empty())
     throw config_error("method.measure", named + " does not combine with method.map_terms (their maps are the unrolled grid's)");
+  {
+    const json& r = p["border_relax"];
+    s.relax_iterations = get_int(r, "iterations", "method.border_relax");
+    if (quick) s.relax_iterations = std::min(s.relax_iterations, s.max_iterations);
+    s.relax_band = get_number(r, "band", "method.border_relax") * s.mean_nn_distance / s.upscale;
+    const json& lr = r["lr"];
+    if (!lr.is_null() && !(lr.is_number() && lr.get<double>() > 0))
+      throw config_error("method.border_relax.lr", "expected null (the finest sigma's rate) or a number > 0");
+    s.relax_lr = lr.is_null() ? 0.0 : lr.get<double>();
+    if (s.relax_iterations > 0 && shape.rectangle)
+      throw config_error("method.border_relax", "relaxes the border of the paper's u x u square; a rectangle output "
+                                                "(output.size or output.points) takes output.border instead");
+    if (s.relax_iterations > 0 && s.measure != GaborSettings::Measure::grid)
+      throw config_error("method.border_relax", "needs method.measure \"grid\" (the other measures have no grid edge to park on)");
+    if (s.relax_iterations > 0 && !p["map_terms"].empty())
+      throw config_error("method.border_relax", "does not combine with method.map_terms (their maps are the unrolled grid's)");
+  }
   if (!shape.rectangle) {
     s.out_res = s.upscale * s.res;
     s.out_scale = s.upscale;

@@ -36,7 +36,14 @@ SynthesisPlan class_sigma_plan(const PointSet& exemplar, const GaborSettings& s,
       stage.own_class = cls;
       stage.moving = out_index[cls];
       stage.frozen = frozen;
-      plan.push_back(std::move(stage));
+      plan.push_back(stage);
+      if (j + 1 == s.sigmas.size() && s.relax_iterations > 0) {  // the finest sigma's settings, the border band only
+        stage.label = (K > 1 ? "class " + std::to_string(st + 1) + "/" + std::to_string(K) + " (id " + std::to_string(cls) + "), "
+                             : std::string()) +
+                      "border relax";
+        stage.border_relax = true;
+        plan.push_back(std::move(stage));
+      }
     }
   }
   return plan;

@@ -6,7 +6,8 @@
 // unwrapped positions); a new group starts from the output's wrapped positions.
 //
 // The paper's plan (class_sigma_plan): one group per class in class order, one stage per
-// sigma, earlier classes frozen, the maps on the unit square read as a torus. The windows of
+// sigma, earlier classes frozen, the maps on the unit square read as a torus; with
+// method.border_relax a last stage in each class's group relaxes its border band. The windows of
 // a large canvas (optim/window_plan.hpp) are another plan for the same engine
 // (optim/gabor_engine.hpp): the same class and sigma stages, once per window.
 #include <string>
@@ -47,6 +48,10 @@ struct Stage {
   std::vector<int> target_classes;     // exemplar classes the targets are computed from
   int own_class = -1;                  // the moving class (for per-class terms); -1: none
   StageWindow window;
+  // method.border_relax: only the moving points near the grid's edge move (those within the
+  // band when the stage starts), on the grid rolled every iteration, for a fixed number of
+  // iterations (no stopping rule).
+  bool border_relax = false;
   std::vector<size_t> moving, frozen;  // indices into the output (torus plans; windows choose their own)
 };
 

@@ -1,0 +1,130 @@
+// method.border_relax (optim/stage_plan.hpp): after each class's sigma stages on the u x u
+// torus, a stage that moves only that class's points within the band of the grid's edge, on
+// the rolled grid. It must leave every other point where the stage found it, move the band,
+// resume bit for bit, and be refused where there is no grid edge.
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+#include "core/metrics/nearest_neighbor.hpp"
+#include "core/output_shape.hpp"
+#include "optim/gabor_pipeline.hpp"
+#include "optim/method.hpp"
+#include "optim/run/run_config.hpp"
+#include "tests/support/same_bits.hpp"
+#include "tests/support/small_exemplar.hpp"
+
+using namespace ppsynth;
+using ppsynth::test::same_bits;
+
+namespace {
+
+json relaxed_method(int iterations) {
+  return json{{"type", "gabor"},
+              {"border_relax", {{"iterations", iterations}, {"band", 1.0}}},
+              {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 5}, {"num_sigmas", 2}}}};
+}
+
+// The output at every stage's end, with the stage's label.
+struct StageEnds : SynthesisObserver {
+  std::vector<std::string> labels;
+  std::vector<PointSet> points;
+  void on_stage_end(const ProgressEvent& e, const PointSet& p) override {
+    labels.push_back(e.stage);
+    points.push_back(p);
+  }
+};
+
+json method_params(const json& spec) {
+  json m;
+  MethodRegistry::instance().create(spec, "method", &m);
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("a border relax moves only its class's points near the grid's edge, after the class's sigmas", "[optim][border_relax]") {
+  for (int classes : {1, 2}) {
+    INFO(classes << " classes");
+    const PointSet ex = test::small_exemplar(classes, false);
+    const double band = mean_nn_distance(ex) / 2;  // 1 mean spacing of the u = 2 output
+    auto method = MethodRegistry::instance().create(relaxed_method(4), "method");
+    StageEnds ends;
+    SynthesisContext ctx;
+    ctx.quick = true;
+    ctx.seed = 7;
+    ctx.observers.push_back(&ends);
+    const PointSet out = method->synthesize(ex, ctx);
+    // per class: sigma 1, sigma 2, border relax
+    REQUIRE(ends.labels.size() == static_cast<size_t>(3 * classes));
+    size_t band_points = 0, moved = 0;
+    for (int c = 0; c < classes; ++c) {
+      const size_t r = 3 * c + 2;
+      CHECK(ends.labels[r].find("border relax") != std::string::npos);
+      const PointSet& before = ends.points[r - 1];
+      const PointSet& after = ends.points[r];
+      REQUIRE(before.size() == after.size());
+      for (size_t i = 0; i < before.size(); ++i) {
+        const Vec2 p = before[i];
+        const bool in_band = p.x < band || p.x > 1 - band || p.y < band || p.y > 1 - band;
+        if (before.cls(i) == c && in_band) {
+          ++band_points;
+          moved += p.x != after[i].x || p.y != after[i].y;
+        } else {
+          INFO("point " << i << " of class " << before.cls(i));
+          CHECK(p.x == after[i].x);  // frozen: bit for bit where the stage found it
+          CHECK(p.y == after[i].y);
+        }
+      }
+    }
+    CHECK(band_points > 0);
+    CHECK(moved > band_points / 2);
+    CHECK(same_bits(out, ends.points.back()));
+  }
+}
+
+TEST_CASE("a run with a border relax resumes from any checkpoint bit for bit", "[optim][border_relax][checkpoint]") {
+  const PointSet ex = test::small_exemplar(2, true);
+  auto run = [&](int iterations, const std::string* resume, std::vector<std::string>* saved) {
+    auto method = MethodRegistry::instance().create(relaxed_method(iterations), "method");
+    SynthesisContext ctx;
+    ctx.quick = true;
+    ctx.seed = 5;
+    ctx.checkpoint_seconds = 0;
+    if (saved) ctx.save_checkpoint = [saved](const std::string& b) { saved->push_back(b); };
+    ctx.resume_state = resume;
+    return method->synthesize(ex, ctx);
+  };
+  std::vector<std::string> cps;
+  const PointSet whole = run(4, nullptr, &cps);
+  REQUIRE(cps.size() > 20);
+  // Inside the first class's relax (after its 2 x 5 sigma iterations), between classes, in the last relax.
+  for (size_t i : {size_t{13}, cps.size() / 2, cps.size() - 2}) {
+    INFO("checkpoint " << i);
+    CHECK(same_bits(run(4, &cps[i], nullptr), whole));
+  }
+  CHECK_FALSE(same_bits(run(0, nullptr, nullptr), whole));
+}
+
+TEST_CASE("method.border_relax is refused where there is no grid edge, naming the key", "[optim][border_relax]") {
+  const PointSet ex = test::small_exemplar(1, false);
+  OutputShape square;
+  square.upscale = 2;
+  json relax = {{"type", "gabor"}, {"border_relax", {{"iterations", 10}}}};
+  CHECK(resolve_gabor_settings(method_params(relax), ex, square, false).relax_iterations == 10);
+  CHECK(resolve_gabor_settings(method_params(relax), ex, square, true).relax_iterations == 4);  // --quick's cap
+  const OutputShape rect = resolve_output_shape(resolve_run_config(json{{"output", {{"size", {2, 2}}}}}, {}), ex);
+  CHECK_THROWS_WITH(resolve_gabor_settings(method_params(relax), ex, rect, false), Catch::Contains("method.border_relax"));
+  json tiles = relax;
+  tiles["measure"] = "tiles";
+  CHECK_THROWS_WITH(resolve_gabor_settings(method_params(tiles), ex, square, false), Catch::Contains("method.border_relax"));
+  json bad_lr = relax;
+  bad_lr["border_relax"]["lr"] = -1;
+  CHECK_THROWS_WITH(resolve_gabor_settings(method_params(bad_lr), ex, square, false), Catch::Contains("method.border_relax.lr"));
+  json bad_band = relax;
+  bad_band["border_relax"]["band"] = 0;
+  CHECK_THROWS_WITH(method_params(bad_band), Catch::Contains("method.border_relax.band"));
+  // Off (0 iterations, the default) it is the paper's plan, wherever the output goes.
+  CHECK(resolve_gabor_settings(method_params(json{{"type", "gabor"}}), ex, rect, false).relax_iterations == 0);
+}
