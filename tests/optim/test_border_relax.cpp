@@ -12,10 +12,12 @@
 #include "optim/gabor_pipeline.hpp"
 #include "optim/method.hpp"
 #include "optim/run/run_config.hpp"
+#include "tests/support/gabor_runs.hpp"
 #include "tests/support/same_bits.hpp"
 #include "tests/support/small_exemplar.hpp"
 
 using namespace ppsynth;
+using ppsynth::test::method_params;
 using ppsynth::test::same_bits;
 
 namespace {
@@ -36,11 +38,6 @@ struct StageEnds : SynthesisObserver {
   }
 };
 
-json method_params(const json& spec) {
-  json m;
-  MethodRegistry::instance().create(spec, "method", &m);
-  return m;
-}
 
 }  // namespace
 
@@ -87,14 +84,9 @@ TEST_CASE("a border relax moves only its class's points near the grid's edge, af
 TEST_CASE("a run with a border relax resumes from any checkpoint bit for bit", "[optim][border_relax][checkpoint]") {
   const PointSet ex = test::small_exemplar(2, true);
   auto run = [&](int iterations, const std::string* resume, std::vector<std::string>* saved) {
-    auto method = MethodRegistry::instance().create(relaxed_method(iterations), "method");
-    SynthesisContext ctx;
-    ctx.quick = true;
-    ctx.seed = 5;
-    ctx.checkpoint_seconds = 0;
-    if (saved) ctx.save_checkpoint = [saved](const std::string& b) { saved->push_back(b); };
-    ctx.resume_state = resume;
-    return method->synthesize(ex, ctx);
+    auto r = test::checkpointed_run(relaxed_method(iterations), ex, 5, resume);
+    if (saved) *saved = std::move(r.checkpoints);
+    return r.output;
   };
   std::vector<std::string> cps;
   const PointSet whole = run(4, nullptr, &cps);

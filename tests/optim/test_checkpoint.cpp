@@ -11,6 +11,7 @@
 #include "core/metrics/pcf.hpp"
 #include "optim/method.hpp"
 #include "optim/synthesis_state.hpp"
+#include "tests/support/gabor_runs.hpp"
 #include "tests/support/same_bits.hpp"
 #include "tests/support/small_exemplar.hpp"
 
@@ -20,29 +21,13 @@ using ppsynth::test::same_bits;
 namespace {
 
 
-struct Run {
-  PointSet output;
-  std::vector<std::string> checkpoints;  // every one saved, in order
-  json stats;
-};
+using Run = test::CheckpointedRun;
 
 const json kQuickMethod{{"type", "gabor"}, {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 7}, {"num_sigmas", 2}}}};
 
 Run synthesize(const PointSet& ex, const std::string* resume = nullptr, const std::atomic<bool>* stop = nullptr,
                const json& method_spec = kQuickMethod) {
-  auto method = MethodRegistry::instance().create(method_spec, "method");
-  REQUIRE(method->can_resume());
-  Run run;
-  SynthesisContext ctx;
-  ctx.quick = true;
-  ctx.seed = 5;
-  ctx.stats = &run.stats;
-  ctx.checkpoint_seconds = 0;  // every iteration
-  ctx.save_checkpoint = [&](const std::string& bytes) { run.checkpoints.push_back(bytes); };
-  ctx.resume_state = resume;
-  ctx.stop = stop;
-  run.output = method->synthesize(ex, ctx);
-  return run;
+  return test::checkpointed_run(method_spec, ex, 5, resume, stop);
 }
 
 

@@ -17,22 +17,13 @@
 #include "optim/random_tiles.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/synthesis_state.hpp"
+#include "tests/support/gabor_runs.hpp"
 #include "tests/support/same_bits.hpp"
 #include "tests/support/small_exemplar.hpp"
 
 using namespace ppsynth;
+using ppsynth::test::method_params;
 using ppsynth::test::same_bits;
-
-namespace {
-
-
-json method_params(const json& spec) {
-  json m;
-  MethodRegistry::instance().create(spec, "method", &m);
-  return m;
-}
-
-}  // namespace
 
 TEST_CASE("the cut partitions the torus's points into u x u tiles, each in its own unit square", "[optim][tiles]") {
   std::mt19937_64 rng(3);
@@ -157,17 +148,11 @@ TEST_CASE("a tiles or rolled run resumes from any checkpoint bit for bit, and di
     INFO(measure << ", " << classes << " classes, disks " << disks);
     const PointSet ex = test::small_exemplar(classes, disks);
     auto run = [&](const std::string& measure, const std::string* resume, std::vector<std::string>* saved) {
-      auto method = MethodRegistry::instance().create(
-          json{{"type", "gabor"}, {"measure", measure},
-               {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 6}, {"num_sigmas", 2}}}},
-          "method");
-      SynthesisContext ctx;
-      ctx.quick = true;
-      ctx.seed = 5;
-      ctx.checkpoint_seconds = 0;
-      if (saved) ctx.save_checkpoint = [saved](const std::string& b) { saved->push_back(b); };
-      ctx.resume_state = resume;
-      return method->synthesize(ex, ctx);
+      auto r = test::checkpointed_run(json{{"type", "gabor"}, {"measure", measure},
+                                           {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 6}, {"num_sigmas", 2}}}},
+                                      ex, 5, resume);
+      if (saved) *saved = std::move(r.checkpoints);
+      return r.output;
     };
     std::vector<std::string> cps;
     const PointSet whole = run(measure, nullptr, &cps);

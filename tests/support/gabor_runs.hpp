@@ -1,0 +1,46 @@
+#pragma once
+// Test support: an in-process run of a method that keeps every checkpoint (one per
+// iteration and stage boundary), resumed from given bytes when asked; and a method spec
+// merged with its defaults as a run resolves it.
+#include <catch2/catch.hpp>
+
+#include <atomic>
+#include <string>
+#include <vector>
+
+#include "optim/method.hpp"
+
+namespace ppsynth::test {
+
+struct CheckpointedRun {
+  PointSet output;
+  std::vector<std::string> checkpoints;  // every one saved, in order
+  json stats;
+};
+
+// `method_spec` on the paper's u x u square with --quick, seed `seed`, a checkpoint at every iteration.
+inline CheckpointedRun checkpointed_run(const json& method_spec, const PointSet& ex, uint64_t seed,
+                                        const std::string* resume = nullptr, const std::atomic<bool>* stop = nullptr) {
+  auto method = MethodRegistry::instance().create(method_spec, "method");
+  REQUIRE(method->can_resume());
+  CheckpointedRun run;
+  SynthesisContext ctx;
+  ctx.quick = true;
+  ctx.seed = seed;
+  ctx.stats = &run.stats;
+  ctx.checkpoint_seconds = 0;  // every iteration
+  ctx.save_checkpoint = [&](const std::string& bytes) { run.checkpoints.push_back(bytes); };
+  ctx.resume_state = resume;
+  ctx.stop = stop;
+  run.output = method->synthesize(ex, ctx);
+  return run;
+}
+
+// The method's params as the run sees them (defaults merged, checked against their bounds).
+inline json method_params(const json& spec) {
+  json m;
+  MethodRegistry::instance().create(spec, "method", &m);
+  return m;
+}
+
+}  // namespace ppsynth::test
