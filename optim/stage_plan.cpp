@@ -23,11 +23,11 @@ SynthesisPlan class_sigma_plan(const PointSet& exemplar, const GaborSettings& s,
     const size_t active_points = exemplar.subset_classes(active).size();
     std::vector<size_t> frozen;
     for (int j = 0; j < st; ++j) frozen.insert(frozen.end(), out_index[s.class_order[j]].begin(), out_index[s.class_order[j]].end());
+    const std::string of_class =
+        K > 1 ? "class " + std::to_string(st + 1) + "/" + std::to_string(K) + " (id " + std::to_string(cls) + "), " : std::string();
     for (size_t j = 0; j < s.sigmas.size(); ++j) {
       Stage stage;
-      stage.label = (K > 1 ? "class " + std::to_string(st + 1) + "/" + std::to_string(K) + " (id " + std::to_string(cls) + "), "
-                           : std::string()) +
-                    "sigma " + std::to_string(j + 1) + "/" + std::to_string(s.sigmas.size());
+      stage.label = of_class + "sigma " + std::to_string(j + 1) + "/" + std::to_string(s.sigmas.size());
       stage.group = st;
       stage.sigma_index = static_cast<int>(j);
       stage.sigma = s.sigmas[j];
@@ -38,9 +38,7 @@ SynthesisPlan class_sigma_plan(const PointSet& exemplar, const GaborSettings& s,
       stage.frozen = frozen;
       plan.push_back(stage);
       if (j + 1 == s.sigmas.size() && s.relax_iterations > 0) {  // the finest sigma's settings, the border band only
-        stage.label = (K > 1 ? "class " + std::to_string(st + 1) + "/" + std::to_string(K) + " (id " + std::to_string(cls) + "), "
-                             : std::string()) +
-                      "border relax";
+        stage.label = of_class + "border relax";
         stage.border_relax = true;
         plan.push_back(std::move(stage));
       }
