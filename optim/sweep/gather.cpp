@@ -115,13 +115,19 @@ void label_by_differences(std::vector<Found>& found) {
         std::string dotted = path.substr(1);
         std::replace(dotted.begin(), dotted.end(), '/', '.');
         std::string& text = mine.is_null() ? unset : set;
-        text += (text.empty() ? "" : ", ") + dotted + "=" + (mine.is_string() ? mine.get<std::string>() : mine.dump());
+        text += (text.empty() ? "" : ", ") + dotted +
+                (mine.is_null() ? " unset" : "=" + (mine.is_string() ? mine.get<std::string>() : mine.dump()));
       }
-      suffix[g] = " [" + (set.empty() ? unset : set) + "]";
+      suffix[g] = set.empty() ? unset : set;
     }
   }
+  // Into the bracket a sweep's grid label already has ("lines [a=1, b unset]"), else a new one.
   for (Found& f : found)
-    if (const auto it = suffix.find(f.group); it != suffix.end()) f.group_label += it->second;
+    if (const auto it = suffix.find(f.group); it != suffix.end()) {
+      std::string& label = f.group_label;
+      if (!label.empty() && label.back() == ']') label.insert(label.size() - 1, ", " + it->second);
+      else label += " [" + it->second + "]";
+    }
 }
 
 void discover(const std::string& dir, std::vector<Found>& found, std::vector<std::string>& unfinished, int depth) {

@@ -313,4 +313,19 @@ TEST_CASE("gather tells apart two sweeps of one run config with other settings",
   CHECK(labels == std::set<std::string>{"lines [method.quick.max_iterations=1]", "lines [method.quick.max_iterations=2]"});
   // alone, a sweep keeps its plain labels
   CHECK(gather_runs({dirs[0]}, GatherOptions{}).runs.at(0).group_label == "lines");
+  // Two sweeps with one grid label, one without a key the other has (a term it does not
+  // switch on): one bracket per label, the missing key named as unset.
+  std::vector<std::string> grids;
+  for (const bool term : {true, false}) {
+    json spec = tiny_spec({{"method.quick.max_iterations", {1}}});
+    spec["seeds"] = {3};
+    if (term) spec["set"].push_back("method.terms.separation.weight=1");
+    grids.push_back((d / (term ? "grid_term" : "grid")).string());
+    plan_sweep(expand_sweep_spec(spec, "spec", ""), grids.back());
+    REQUIRE(run_sweep_task(grids.back(), 0, nullptr) == RowState::Done);
+  }
+  labels.clear();
+  for (const auto& run : gather_runs(grids, GatherOptions{}).runs) labels.insert(run.group_label);
+  CHECK(labels == std::set<std::string>{"lines [method.quick.max_iterations=1, method.terms.separation.weight=1]",
+                                        "lines [method.quick.max_iterations=1, method.terms.separation.weight unset]"});
 }
