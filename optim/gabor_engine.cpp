@@ -151,6 +151,9 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
   map_terms_ = create_map_terms(p_["map_terms"]);
   for (auto& t : map_terms_) t.term->begin_run(MapTermRun{p_, s_, exemplar, ctx.seed});
   terms_ = create_point_terms(p_["terms"]);
+  if (s_.relax_iterations > 0)
+    relax_terms_ = create_weighted_terms<PointTerm>(
+        json{{"separation", {{"weight", p_["border_relax"]["separation"]}}}}, "method.border_relax");
   rule_ = StoppingRuleRegistry::instance().create(p_["convergence"], "method.convergence");
   OptimizerRegistry::instance().entry(p_["optimizer"].value("type", ""), "method.optimizer.type");
   auto init = InitializerRegistry::instance().create(p_["init"], "method.init");
@@ -182,6 +185,7 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
   }
   for (const auto& t : map_terms_) stats_["map_terms"][t.name] = t.weight;
   for (const auto& t : terms_) stats_["terms"][t.name] = t.weight;
+  for (const auto& t : relax_terms_) stats_["border_relax_terms"][t.name] = t.weight;
 }
 
 void GaborEngine::restore(const std::string& bytes) {
@@ -294,7 +298,8 @@ void GaborEngine::enter_group(const Stage& stage) {
     const Domain o = intersection(g, shape_.domain());
     measured_ = {(o.x0 - g.x0) / g.width(), (o.y0 - g.y0) / g.height(), (o.x1 - g.x0) / g.width(), (o.y1 - g.y0) / g.height()};
   }
-  for (auto& t : terms_) t.term->begin_class(ClassStage{exemplar_, out_, moving_idx_, frozen_idx_, s_.upscale});
+  for (auto* terms : {&terms_, &relax_terms_})
+    for (auto& t : *terms) t.term->begin_class(ClassStage{exemplar_, out_, moving_idx_, frozen_idx_, s_.upscale});
   for (auto& t : map_terms_) t.term->begin_group(stage, out_);
 }
 
@@ -441,8 +446,11 @@ torch::Tensor GaborEngine::evaluate(const Stage& stage) {
   }
   // The paper's loss (+ map terms) at the stage's first evaluation: the unit of the point
   // terms, so one weight serves every scene and sigma (optim/point_term.hpp).
-  if (!terms_.empty() && state_.stage_scale < 0) state_.stage_scale = l.item<double>();
+  const bool relax_terms = stage.border_relax && !relax_terms_.empty();
+  if ((!terms_.empty() || relax_terms) && state_.stage_scale < 0) state_.stage_scale = l.item<double>();
   for (auto& t : terms_) l = l + t.weight * state_.stage_scale * t.term->evaluate(mv, frozen_);
+  if (relax_terms)
+    for (auto& t : relax_terms_) l = l + t.weight * state_.stage_scale * t.term->evaluate(mv, frozen_);
   const auto td = Clock::now();
   l.backward();
   phases_.loss += std::chrono::duration<double>(td - tc).count();

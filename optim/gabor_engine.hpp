@@ -80,6 +80,7 @@ class GaborEngine {
   std::unique_ptr<GaborPipeline> pipe_;
   std::vector<WeightedMapTerm> map_terms_;
   std::vector<WeightedPointTerm> terms_;
+  std::vector<WeightedPointTerm> relax_terms_;  // method.border_relax.separation: in relax stages only
   std::unique_ptr<StoppingRule> rule_;
   SynthesisPlan plan_;
   PointSet out_;

@@ -55,8 +55,12 @@ json gabor_defaults() {
       // nearest-neighbour spacings (of the output) of the grid's edge, the rest frozen, with the
       // grid rolled by a random offset every iteration as "rolled" does: the points the
       // published grid parked on its edge go back into the pattern around them (Adam at `lr`,
-      // null: the finest sigma's rate). 0 iterations: the paper's border.
-      {"border_relax", {{"iterations", 0}, {"band", 1.0}, {"lr", nullptr}}},
+      // null: the finest sigma's rate). 0 iterations: the paper's border. `separation`: the
+      // weight of the separation point term (optim/separation_term.hpp) in the relax stages
+      // only, beside any method.terms: across the rolled seam the Gabor losses pull a class's
+      // close pairs into one point (lemon_4c_v2's class 0: docs/large_outputs.md), and the
+      // term keeps the exemplar's spacing while the sigma stages stay the paper's. 0: off.
+      {"border_relax", {{"iterations", 0}, {"band", 1.0}, {"lr", nullptr}, {"separation", 1.0}}},
       // Rectangle outputs ("output": {"size"} or {"points"}) run window by window
       // (optim/window_plan.hpp): windows of at most `pixels` grid positions across; a margin
       // of 3 sigma_max + `receptive_field` positions (the network's half-width) on each side
@@ -81,7 +85,7 @@ json gabor_bounds() {
       {"max_iterations", "int [1, 1000000000]"},
       {"class_order", "int [0, 1000000]"},
       {"window", {{"pixels", "int [16, 8192]"}, {"receptive_field", "int [0, 1000]"}}},
-      {"border_relax", {{"iterations", "int [0, 1000000000]"}, {"band", "(0, inf)"}}},
+      {"border_relax", {{"iterations", "int [0, 1000000000]"}, {"band", "(0, inf)"}, {"separation", "[0, inf)"}}},
       {"quick", {{"res", "int [8, 8192]"}, {"channels", "int [1, 4096]"}, {"max_iterations", "int [1, 1000000000]"},
                  {"num_sigmas", "int [1, 64]"}}},
   };

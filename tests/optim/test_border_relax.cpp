@@ -4,6 +4,8 @@
 // resume bit for bit, and be refused where there is no grid edge.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -22,9 +24,9 @@ using ppsynth::test::same_bits;
 
 namespace {
 
-json relaxed_method(int iterations) {
+json relaxed_method(int iterations, double separation = 1.0) {
   return json{{"type", "gabor"},
-              {"border_relax", {{"iterations", iterations}, {"band", 1.0}}},
+              {"border_relax", {{"iterations", iterations}, {"band", 1.0}, {"separation", separation}}},
               {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 5}, {"num_sigmas", 2}}}};
 }
 
@@ -81,6 +83,45 @@ TEST_CASE("a border relax moves only its class's points near the grid's edge, af
   }
 }
 
+TEST_CASE("the border relax's separation acts in the relax stages only, and keeps their pairs apart", "[optim][border_relax]") {
+  // Class 0 a 3 x 3 lattice: its pairs are wide (1/3), so the output's best-candidate start
+  // has pairs closer than the term's threshold for it to act on; class 1 four points.
+  PointSet ex;
+  for (int i = 0; i < 9; ++i) ex.add({(i % 3 + 0.5) / 3, (i / 3 + 0.5) / 3}, 0);
+  for (const Vec2 p : {Vec2{0.1, 0.1}, Vec2{0.6, 0.2}, Vec2{0.3, 0.7}, Vec2{0.8, 0.8}}) ex.add(p, 1);
+  auto stage_ends = [&](double separation) {
+    auto method = MethodRegistry::instance().create(relaxed_method(4, separation), "method");
+    StageEnds ends;
+    SynthesisContext ctx;
+    ctx.quick = true;
+    ctx.seed = 7;
+    ctx.observers.push_back(&ends);
+    method->synthesize(ex, ctx);
+    REQUIRE(ends.points.size() == 6);  // per class: sigma 1, sigma 2, border relax
+    return ends.points;
+  };
+  const auto off = stage_ends(0), on = stage_ends(50);
+  // Class 0's sigma stages are the paper's, bit for bit: the term waits for the relax.
+  CHECK(same_bits(off[0], on[0]));
+  CHECK(same_bits(off[1], on[1]));
+  CHECK_FALSE(same_bits(off[2], on[2]));
+  // What the term asks for: fewer of class 0's pairs inside its threshold (0.9 x the
+  // exemplar's closest pair / u, on the output's torus) than the relax alone leaves.
+  auto shortfall = [](const PointSet& p) {
+    const PointSet c = p.subset_class(0);
+    const double t = 0.9 * (1.0 / 3) / 2;
+    double sum = 0;
+    for (size_t i = 0; i < c.size(); ++i)
+      for (size_t j = i + 1; j < c.size(); ++j) {
+        const double dx = std::abs(c[i].x - c[j].x), dy = std::abs(c[i].y - c[j].y);
+        sum += std::max(0.0, t - std::hypot(std::min(dx, 1 - dx), std::min(dy, 1 - dy)));
+      }
+    return sum;
+  };
+  INFO("before the relax " << shortfall(off[1]) << ", relax alone " << shortfall(off[2]) << ", with the term " << shortfall(on[2]));
+  CHECK(shortfall(on[2]) < shortfall(off[2]));
+}
+
 TEST_CASE("a run with a border relax resumes from any checkpoint bit for bit", "[optim][border_relax][checkpoint]") {
   const PointSet ex = test::small_exemplar(2, true);
   auto run = [&](int iterations, const std::string* resume, std::vector<std::string>* saved) {
@@ -114,6 +155,9 @@ TEST_CASE("method.border_relax is refused where there is no grid edge, naming th
   json bad_lr = relax;
   bad_lr["border_relax"]["lr"] = -1;
   CHECK_THROWS_WITH(resolve_gabor_settings(method_params(bad_lr), ex, square, false), Catch::Contains("method.border_relax.lr"));
+  json bad_separation = relax;
+  bad_separation["border_relax"]["separation"] = -1;
+  CHECK_THROWS_WITH(method_params(bad_separation), Catch::Contains("method.border_relax.separation"));
   json bad_band = relax;
   bad_band["border_relax"]["band"] = 0;
   CHECK_THROWS_WITH(method_params(bad_band), Catch::Contains("method.border_relax.band"));
