@@ -180,6 +180,39 @@ BaselineComparison compare_medians(const std::vector<double>& a, const std::vect
   return c;
 }
 
+// Seeds that occur exactly once among `seeds` (a seed gathered twice from loose copies has no
+// one value to pair), with their values.
+std::map<uint64_t, double> single_seed_values(const MetricSummary& s) {
+  std::map<uint64_t, double> once;
+  std::set<uint64_t> repeated;
+  for (size_t i = 0; i < s.seeds.size(); ++i)
+    if (!once.emplace(s.seeds[i], s.values[i]).second) repeated.insert(s.seeds[i]);
+  for (uint64_t seed : repeated) once.erase(seed);
+  return once;
+}
+
+// The per-seed ratios of the seeds both ran, their median and its bootstrap interval
+// (BaselineComparison).
+void compare_paired(const MetricSummary& s, const MetricSummary& base, BaselineComparison& c) {
+  const std::map<uint64_t, double> mine = single_seed_values(s), theirs = single_seed_values(base);
+  for (const auto& [seed, value] : mine) {
+    const auto b = theirs.find(seed);
+    if (b == theirs.end() || !std::isfinite(b->second) || b->second == 0 || !std::isfinite(value)) continue;
+    c.paired_seeds.push_back(seed);
+    c.paired_ratios.push_back(value / b->second);
+  }
+  c.paired = c.paired_lo = c.paired_hi = std::nan("");
+  if (c.paired_ratios.empty()) return;
+  c.paired = summarize(c.paired_ratios).median;
+  std::mt19937_64 rng(20261126);
+  std::vector<double> medians, draw(c.paired_ratios.size());
+  for (int k = 0; k < 2000; ++k) {
+    for (auto& x : draw) x = c.paired_ratios[std::uniform_int_distribution<size_t>(0, draw.size() - 1)(rng)];
+    medians.push_back(summarize(draw).median);
+  }
+  c.paired_lo = quantile(medians, 0.05), c.paired_hi = quantile(medians, 0.95);
+}
+
 // One note per group whose runs name more than one processor.
 std::vector<std::string> processor_notes(const std::vector<GatheredRun>& runs) {
   std::map<std::string, std::map<std::string, std::vector<uint64_t>>> seeds;  // group label -> processor -> seeds
@@ -329,6 +362,7 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
                                     [&](const MetricSummary& x) { return x.scope == s.scope && x.metric == s.metric; });
         if (b == by_group[base].end()) continue;
         BaselineComparison c = compare_medians(s.values, b->values);
+        compare_paired(s, *b, c);
         c.group_label = s.group_label, c.baseline_label = label, c.scope = s.scope, c.metric = s.metric;
         r.comparisons.push_back(c);
       }
@@ -388,14 +422,16 @@ std::pair<std::vector<std::string>, std::vector<std::vector<std::string>>> per_s
 }
 
 std::vector<std::string> comparison_header() {
-  return {"group", "baseline", "scope", "metric", "n", "n baseline", "median / baseline median", "90 % bootstrap interval"};
+  return {"group", "baseline", "scope", "metric", "n", "n baseline", "median / baseline median", "90 % bootstrap interval",
+          "seeds paired", "median of per-seed ratios", "its 90 % interval"};
 }
 
 std::vector<std::vector<std::string>> comparison_rows(const GatherResult& r) {
   std::vector<std::vector<std::string>> rows;
   for (const auto& c : r.comparisons)
     rows.push_back({c.group_label, c.baseline_label, c.scope, c.metric, std::to_string(c.n), std::to_string(c.n_baseline),
-                    num(c.ratio, "%.3f"), num(c.lo, "%.2f") + "-" + num(c.hi, "%.2f")});
+                    num(c.ratio, "%.3f"), num(c.lo, "%.2f") + "-" + num(c.hi, "%.2f"), std::to_string(c.paired_seeds.size()),
+                    num(c.paired, "%.3f"), c.paired_seeds.empty() ? "-" : num(c.paired_lo, "%.2f") + "-" + num(c.paired_hi, "%.2f")});
   return rows;
 }
 
@@ -418,7 +454,9 @@ nlohmann::json to_json(const GatherResult& r) {
   for (const auto& c : r.comparisons)
     comps.push_back({{"group_label", c.group_label}, {"baseline", c.baseline_label}, {"scope", c.scope}, {"metric", c.metric},
                      {"n", c.n}, {"n_baseline", c.n_baseline}, {"ratio_of_medians", c.ratio}, {"bootstrap_5", c.lo},
-                     {"bootstrap_95", c.hi}});
+                     {"bootstrap_95", c.hi}, {"paired_seeds", c.paired_seeds}, {"paired_ratios", c.paired_ratios},
+                     {"paired_median", c.paired}, {"paired_bootstrap_5", c.paired_lo},
+                     {"paired_bootstrap_95", c.paired_hi}});
   return {{"references", refs}, {"bound", r.options.bound}, {"runs", runs}, {"summaries", sums},
           {"evaluation", r.options.protocol ? std::string(patch_protocol_name(*r.options.protocol)) : std::string("metrics.json")},
           {"baselines", r.options.baselines}, {"comparisons", comps}, {"left_out", r.unfinished}, {"notes", r.notes}};
@@ -469,27 +507,35 @@ std::vector<std::pair<std::string, std::string>> write_plots(const GatherResult&
 
 }  // namespace
 
+// Each group's label on a line of its own above its rows: labels carry a sweep's grid keys
+// ("lemon_4c_v2 (preset fast) [method.border_relax.iterations=0]") and a column cut to a fixed
+// width would print two groups that differ only at the end as one.
 std::string format_gather(const GatherResult& r) {
   std::string s = "evaluation: " + evaluation_text(r.options) + "\n";
   char line[512];
-  std::snprintf(line, sizeof line, "%-40s %-12s %-22s %3s %11s %11s %11s %9s %7s\n", "group", "scope", "metric", "n", "median",
-                "q1", "q3", "ref", "ratio");
+  std::snprintf(line, sizeof line, "  %-14s %-22s %3s %11s %11s %11s %9s %7s\n", "scope", "metric", "n", "median", "q1", "q3",
+                "ref", "ratio");
   s += line;
+  std::string group;
   for (const auto& m : r.summaries) {
-    std::snprintf(line, sizeof line, "%-40.40s %-12.12s %-22.22s %3zu %11s %11s %11s %9s %7s\n", m.group_label.c_str(),
-                  m.scope.c_str(), m.metric.c_str(), m.values.size(), num(m.median, "%.5g").c_str(),
-                  num(m.q1, "%.5g").c_str(), num(m.q3, "%.5g").c_str(), opt(m.reference, "%.5g").c_str(),
-                  opt(m.ratio, "%.3f").c_str());
+    if (m.group != group) s += m.group_label + "\n", group = m.group;
+    std::snprintf(line, sizeof line, "  %-14.14s %-22.22s %3zu %11s %11s %11s %9s %7s\n", m.scope.c_str(), m.metric.c_str(),
+                  m.values.size(), num(m.median, "%.5g").c_str(), num(m.q1, "%.5g").c_str(), num(m.q3, "%.5g").c_str(),
+                  opt(m.reference, "%.5g").c_str(), opt(m.ratio, "%.3f").c_str());
     s += line;
   }
   if (!r.comparisons.empty()) {
-    std::snprintf(line, sizeof line, "\n%-40s %-12s %-22s %3s %9s %13s\n", "group vs its baseline", "scope", "metric", "n", "ratio",
-                  "90% interval");
+    std::snprintf(line, sizeof line, "\nagainst baselines: ratio of medians, and paired by seed\n  %-14s %-22s %3s %9s %13s %5s %9s %13s\n",
+                  "scope", "metric", "n", "ratio", "90% interval", "pairs", "per-seed", "90% interval");
     s += line;
+    std::string pair;
     for (const auto& c : r.comparisons) {
-      std::snprintf(line, sizeof line, "%-40.40s %-12.12s %-22.22s %3zu %9s %13s\n", (c.group_label + " / " + c.baseline_label).c_str(),
-                    c.scope.c_str(), c.metric.c_str(), c.n, num(c.ratio, "%.3f").c_str(),
-                    (num(c.lo, "%.2f") + "-" + num(c.hi, "%.2f")).c_str());
+      const std::string heading = c.group_label + "\n  over " + c.baseline_label + "\n";
+      if (heading != pair) s += heading, pair = heading;
+      std::snprintf(line, sizeof line, "  %-14.14s %-22.22s %3zu %9s %13s %5zu %9s %13s\n", c.scope.c_str(), c.metric.c_str(), c.n,
+                    num(c.ratio, "%.3f").c_str(), (num(c.lo, "%.2f") + "-" + num(c.hi, "%.2f")).c_str(), c.paired_seeds.size(),
+                    num(c.paired, "%.3f").c_str(),
+                    c.paired_seeds.empty() ? "-" : (num(c.paired_lo, "%.2f") + "-" + num(c.paired_hi, "%.2f")).c_str());
       s += line;
     }
   }
@@ -513,7 +559,9 @@ void write_gather(const GatherResult& r, const std::string& out, bool force) {
                      ".\n\n" + notes_markdown(r.notes) + table_markdown(summary_header(), summary_rows(r)) +
                      (r.comparisons.empty() ? std::string()
                                             : "\n## Against baselines\n\nRatio of medians and its 90 % bootstrap interval "
-                                              "(seeds resampled); each baseline against itself shows the spread of chance.\n\n" +
+                                              "(seeds resampled); each baseline against itself shows the spread of chance. "
+                                              "Paired: the median of the ratios of the seeds both ran (each seed's value over "
+                                              "the baseline's of that seed) and its 90 % bootstrap interval (pairs resampled).\n\n" +
                                                   table_markdown(comparison_header(), comparison_rows(r))) +
                      "\n## Per seed\n\n" + table_markdown(seed_header, seed_rows);
     if (!r.comparisons.empty()) write_table_csv(d + "/baselines.csv", comparison_header(), comparison_rows(r));
@@ -537,7 +585,10 @@ void write_gather(const GatherResult& r, const std::string& out, bool force) {
     if (!r.comparisons.empty()) {
       html.add_heading("Against baselines");
       html.add_paragraph("Ratio of each group's median to its baseline's, with a 90 % bootstrap interval (the seeds of both "
-                         "groups resampled). The baseline against itself shows how far two medians of that many seeds part by chance.");
+                         "groups resampled). The baseline against itself shows how far two medians of that many seeds part by chance. "
+                         "Paired: each seed both groups ran gives one ratio (its value over the baseline's of the same seed); "
+                         "their median and its 90 % bootstrap interval (the pairs resampled). A change that acts late in a run "
+                         "shares the seed's trajectory up to it, so the pairs see it through less of the seeds' own luck.");
       html.add_table(comparison_header(), comparison_rows(r));
     }
     html.add_heading("Per seed");

@@ -58,10 +58,21 @@ struct MetricSummary {
 // 90 % bootstrap interval for it (the seeds of each group resampled with replacement, 2000
 // times, a fixed generator). The baseline against itself is listed too: its interval is what
 // the ratio of two medians of that many seeds spreads over by chance alone.
+//
+// And paired by seed: a seed both groups ran (once each) starts both runs from the same
+// initial points and networks, and a change that acts late in a run (a border relax after the
+// published stages) leaves them the same trajectory up to it. The ratio of each such seed's two
+// values then holds the change's effect without most of the seed's own luck, which the ratio of
+// medians carries twice: the median of the per-seed ratios, with a 90 % bootstrap interval (the
+// pairs resampled, 2000 times). NaN with no pair; a seed whose baseline value is 0 or not
+// finite is left out of the pairs.
 struct BaselineComparison {
   std::string group_label, baseline_label, scope, metric;
   size_t n = 0, n_baseline = 0;
   double ratio = 0, lo = 0, hi = 0;
+  std::vector<uint64_t> paired_seeds;  // in ascending order
+  std::vector<double> paired_ratios;   // value / the baseline's, per paired seed
+  double paired = 0, paired_lo = 0, paired_hi = 0;  // their median and its interval
 };
 
 struct GatherResult {
@@ -81,7 +92,8 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
 // as a ppsynth directory (new or empty, or an earlier gather's with force).
 void write_gather(const GatherResult& result, const std::string& out, bool force);
 
-// The table printed by the command: one line per group, scope and metric.
+// The table printed by the command: each group's whole label, then a line per scope and metric;
+// against baselines, each group over its baseline, then a line per scope and metric.
 std::string format_gather(const GatherResult& result);
 
 }  // namespace ppsynth

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 
 #include "core/error.hpp"
@@ -266,6 +267,35 @@ TEST_CASE("gather compares groups with a baseline: ratio of medians and a bootst
                               median_of("lines [method.quick.max_iterations=1]", "pcf_mse")));
   CHECK(other.lo <= other.hi);
   CHECK(other.baseline_label == "lines [method.quick.max_iterations=1]");
+  // Paired by seed: each seed's value over the baseline's of the same seed, and their median.
+  auto values_of = [&](const std::string& label) {
+    const auto it = std::find_if(g.summaries.begin(), g.summaries.end(), [&](const MetricSummary& s) {
+      return s.group_label == label && s.scope == "all" && s.metric == "pcf_mse";
+    });
+    REQUIRE(it != g.summaries.end());
+    std::map<uint64_t, double> v;
+    for (size_t i = 0; i < it->seeds.size(); ++i) v[it->seeds[i]] = it->values[i];
+    return v;
+  };
+  const auto base_values = values_of("lines [method.quick.max_iterations=1]");
+  const auto other_values = values_of("lines [method.quick.max_iterations=3]");
+  CHECK(other.paired_seeds == std::vector<uint64_t>{3, 5, 6});
+  std::vector<double> by_hand;
+  for (uint64_t seed : {3, 5, 6}) by_hand.push_back(other_values.at(seed) / base_values.at(seed));
+  REQUIRE(other.paired_ratios.size() == 3);
+  for (size_t i = 0; i < 3; ++i) CHECK(other.paired_ratios[i] == Approx(by_hand[i]));
+  std::sort(by_hand.begin(), by_hand.end());
+  CHECK(other.paired == Approx(by_hand[1]));
+  CHECK(other.paired_lo >= by_hand.front());
+  CHECK(other.paired_hi <= by_hand.back());
+  CHECK(other.paired_lo <= other.paired);
+  CHECK(other.paired >= other.paired_lo);
+  CHECK(self.paired == 1.0);  // every seed against itself
+  CHECK(self.paired_lo == 1.0);
+  // The printed table names each group whole (the grid's keys end its label).
+  const std::string printed = format_gather(g);
+  CHECK_THAT(printed, Catch::Contains("\nlines [method.quick.max_iterations=3]\n  over lines [method.quick.max_iterations=1]\n"));
+  CHECK_THAT(printed, Catch::Contains("\nlines [method.quick.max_iterations=1]\n  all "));
   // Written as a table of its own and a section of the Markdown.
   write_gather(g, (d / "g").string(), false);
   CHECK(fs::exists(d / "g" / "baselines.csv"));
@@ -293,6 +323,33 @@ TEST_CASE("gather compares groups with a baseline: ratio of medians and a bootst
   });
   REQUIRE(loose_other != gl.comparisons.end());
   CHECK(loose_other->ratio == Approx(other.ratio));
+  CHECK(loose_other->paired == Approx(other.paired));
+  // A seed the baseline did not run has no pair: without the baseline's seed 5 (row 1 of the
+  // first group), the pairs are seeds 3 and 6, and a seed gathered twice pairs with nothing.
+  REQUIRE(m.rows[1].seed == 5);
+  REQUIRE(m.rows[1].group_label == "lines [method.quick.max_iterations=1]");
+  REQUIRE(m.rows[4].seed == 5);
+  REQUIRE(m.rows[4].group_label == "lines [method.quick.max_iterations=3]");
+  std::vector<std::string> without_5 = loose;
+  without_5.erase(without_5.begin() + 1);
+  const GatherResult g5 = gather_runs(without_5, l);
+  const auto unpaired = std::find_if(g5.comparisons.begin(), g5.comparisons.end(), [](const BaselineComparison& c) {
+    return c.group_label == "lines (gabor) [method.quick.max_iterations=3]" && c.scope == "all" && c.metric == "pcf_mse";
+  });
+  REQUIRE(unpaired != g5.comparisons.end());
+  CHECK(unpaired->paired_seeds == std::vector<uint64_t>{3, 6});
+  CHECK(unpaired->paired == Approx((other_values.at(3) / base_values.at(3) + other_values.at(6) / base_values.at(6)) / 2));
+  const auto twice = (d / "loose" / "twice").string();
+  fs::copy(loose[4], twice, fs::copy_options::recursive);  // a second copy of the other group's seed 5
+  std::vector<std::string> with_twice = loose;
+  with_twice.push_back(twice);
+  const GatherResult gt = gather_runs(with_twice, l);
+  const auto dup = std::find_if(gt.comparisons.begin(), gt.comparisons.end(), [](const BaselineComparison& c) {
+    return c.group_label == "lines (gabor) [method.quick.max_iterations=3]" && c.scope == "all" && c.metric == "pcf_mse";
+  });
+  REQUIRE(dup != gt.comparisons.end());
+  CHECK(dup->n == 4);
+  CHECK(dup->paired_seeds == std::vector<uint64_t>{3, 6});
   // a single loose run keeps its plain label
   CHECK(gather_runs({loose[0]}, GatherOptions{}).runs.at(0).group_label == "lines (gabor)");
 }
