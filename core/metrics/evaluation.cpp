@@ -49,6 +49,10 @@ json set_summary(const PointSet& ps) {
   j["count"] = ps.size();
   j["border_fraction"] = num(border_fraction(ps));
   j["border_fraction_uniform"] = num(uniform_border_fraction(ps.domain()));
+  const BorderProfile profile = border_profile(ps);
+  json over = json::array();
+  for (double v : profile.over_uniform) over.push_back(num(v));
+  j["border_profile"] = {{"band", profile.band}, {"over_uniform", over}};
   j["class_counts"] = ps.class_counts();
   if (ps.size() >= 2) {
     // One k-NN pass on the torus gives d_min, mean_nn and the relative radius.
@@ -276,6 +280,19 @@ std::string format_evaluation(const json& r) {
     std::snprintf(line, sizeof line, "%-16s%12s %12s\n", "  if uniform", f(r["exemplar"]["border_fraction_uniform"]).c_str(),
                   f(r["output"]["border_fraction_uniform"]).c_str());
     os << line;
+  }
+  // The density near the border over uniform's, band by band (border.hpp: a pile reads > 1
+  // in the narrow bands, a thin seam < 1).
+  if (r["output"].contains("border_profile")) {
+    const json& bands = r["output"]["border_profile"]["band"];
+    for (size_t i = 0; i < bands.size(); ++i) {
+      char name[32];
+      std::snprintf(name, sizeof name, "  within %g %%", 100 * bands[i].get<double>());
+      std::snprintf(line, sizeof line, "%-16s%12s %12s  (over uniform)\n", name,
+                    f(r["exemplar"]["border_profile"]["over_uniform"][i], "%.2f").c_str(),
+                    f(r["output"]["border_profile"]["over_uniform"][i], "%.2f").c_str());
+      os << line;
+    }
   }
   os << "upscale (per axis) " << f(r["upscale"], "%.3f") << "\n\n";
   const bool crops = r.contains("protocol") && r["protocol"].value("name", std::string()) == "crops";

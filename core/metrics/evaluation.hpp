@@ -10,6 +10,10 @@
 //                           border, "border_fraction_uniform" what uniform points on that
 //                           domain put there: 3.96 % on a square, 2.49 % on a 4 x 1 strip;
 //                           parked points raise the first above the second; border.hpp)
+//                           "border_profile": { "band": [0.005, 0.01, 0.02, 0.04] (of the
+//                           shorter side), "over_uniform": [...] } the density within each
+//                           width of the border over uniform points' (1 = uniform; a pile
+//                           > 1, a thin seam < 1; border.hpp)
 //   "upscale": sqrt(output count / exemplar count) (the per-axis u of method.md; ~2)
 //   "protocol": which patches of the output were compared with the exemplar
 //              (eval_protocol.hpp): { "name": "quadrants" | "crops", "requested": "auto" |

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <random>
@@ -71,6 +72,13 @@ std::vector<std::pair<std::string, double>> metric_values(const nlohmann::json& 
   if (m.contains("output")) {
     add("all/relative_radius", m["output"].value("relative_radius", nlohmann::json()));
     add("all/border_fraction", m["output"].value("border_fraction", nlohmann::json()));
+    // The border's density over uniform's, band by band ("border_density_0.5%"; border.hpp).
+    if (const auto p = m["output"].find("border_profile"); p != m["output"].end())
+      for (size_t i = 0; i < (*p)["band"].size(); ++i) {
+        char name[48];
+        std::snprintf(name, sizeof name, "all/border_density_%g%%", 100 * (*p)["band"][i].get<double>());
+        add(name, (*p)["over_uniform"][i]);
+      }
   }
   for (const auto& c : m.value("classes", nlohmann::json::array())) patch("class " + c["class"].dump(), c);
   for (const auto& c : m.value("cross", nlohmann::json::array()))

@@ -211,3 +211,32 @@ TEST_CASE("border share on rectangles: 1 % of the shorter side, with the uniform
   CHECK(r["exemplar"]["border_fraction_uniform"].get<double>() == Approx(0.0396));
   CHECK(format_evaluation(r).find("  if uniform") != std::string::npos);
 }
+
+TEST_CASE("the border profile tells a pile on the edge from a thin seam behind it", "[metrics][protocol]") {
+  // Uniform points read 1 in every band, on a square and on a strip.
+  for (const Domain& d : {Domain{}, Domain{0, 0, 4, 1}}) {
+    const BorderProfile u = border_profile(uniform_points(200000, 5, d));
+    REQUIRE(u.band == std::vector<double>{0.005, 0.01, 0.02, 0.04});
+    for (double v : u.over_uniform) CHECK(v == Approx(1).margin(0.04));
+  }
+  // A pile within 0.3 % of the edge with nothing behind it: 100 points on a lattice of the
+  // inside (0.05 .. 0.95) and 8 on the edge. The 0.5 % band holds the pile (8 of 108, 3.7 x
+  // uniform's 1.99 % of the area); the 4 % band holds the pile and no lattice point (0.48 x).
+  PointSet ps;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) ps.add({0.05 + 0.1 * i, 0.05 + 0.1 * j});
+  for (int k = 0; k < 8; ++k) ps.add({0.06 + 0.12 * k, k % 2 ? 0.002 : 0.997});
+  const BorderProfile p = border_profile(ps);
+  const double share = 8.0 / 108;
+  CHECK(p.share[0] == Approx(share));
+  CHECK(p.over_uniform[0] == Approx(share / (1 - 0.99 * 0.99)));
+  CHECK(p.over_uniform[3] == Approx(share / (1 - 0.92 * 0.92)));
+  CHECK(p.over_uniform[0] > 1);  // the pile
+  CHECK(p.over_uniform[3] < 1);  // the seam behind it, thinner than uniform
+  CHECK(std::isnan(border_profile(PointSet{}).over_uniform[0]));
+  // In evaluate's JSON and table, and border_fraction is the profile's 1 % band.
+  const auto r = evaluate(ps, ps, no_curves());
+  CHECK(r["output"]["border_profile"]["over_uniform"][1].get<double>() ==
+        Approx(r["output"]["border_fraction"].get<double>() / r["output"]["border_fraction_uniform"].get<double>()));
+  CHECK(format_evaluation(r).find("  within 0.5 %") != std::string::npos);
+}
