@@ -31,11 +31,41 @@ double dot_offset(size_t i, size_t n, double half_width) {
   return half_width * (2.0 * static_cast<double>(i) / static_cast<double>(n - 1) - 1.0);
 }
 
+// The name under column g when the labels are keyed: A..Z, then 27, 28, ...
+std::string column_key(size_t g) { return g < 26 ? std::string(1, static_cast<char>('A' + g)) : std::to_string(g + 1); }
+
 }  // namespace
 
 void plot_strips(const std::string& path, const StripPlot& plot, int height_px) {
   const size_t n = plot.groups.size();
-  const int width = static_cast<int>(std::max(360.0, 2 * kChartPad + 70 + kColumn * static_cast<double>(std::max<size_t>(n, 1))));
+  // Columns narrow past ~135 groups so the image stays within render's side limit (a gather
+  // of many configurations draws thin columns instead of failing).
+  const double column = std::min(kColumn, (kMaxImageSide - 2 * kChartPad - 70) / static_cast<double>(std::max<size_t>(n, 1)));
+  const double columns_width = std::max(360.0, 2 * kChartPad + 70 + column * static_cast<double>(std::max<size_t>(n, 1)));
+  // Labels that do not fit under their column are lettered and listed whole in the legend: a
+  // sweep's labels differ at their end ("... [separation=0]", "... [separation=1]"), which an
+  // ellipsis would cut off. The image widens to the title and the longest entry (up to
+  // kMaxWidth); past kMaxKeyed entries the legend says how many it leaves to the tables.
+  constexpr double kMaxWidth = 1400;
+  constexpr size_t kMaxKeyed = 40;
+  const bool keyed = std::any_of(plot.groups.begin(), plot.groups.end(), [&](const StripGroup& g) {
+    return measure_text(g.label, kChartTickFont) > column - 6;
+  });
+  std::vector<LegendItem> legend;
+  if (keyed) {
+    for (size_t g = 0; g < std::min(n, kMaxKeyed); ++g)
+      legend.push_back({column_key(g) + ": " + plot.groups[g].label, class_color(static_cast<int>(g)), Marker::Dot});
+    if (n > kMaxKeyed) legend.push_back({"and " + std::to_string(n - kMaxKeyed) + " more groups", kText, Marker::Dot});
+  }
+  if (plot.reference) legend.push_back({plot.reference_label.empty() ? "reference" : plot.reference_label, kText, Marker::Line});
+  if (plot.bound) legend.push_back({plot.bound_label.empty() ? "bound" : plot.bound_label, kText, Marker::DashedLine});
+  double wanted = measure_text(plot.title, kChartTitleFont, true) + 2 * kChartPad + 80;
+  for (const auto& item : legend) wanted = std::max(wanted, measure_text(item.label, kChartLegendFont) + 2 * kChartPad + 120);
+  const double width = std::max(columns_width, std::min(kMaxWidth, wanted));
+  for (auto& item : legend) item.label = fitted(item.label, width - 2 * kChartPad - 110, kChartLegendFont);
+  // The legend's rows add to the height, so the plot keeps its own.
+  const double legend_rows = legend.empty() ? 0 : legend_height(legend, width - 2 * kChartPad - 80, kChartLegendFont);
+  height_px += static_cast<int>(std::max(0.0, legend_rows - kChartLegendFont * 2));
 
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   auto include = [&](double v) {
@@ -58,12 +88,9 @@ void plot_strips(const std::string& path, const StripPlot& plot, int height_px) 
   if (hi <= lo) hi = lo + step;
   yt = nice_ticks(lo, hi, 5);
 
-  render_to_file(path, width, height_px, [&](cairo_t* cr) {
+  render_to_file(path, static_cast<int>(std::ceil(width)), height_px, [&](cairo_t* cr) {
     double ytw = 0;
     for (double t : yt) ytw = std::max(ytw, measure_text(tick_label(t), kChartTickFont));
-    std::vector<LegendItem> legend;
-    if (plot.reference) legend.push_back({plot.reference_label.empty() ? "reference" : plot.reference_label, kText, Marker::Line});
-    if (plot.bound) legend.push_back({plot.bound_label.empty() ? "bound" : plot.bound_label, kText, Marker::DashedLine});
     const double left = kChartPad + (plot.ylabel.empty() ? 0 : kChartLabelFont * 1.5) + ytw + 8;
     const double right = width - kChartPad;
     const double top = plot.title.empty() ? kChartPad : kChartTitleFont * 2.2;
@@ -72,7 +99,7 @@ void plot_strips(const std::string& path, const StripPlot& plot, int height_px) 
     const double pw = right - left, ph = bottom - top;
     if (pw < 10 || ph < 10) return;
     auto Y = [&](double v) { return bottom - (std::clamp(v, lo, hi) - lo) / (hi - lo) * ph; };
-    const double col = pw / static_cast<double>(std::max<size_t>(n, 1));
+    const double col = pw / static_cast<double>(std::max<size_t>(n, 1));  // the column as drawn
 
     set_color(cr, kText);
     if (!plot.title.empty()) draw_text(cr, plot.title, left, kChartTitleFont * 1.5, kChartTitleFont, HAlign::Left, VAlign::Baseline, true);
@@ -116,7 +143,7 @@ void plot_strips(const std::string& path, const StripPlot& plot, int height_px) 
         cairo_stroke(cr);
       }
       set_color(cr, kText);
-      const std::string label = fitted(group.label, col - 6, kChartTickFont);
+      const std::string label = keyed ? column_key(g) : group.label;
       draw_text(cr, label, cx, bottom + 5, kChartTickFont, HAlign::Center, VAlign::Top);
       std::string count = "n = " + std::to_string(s.count);
       if (group.values.size() > s.count) count += " (" + std::to_string(group.values.size() - s.count) + " not finite)";

@@ -4,7 +4,10 @@
 // Made for statistics over seeds (optim/sweep/gather.hpp), where five dots say more than a
 // mean: the reader sees the spread and every outlier. An optional reference value (a published
 // output's) and a bound (e.g. 1.25 x the reference) are drawn as horizontal lines across all
-// groups. Non-finite values are left out of the column (and counted in its label).
+// groups. Non-finite values are left out of the column (and counted in its label). Labels too
+// long for their column are lettered (A, B, ...) and written whole in the legend below, the
+// image widened to them (labels of one sweep differ at their end, where an ellipsis would cut);
+// any number of groups fits within render's image limits (thinner columns past ~135).
 // Output format by extension: .png, .svg, .pdf; atomic writes (render/canvas.hpp).
 #include <optional>
 #include <string>

@@ -477,6 +477,13 @@ std::string notes_markdown(const std::vector<std::string>& notes) {
   return md;
 }
 
+// A plot's file name: letters, digits, '_' and '-' kept, the rest '_'.
+std::string file_stem(std::string name) {
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') c = '_';
+  return name;
+}
+
 // One strip plot per scope and metric, a column per group.
 std::vector<std::pair<std::string, std::string>> write_plots(const GatherResult& r, const std::string& dir) {
   std::vector<std::pair<std::string, std::string>> keys;  // scope, metric in first-seen order
@@ -502,13 +509,42 @@ std::vector<std::pair<std::string, std::string>> write_plots(const GatherResult&
       plot.reference_label = "reference";
       plot.bound = r.options.bound * *refs.begin();
       plot.bound_label = num(r.options.bound, "%g") + " x reference";
+    } else if (metric.rfind("border_density_", 0) == 0) {  // over uniform's by definition
+      plot.reference = 1.0;
+      plot.reference_label = "uniform points";
     }
-    std::string file = scope + "_" + metric;
-    for (char& c : file)
-      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') c = '_';
-    const std::string png = dir + "/plots/" + file + ".png";
+    const std::string png = dir + "/plots/" + file_stem(scope + "_" + metric) + ".png";
     plot_strips(png, plot);
     images.push_back({png, plot.title});
+  }
+  return images;
+}
+
+// Per baseline, one strip plot per metric of all classes: each other group's per-seed ratios
+// over the baseline (a dot per seed both ran), a line at 1.
+std::vector<std::pair<std::string, std::string>> write_paired_plots(const GatherResult& r, const std::string& dir) {
+  std::vector<std::pair<std::string, std::string>> images;
+  for (size_t b = 0; b < r.options.baselines.size(); ++b) {
+    const std::string& baseline = r.options.baselines[b];
+    std::vector<std::string> metrics;  // first-seen order
+    for (const auto& c : r.comparisons)
+      if (c.baseline_label == baseline && c.scope == "all" && std::find(metrics.begin(), metrics.end(), c.metric) == metrics.end())
+        metrics.push_back(c.metric);
+    for (const auto& metric : metrics) {
+      StripPlot plot;
+      plot.title = "all: " + metric + ", per seed over " + baseline;
+      plot.ylabel = metric + " / the baseline's (same seed)";
+      for (const auto& c : r.comparisons)
+        if (c.baseline_label == baseline && c.scope == "all" && c.metric == metric && c.group_label != baseline &&
+            !c.paired_ratios.empty())
+          plot.groups.push_back(StripGroup{c.group_label, c.paired_ratios});
+      if (plot.groups.empty()) continue;
+      plot.reference = 1.0;
+      plot.reference_label = "the baseline";
+      const std::string png = dir + "/plots/paired_" + std::to_string(b + 1) + "_" + file_stem(metric) + ".png";
+      plot_strips(png, plot);
+      images.push_back({png, plot.title});
+    }
   }
   return images;
 }
@@ -598,6 +634,10 @@ void write_gather(const GatherResult& r, const std::string& out, bool force) {
                          "their median and its 90 % bootstrap interval (the pairs resampled). A change that acts late in a run "
                          "shares the seed's trajectory up to it, so the pairs see it through less of the seeds' own luck.");
       html.add_table(comparison_header(), comparison_rows(r));
+      if (const auto paired = write_paired_plots(r, d); !paired.empty()) {
+        html.add_paragraph("Per seed: each dot is one seed's value over the baseline's value of the same seed.");
+        html.add_image_row(paired);
+      }
     }
     html.add_heading("Per seed");
     html.add_table(seed_header, seed_rows);

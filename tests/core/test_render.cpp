@@ -18,6 +18,7 @@
 #include "core/render/plot_curves.hpp"
 #include "core/render/plot_frame.hpp"
 #include "core/render/plot_points.hpp"
+#include "core/render/plot_strips.hpp"
 #include "tests/support/scratch_dir.hpp"
 
 using namespace ppsynth;
@@ -392,5 +393,38 @@ TEST_CASE("rectangular domains: frames keep their aspect, rows shrink to them; m
   const int big = readable_plot_px({&many}, 600);
   CHECK(big > 1200);
   CHECK(big <= 2400);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("strip plots letter long labels and list them whole; any group count fits", "[render][limits]") {
+  const auto dir = ppsynth::test::scratch_dir("render_strips");
+  auto size_of = [](const fs::path& png) {
+    cairo_surface_t* s = cairo_image_surface_create_from_png(png.string().c_str());
+    REQUIRE(cairo_surface_status(s) == CAIRO_STATUS_SUCCESS);
+    const std::pair<int, int> wh{cairo_image_surface_get_width(s), cairo_image_surface_get_height(s)};
+    cairo_surface_destroy(s);
+    return wh;
+  };
+  StripPlot plain{"all: pcf_mse", "pcf_mse", {{"a", {1, 2, 3}}, {"b", {2, 3}}}, 1.0, "reference", {}, ""};
+  plot_strips((dir / "plain.png").string(), plain);
+  CHECK(size_of(dir / "plain.png") == std::pair<int, int>{360, 380});
+  // Two labels that differ only at their end: the legend holds both whole, so the image is
+  // wider than the columns need and taller by the legend's extra row.
+  StripPlot sweep = plain;
+  sweep.groups = {{"lemon_4c_v2 (preset fast) [method.border_relax.separation=0]", {1, 2}},
+                  {"lemon_4c_v2 (preset fast) [method.border_relax.separation=1]", {2, 3}}};
+  plot_strips((dir / "keyed.png").string(), sweep);
+  const auto keyed = size_of(dir / "keyed.png");
+  CHECK(keyed.first > 360);
+  CHECK(keyed.first >= render::measure_text(sweep.groups[0].label, render::kChartLegendFont) + 2 * render::kChartPad);
+  CHECK(keyed.second > 380);
+  // 2,000 groups of long labels: within the side limit, no throw.
+  StripPlot many = plain;
+  many.groups.clear();
+  for (int g = 0; g < 2000; ++g) many.groups.push_back({"a configuration with a long label, number " + std::to_string(g), {1.0 * g}});
+  CHECK_NOTHROW(plot_strips((dir / "many.png").string(), many));
+  const auto big = size_of(dir / "many.png");
+  CHECK(big.first <= render::kMaxImageSide);
+  CHECK(big.second <= render::kMaxImageSide);
   fs::remove_all(dir);
 }

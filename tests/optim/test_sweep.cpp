@@ -299,6 +299,10 @@ TEST_CASE("gather compares groups with a baseline: ratio of medians and a bootst
   // Written as a table of its own and a section of the Markdown.
   write_gather(g, (d / "g").string(), false);
   CHECK(fs::exists(d / "g" / "baselines.csv"));
+  CHECK(fs::exists(d / "g" / "plots" / "paired_1_pcf_mse.png"));  // per-seed ratios, one plot per metric
+  std::ifstream html(d / "g" / "index.html");
+  CHECK(std::string(std::istreambuf_iterator<char>(html), {}).find("pcf_mse, per seed over lines [method.quick.max_iterations=1]") !=
+        std::string::npos);
   std::ifstream md(d / "g" / "gather.md");
   CHECK(std::string(std::istreambuf_iterator<char>(md), {}).find("## Against baselines") != std::string::npos);
   o.baselines = {"lines"};
