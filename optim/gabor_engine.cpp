@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/memory_budget.hpp"
+#include "core/metrics/border.hpp"
 #include "models/point_tensor.hpp"
 #include "optim/initializer.hpp"
 #include "optim/random_tiles.hpp"
@@ -384,6 +385,11 @@ torch::Tensor GaborEngine::border_band() const {
   // checkpoint holds it), so a run resumed inside the stage moves the same points.
   const double b = s_.relax_band;
   auto mask = torch::zeros({static_cast<int64_t>(moving_idx_.size()), 1}, torch::kBool);
+  // A class that does not park (method.border_relax.parked) keeps every point where it is.
+  PointSet own;
+  for (size_t i : moving_idx_) own.add(out_[i]);
+  if (s_.relax_parked > 0 && !moving_idx_.empty() && border_fraction(own) <= s_.relax_parked * uniform_border_fraction(own.domain()))
+    return mask;
   auto m = mask.accessor<bool, 2>();
   for (size_t i = 0; i < moving_idx_.size(); ++i) {
     const Vec2 p = out_[moving_idx_[i]];
@@ -471,6 +477,9 @@ void GaborEngine::run_stage(const Stage& stage) {
   };
   // A border relax runs its fixed count: its pattern is the finished stage's, judged already.
   const bool judged = !stage.border_relax;
+  // A relax with no point to move (its class does not park, or none is near the edge) ends at
+  // once: its iterations would leave every point where it is.
+  if (stage.border_relax && !relax_mask_.any().item<bool>()) return;
   if (judged && state_.iteration == 0) judge(-1);  // the stage's start, a candidate to end on (a stop there is ignored)
   while (state_.iteration < iteration_cap(stage)) {
     const int it = state_.iteration;

@@ -60,7 +60,13 @@ json gabor_defaults() {
       // only, beside any method.terms: across the rolled seam the Gabor losses pull a class's
       // close pairs into one point (lemon_4c_v2's class 0: docs/large_outputs.md), and the
       // term keeps the exemplar's spacing while the sigma stages stay the paper's. 0: off.
-      {"border_relax", {{"iterations", 0}, {"band", 1.0}, {"lr", nullptr}, {"separation", 1.0}}},
+      // `parked`: a class is relaxed only when more of its points lie within 1 % of the
+      // grid's edge (the border band) than `parked` x what uniform points put there
+      // (1.5: the bound; 0: every class). A class that does not park has no pile to
+      // take apart, and a relax would only spread its band (the relax keeps the band's count):
+      // poisson_n64c2_point at the full settings parks nowhere and came out thinner at the
+      // seam (docs/large_outputs.md).
+      {"border_relax", {{"iterations", 0}, {"band", 1.0}, {"lr", nullptr}, {"separation", 1.0}, {"parked", 1.5}}},
       // Rectangle outputs ("output": {"size"} or {"points"}) run window by window
       // (optim/window_plan.hpp): windows of at most `pixels` grid positions across; a margin
       // of 3 sigma_max + `receptive_field` positions (the network's half-width) on each side
@@ -85,7 +91,7 @@ json gabor_bounds() {
       {"max_iterations", "int [1, 1000000000]"},
       {"class_order", "int [0, 1000000]"},
       {"window", {{"pixels", "int [16, 8192]"}, {"receptive_field", "int [0, 1000]"}}},
-      {"border_relax", {{"iterations", "int [0, 1000000000]"}, {"band", "(0, inf)"}, {"separation", "[0, inf)"}}},
+      {"border_relax", {{"iterations", "int [0, 1000000000]"}, {"band", "(0, inf)"}, {"separation", "[0, inf)"}, {"parked", "[0, 1000]"}}},
       {"quick", {{"res", "int [8, 8192]"}, {"channels", "int [1, 4096]"}, {"max_iterations", "int [1, 1000000000]"},
                  {"num_sigmas", "int [1, 64]"}}},
   };
@@ -163,6 +169,7 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
     s.relax_iterations = get_int(r, "iterations", "method.border_relax");
     if (quick) s.relax_iterations = std::min(s.relax_iterations, s.max_iterations);
     s.relax_band = get_number(r, "band", "method.border_relax") * s.mean_nn_distance / s.upscale;
+    s.relax_parked = get_number(r, "parked", "method.border_relax");
     const json& lr = r["lr"];
     if (!lr.is_null() && !(lr.is_number() && lr.get<double>() > 0))
       throw config_error("method.border_relax.lr", "expected null (the finest sigma's rate) or a number > 0");

@@ -45,10 +45,13 @@ struct GaborSettings {
   Measure measure = Measure::grid;
   bool measure_tiles() const { return measure == Measure::tiles; }
   // method.border_relax: the relax stage after each class's sigmas (0: none, the paper's);
-  // its band in output units (the unit square) and Adam's rate (0: the finest sigma's).
+  // its band in output units (the unit square) and Adam's rate (0: the finest sigma's); a
+  // class is relaxed only when its share within 1 % of the edge exceeds relax_parked x
+  // uniform's (0: always).
   int relax_iterations = 0;
   double relax_band = 0;
   double relax_lr = 0;
+  double relax_parked = 0;
   // The grid of each sigma stage (coarse -> fine): `res` and `out_res` at every stage, or with
   // method.grid.per_sigma coarser grids at the coarser sigmas, keeping the finest stage's
   // grid positions per sigma (the Gabor frequencies scale with 1/sigma, so each stage's
