@@ -6,6 +6,8 @@
 #include <numeric>
 #include <sstream>
 
+#include <spdlog/spdlog.h>
+
 #include "core/memory_budget.hpp"
 #include "core/metrics/border.hpp"
 #include "models/point_tensor.hpp"
@@ -364,7 +366,14 @@ void GaborEngine::enter_stage(const Stage& stage) {
   rule_->begin_stage(ex_active);
   for (auto& t : map_terms_) t.term->begin_stage(stage);
   phases_.targets += since(t0);
-  relax_mask_ = stage.border_relax ? border_band() : torch::Tensor();
+  relax_mask_ = torch::Tensor();
+  if (stage.border_relax) {
+    relax_parked_ = parked_over_uniform();
+    relax_mask_ = border_band();
+    if (state_.iteration == 0)  // why a relax moves nothing, where the user watches
+      spdlog::info("{}: {:.2f} x uniform points' share within 1 % of the edge (method.border_relax.parked {:g}): {}", stage.label,
+                   relax_parked_, s_.relax_parked, relax_mask_.any().item<bool>() ? "relaxing its band" : "nothing to move");
+  }
   json optimizer = p_["optimizer"];
   if (stage.border_relax && s_.relax_lr > 0) optimizer["lr"] = json::array({s_.relax_lr});
   optimizer_ = OptimizerRegistry::instance().create(optimizer, "method.optimizer", state_.moving, stage.sigma_index);
@@ -380,16 +389,19 @@ int GaborEngine::iteration_cap(const Stage& stage) const {
   return stage.border_relax ? s_.relax_iterations : s_.max_iterations;
 }
 
+double GaborEngine::parked_over_uniform() const {
+  PointSet own;  // the u x u torus's unit square
+  for (size_t i : moving_idx_) own.add(out_[i]);
+  return moving_idx_.empty() ? 0.0 : border_fraction(own) / uniform_border_fraction(own.domain());
+}
+
 torch::Tensor GaborEngine::border_band() const {
   // From the positions the stage starts from (out_ changes only at stage ends, and a
   // checkpoint holds it), so a run resumed inside the stage moves the same points.
   const double b = s_.relax_band;
   auto mask = torch::zeros({static_cast<int64_t>(moving_idx_.size()), 1}, torch::kBool);
   // A class that does not park (method.border_relax.parked) keeps every point where it is.
-  PointSet own;
-  for (size_t i : moving_idx_) own.add(out_[i]);
-  if (s_.relax_parked > 0 && !moving_idx_.empty() && border_fraction(own) <= s_.relax_parked * uniform_border_fraction(own.domain()))
-    return mask;
+  if (s_.relax_parked > 0 && relax_parked_ <= s_.relax_parked) return mask;
   auto m = mask.accessor<bool, 2>();
   for (size_t i = 0; i < moving_idx_.size(); ++i) {
     const Vec2 p = out_[moving_idx_[i]];
@@ -520,6 +532,7 @@ void GaborEngine::finish_stage(const Stage& stage) {
                            {"iterations", state_.iteration},
                            {"final_loss", state_.stage_losses.empty() ? 0.0 : state_.stage_losses.back()},
                            {"seconds", ev.seconds}});
+  if (stage.border_relax) state_.stages.back()["parked_over_uniform"] = relax_parked_;  // what decided it
   ctx_.stage_end(ev, out_);
   // The next stage starts: a fresh optimiser and convergence window; a new group also
   // starts from the wrapped output positions.

@@ -69,7 +69,11 @@ class GaborEngine {
   PointSet synthesised() const;     // out_ without a frozen exemplar pad, on the area where points move
   ProgressEvent event(const Stage& stage) const;
   int iteration_cap(const Stage& stage) const;  // the border relax's count, else method.max_iterations
-  torch::Tensor border_band() const;            // relax_mask_ of a border relax stage
+  // A border relax stage's relax_mask_: its class's points near the edge, or none when the
+  // class does not park (method.border_relax.parked); parked_over_uniform() is the share
+  // that decides (within 1 % of the edge, over uniform points'), on the stage's start.
+  torch::Tensor border_band() const;
+  double parked_over_uniform() const;
 
   json p_;
   const PointSet& exemplar_;
@@ -102,6 +106,7 @@ class GaborEngine {
   // A border relax stage: [moving x 1], true for the points in the band (the others get no
   // gradient, so a fresh Adam leaves them where they are); undefined in every other stage.
   torch::Tensor relax_mask_;
+  double relax_parked_ = 0;  // parked_over_uniform() where the relax stage started
   std::unique_ptr<PositionOptimizer> optimizer_;
   Clock::time_point stage_start_, last_checkpoint_, run_start_;
   double seconds_before_ = 0;  // wall time of the processes before a resume (from the checkpoint)

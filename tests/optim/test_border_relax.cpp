@@ -127,11 +127,12 @@ TEST_CASE("the border relax's separation acts in the relax stages only, and keep
 TEST_CASE("a class that does not park is not relaxed, and a run of such classes is the paper's bit for bit", "[optim][border_relax]") {
   const PointSet ex = test::small_exemplar(2, false);
   uint64_t seed = 0;
-  auto run = [&](const json& method_json, StageEnds* ends) {
+  auto run = [&](const json& method_json, StageEnds* ends, json* stats = nullptr) {
     auto method = MethodRegistry::instance().create(method_json, "method");
     SynthesisContext ctx;
     ctx.quick = true;
     ctx.seed = seed;
+    ctx.stats = stats;
     if (ends) ctx.observers.push_back(ends);
     return method->synthesize(ex, ctx);
   };
@@ -155,10 +156,16 @@ TEST_CASE("a class that does not park is not relaxed, and a run of such classes 
   CHECK(class0_moved(always));
   // A bound just under its share relaxes it; at its share (not above it) the class stays put.
   StageEnds under, at;
+  json at_stats;
   run(relaxed_method(4, 1.0, parked * 0.99), &under);
-  run(relaxed_method(4, 1.0, parked), &at);
+  run(relaxed_method(4, 1.0, parked), &at, &at_stats);
   CHECK(class0_moved(under));
   CHECK_FALSE(class0_moved(at));
+  // The run's stages say what decided it, and that the relax ran no iteration.
+  REQUIRE(at_stats["stages"].size() == 6);
+  CHECK(at_stats["stages"][2]["parked_over_uniform"].get<double>() == Approx(parked));
+  CHECK(at_stats["stages"][2]["iterations"] == 0);
+  CHECK_FALSE(at_stats["stages"][1].contains("parked_over_uniform"));
   // No class parks above a bound of 1000: the relax moves nothing and the output is the
   // published plan's (no relax stages) bit for bit.
   CHECK(same_bits(run(relaxed_method(4, 1.0, 1000), nullptr), run(relaxed_method(0), nullptr)));
