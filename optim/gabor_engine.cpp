@@ -389,6 +389,15 @@ int GaborEngine::iteration_cap(const Stage& stage) const {
   return stage.border_relax ? s_.relax_iterations : s_.max_iterations;
 }
 
+bool GaborEngine::relax_this_class() const {
+  if (s_.relax_parked <= 0 || relax_parked_ > s_.relax_parked) return true;
+  // An earlier class parked and was relaxed: this one is relaxed too, parked or not. Its
+  // sigma stages measured the unrolled grid, where its pairs with the relaxed classes
+  // across the seam were never seen (lemon_4c_v2's later classes: docs/large_outputs.md).
+  // state_.stages is the checkpoint's, so a resumed run decides as the uninterrupted one.
+  return std::any_of(state_.stages.begin(), state_.stages.end(), [](const json& s) { return s.value("relaxed", false); });
+}
+
 double GaborEngine::parked_over_uniform() const {
   PointSet own;  // the u x u torus's unit square
   for (size_t i : moving_idx_) own.add(out_[i]);
@@ -401,7 +410,7 @@ torch::Tensor GaborEngine::border_band() const {
   const double b = s_.relax_band;
   auto mask = torch::zeros({static_cast<int64_t>(moving_idx_.size()), 1}, torch::kBool);
   // A class that does not park (method.border_relax.parked) keeps every point where it is.
-  if (s_.relax_parked > 0 && relax_parked_ <= s_.relax_parked) return mask;
+  if (!relax_this_class()) return mask;
   auto m = mask.accessor<bool, 2>();
   for (size_t i = 0; i < moving_idx_.size(); ++i) {
     const Vec2 p = out_[moving_idx_[i]];
@@ -532,7 +541,10 @@ void GaborEngine::finish_stage(const Stage& stage) {
                            {"iterations", state_.iteration},
                            {"final_loss", state_.stage_losses.empty() ? 0.0 : state_.stage_losses.back()},
                            {"seconds", ev.seconds}});
-  if (stage.border_relax) state_.stages.back()["parked_over_uniform"] = relax_parked_;  // what decided it
+  if (stage.border_relax) {  // what decided it
+    state_.stages.back()["parked_over_uniform"] = relax_parked_;
+    state_.stages.back()["relaxed"] = state_.iteration > 0;
+  }
   ctx_.stage_end(ev, out_);
   // The next stage starts: a fresh optimiser and convergence window; a new group also
   // starts from the wrapped output positions.

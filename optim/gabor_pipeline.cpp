@@ -62,10 +62,11 @@ json gabor_defaults() {
       // term keeps the exemplar's spacing while the sigma stages stay the paper's. 0: off.
       // `parked`: a class is relaxed only when more of its points lie within 1 % of the
       // grid's edge (the border band) than `parked` x what uniform points put there
-      // (1.5: the bound; 0: every class). A class that does not park has no pile to
-      // take apart, and a relax would only spread its band (the relax keeps the band's count):
-      // poisson_n64c2_point at the full settings parks nowhere and came out thinner at the
-      // seam (docs/large_outputs.md).
+      // (1.5: the bound; 0: every class), or when an earlier class was relaxed (its
+      // pairs with that class across the seam were never measured). Where no class parks
+      // there is no pile to take apart, and a relax would only spread the band (it keeps the
+      // band's count): poisson_n64c2_point at the full settings parks nowhere and came out
+      // thinner at the seam (docs/large_outputs.md).
       {"border_relax", {{"iterations", 0}, {"band", 1.0}, {"lr", nullptr}, {"separation", 1.0}, {"parked", 1.5}}},
       // Rectangle outputs ("output": {"size"} or {"points"}) run window by window
       // (optim/window_plan.hpp): windows of at most `pixels` grid positions across; a margin
