@@ -409,7 +409,7 @@ torch::Tensor GaborEngine::border_band() const {
   // checkpoint holds it), so a run resumed inside the stage moves the same points.
   const double b = s_.relax_band;
   auto mask = torch::zeros({static_cast<int64_t>(moving_idx_.size()), 1}, torch::kBool);
-  // A class that does not park (method.border_relax.parked) keeps every point where it is.
+  // A class the relax leaves alone (relax_this_class: method.border_relax.parked) keeps every point where it is.
   if (!relax_this_class()) return mask;
   auto m = mask.accessor<bool, 2>();
   for (size_t i = 0; i < moving_idx_.size(); ++i) {

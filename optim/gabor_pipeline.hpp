@@ -46,8 +46,8 @@ struct GaborSettings {
   bool measure_tiles() const { return measure == Measure::tiles; }
   // method.border_relax: the relax stage after each class's sigmas (0: none, the paper's);
   // its band in output units (the unit square) and Adam's rate (0: the finest sigma's); a
-  // class is relaxed only when its share within 1 % of the edge exceeds relax_parked x
-  // uniform's (0: always).
+  // class is relaxed when its share within 1 % of the edge exceeds relax_parked x uniform's
+  // or an earlier class was relaxed (0: always).
   int relax_iterations = 0;
   double relax_band = 0;
   double relax_lr = 0;
