@@ -169,7 +169,13 @@ RunDirectory RunDirectory::open(const std::string& path_in, const RunDirOptions&
 void RunDirectory::write_marker(const std::string& state, const nlohmann::json& info) {
   nlohmann::json m = run_dir_marker(path_);
   if (!m.is_object()) m = nlohmann::json::object();
-  m.update(info);
+  for (const auto& [key, value] : info.items()) {
+    if (key == "progress" && value.is_object() && m[key].is_object())
+      m[key].update(value);
+    else
+      m[key] = value;
+  }
+  if (state == "complete") m.erase("progress");  // a finished run is not on its way anywhere
   m["kind"] = kind_;
   m["state"] = state;
   m["pid"] = static_cast<long>(::getpid());

@@ -67,6 +67,9 @@ class RunDirectory {
   const std::string& path() const { return path_; }
   // Merges `info` into the marker (state still "running"): what a resume needs to know.
   void mark_running(const nlohmann::json& info) { write_marker("running", info); }
+  // Merges `progress` into the marker's "progress" object: how far an unfinished run is
+  // (which stage, when it last saved a checkpoint), for whoever watches it. Dropped once complete.
+  void mark_progress(const nlohmann::json& progress) { write_marker("running", {{"progress", progress}}); }
   // Marks the directory complete (atomically), with `info` merged into the marker.
   void mark_complete(const nlohmann::json& info = nlohmann::json::object());
   // After a failure: removes what this process wrote (the directory itself when it created

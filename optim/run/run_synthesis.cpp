@@ -2,7 +2,9 @@
 
 #include <ATen/Parallel.h>
 
+#include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <filesystem>
 
 #include "core/atomic_file.hpp"
@@ -24,6 +26,23 @@ namespace {
 
 const char* kCheckpoint = "checkpoint.bin";
 
+long long unix_now() { return static_cast<long long>(std::time(nullptr)); }
+
+// Keeps the marker of the run directory telling which stage the run began last, so that
+// `ppsynth sweep status` can say how far a running or interrupted run is (run_progress_text).
+class MarkerProgress : public SynthesisObserver {
+ public:
+  explicit MarkerProgress(RunDirectory& dir) : dir_(dir) {}
+  void on_stage_begin(const ProgressEvent& e) override {
+    nlohmann::json p = {{"stage", e.stage}, {"index", e.stage_index + 1}, {"count", e.stage_count}};
+    if (e.windows > 1) p.update({{"window", e.window + 1}, {"windows", e.windows}});
+    dir_.mark_progress(p);
+  }
+
+ private:
+  RunDirectory& dir_;
+};
+
 // Runs (or continues, with `resume_state`) the synthesis into the open directory `dir`.
 RunOutcome execute(RunOutcome o, RunDirectory& dir, const std::string& name, const RunRequest& req,
                    const std::string* resume_state) {
@@ -34,9 +53,10 @@ RunOutcome execute(RunOutcome o, RunDirectory& dir, const std::string& name, con
   LossRecorder losses;
   SnapshotWriter snaps(o.dir + "/snapshots");
   snaps.set_enabled(r["snapshots"].get<bool>());
+  MarkerProgress marker_progress(dir);
   SynthesisOptions options;
   options.quick = req.quick;
-  options.observers = {&progress, &losses, &snaps};
+  options.observers = {&progress, &losses, &snaps, &marker_progress};
   options.observers.insert(options.observers.end(), req.observers.begin(), req.observers.end());
   bool checkpointed = resume_state != nullptr;
   options.save_checkpoint = [&](const std::string& bytes) {
@@ -44,6 +64,7 @@ RunOutcome execute(RunOutcome o, RunDirectory& dir, const std::string& name, con
     f.stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     f.commit();
     checkpointed = true;
+    dir.mark_progress({{"checkpointed", unix_now()}});
   };
   options.resume_state = resume_state;
   options.stop = req.stop;
@@ -93,6 +114,26 @@ RunOutcome run_synthesis(const nlohmann::json& r, const RunRequest& req) {
     throw;
   }
   return execute(std::move(o), dir, name, req, nullptr);
+}
+
+std::string run_progress_text(const nlohmann::json& marker, long long now) {
+  if (!marker.is_object() || !marker.contains("progress") || !marker["progress"].is_object()) return "";
+  const nlohmann::json& p = marker["progress"];
+  std::string text;
+  if (p.contains("index")) {
+    text = "stage " + std::to_string(p.value("index", 0)) + "/" + std::to_string(p.value("count", 0));
+    if (p.contains("window"))
+      text += ", window " + std::to_string(p.value("window", 0)) + "/" + std::to_string(p.value("windows", 0));
+    if (const std::string label = p.value("stage", ""); !label.empty()) text += " (" + label + ")";
+  }
+  if (const auto c = p.find("checkpointed"); c != p.end() && c->is_number_integer()) {
+    const long long ago = std::max(0LL, now - c->get<long long>());
+    const std::string when = ago < 120 ? std::to_string(ago) + " s ago"
+                             : ago < 7200 ? std::to_string(ago / 60) + " min ago"
+                                          : std::to_string(ago / 3600) + " h ago";
+    text += (text.empty() ? "" : ", ") + std::string("checkpoint ") + when;
+  }
+  return text;
 }
 
 RunOutcome resume_synthesis(const std::string& path, const RunRequest& req) {

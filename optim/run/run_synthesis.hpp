@@ -44,6 +44,12 @@ class RunInterrupted : public std::runtime_error {
 // `checkpoint_seconds`; it is removed when the run completes.
 RunOutcome run_synthesis(const nlohmann::json& resolved, const RunRequest& request);
 
+// How far an unfinished run got, from its directory's marker (run_dir_marker), which a run
+// keeps current: the stage it began last and when it last saved a checkpoint, e.g.
+// "stage 9/20 (class 3/4 (id 2), sigma 1/4), checkpoint 4 min ago". "" when the marker holds
+// neither (a run that has not begun its first stage). `now`: seconds since the epoch.
+std::string run_progress_text(const nlohmann::json& marker, long long now);
+
 // Continues the unfinished run in `dir` from its checkpoint (request.dir and quick are taken
 // from the directory). The outputs equal those of the run never interrupted (same thread
 // count; wall times aside).

@@ -1,5 +1,6 @@
 #include "optim/sweep/sweep_runs.hpp"
 
+#include <ctime>
 #include <filesystem>
 
 #include "core/atomic_file.hpp"
@@ -52,6 +53,7 @@ std::vector<RowStatus> sweep_status(const std::string& sweep_dir, const SweepMan
       }
       case RunDirState::Unfinished:
         s.state = run_dir_locked(dir) ? RowState::Running : RowState::Interrupted;
+        s.detail = run_progress_text(run_dir_marker(dir), static_cast<long long>(std::time(nullptr)));
         break;
       case RunDirState::Foreign:
         s.state = RowState::Failed;
@@ -61,7 +63,8 @@ std::vector<RowStatus> sweep_status(const std::string& sweep_dir, const SweepMan
         s.state = fs::exists(failed) ? RowState::Failed : RowState::Pending;
         if (s.state == RowState::Failed) s.detail = read_file_text(failed);
     }
-    if (s.state == RowState::Interrupted && fs::exists(failed)) s.detail = read_file_text(failed);
+    if (s.state == RowState::Interrupted && fs::exists(failed))
+      s.detail += (s.detail.empty() ? "" : "; ") + read_file_text(failed);
     while (!s.detail.empty() && s.detail.back() == '\n') s.detail.pop_back();
     out.push_back(s);
   }

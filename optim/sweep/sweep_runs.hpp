@@ -4,6 +4,7 @@
 //   done         the run directory is marked complete
 //   running      unfinished, and a process holds its lock
 //   interrupted  unfinished, nobody holds it: the next task resumes its checkpoint
+// (for both, how far: the stage begun last and the last checkpoint, run_progress_text)
 //   failed       the last task failed (DIR/logs/<id>.failed holds the error); the next retries
 //   pending      not started
 // run_sweep_task runs one row: skips a finished run, resumes an interrupted one, starts the
@@ -23,7 +24,8 @@ const char* row_state_name(RowState s);
 struct RowStatus {
   const SweepRow* row = nullptr;
   RowState state = RowState::Pending;
-  std::string detail;  // the error of a failed run; the wall time of a finished one
+  // The error of a failed run; the wall time of a finished one; the progress of an unfinished one.
+  std::string detail;
 };
 
 std::vector<RowStatus> sweep_status(const std::string& sweep_dir, const SweepManifest& m);

@@ -45,6 +45,8 @@ TEST_CASE("a sweep planned, interrupted, run by local tasks, followed and gather
   CHECK(task.finish() == 143);
   auto status = run_ppsynth("sweep status " + dir);
   CHECK_THAT(status.output, Catch::Contains("0 done, 0 running, 1 interrupted, 0 failed, 3 pending"));
+  // How far it got: the stage it stopped in (its run directory's marker) and its checkpoint.
+  CHECK(std::regex_search(status.output, std::regex("interrupted .* seed 1  \\(stage 1/[0-9]+ \\(sigma 1/[0-9]+\\), checkpoint [0-9]+ s ago")));
 
   auto script = run_ppsynth("sweep run " + dir + " --slurm --dry-run --cpus 2 --time-minutes 30");
   CHECK(script.status == 0);

@@ -46,10 +46,16 @@ TEST_CASE("a run directory: created, locked, marked, replaced only with force", 
     force.force = true;
     CHECK_THROWS_WITH(RunDirectory::open(p, force), Catch::Contains("another ppsynth process"));
     write_text_atomic(p + "/output.txt", "1\n");
+    // Progress is merged key by key while the run is on its way, and dropped once it is complete.
+    dir.mark_progress({{"stage", "sigma 1/4"}, {"index", 1}});
+    dir.mark_progress({{"checkpointed", 12}});
+    CHECK(run_dir_marker(p)["progress"] == nlohmann::json{{"stage", "sigma 1/4"}, {"index", 1}, {"checkpointed", 12}});
+    CHECK(run_dir_state(p) == RunDirState::Unfinished);
     dir.mark_complete({{"seed", 3}});
   }
   CHECK(run_dir_state(p) == RunDirState::Complete);
   CHECK(run_dir_marker(p)["seed"] == 3);
+  CHECK_FALSE(run_dir_marker(p).contains("progress"));
   CHECK_THROWS_WITH(RunDirectory::open(p, {}), Catch::Contains("--force") && Catch::Contains("finished"));
   CHECK(fs::exists(p + "/output.txt"));
   RunDirOptions force;

@@ -14,6 +14,7 @@
 #include "core/metrics/summary_stats.hpp"
 #include "core/processor.hpp"
 #include "optim/run/run_store.hpp"
+#include "optim/run/run_synthesis.hpp"
 #include "optim/sweep/gather.hpp"
 #include "optim/sweep/sweep_executors.hpp"
 #include "optim/sweep/sweep_plan.hpp"
@@ -191,6 +192,23 @@ TEST_CASE("tasks run rows, skip finished ones, and gather pools seeds against a 
   write_gather(mixed, (d / "g").string(), true);
   std::ifstream md(d / "g" / "gather.md");
   CHECK(std::string(std::istreambuf_iterator<char>(md), {}).find("Note: lines") != std::string::npos);
+}
+
+TEST_CASE("an unfinished run's progress, from its marker", "[sweep]") {
+  using nlohmann::json;
+  const long long now = 1'000'000;
+  CHECK(ppsynth::run_progress_text(json(), now).empty());
+  CHECK(ppsynth::run_progress_text(json{{"state", "running"}}, now).empty());  // before its first stage
+  const json stage = {{"stage", "class 3/4 (id 2), sigma 1/4"}, {"index", 9}, {"count", 20}};
+  CHECK(ppsynth::run_progress_text(json{{"progress", stage}}, now) == "stage 9/20 (class 3/4 (id 2), sigma 1/4)");
+  json checkpointed = stage;
+  checkpointed["checkpointed"] = now - 45;
+  CHECK(ppsynth::run_progress_text(json{{"progress", checkpointed}}, now) ==
+        "stage 9/20 (class 3/4 (id 2), sigma 1/4), checkpoint 45 s ago");
+  CHECK(ppsynth::run_progress_text(json{{"progress", {{"checkpointed", now - 600}}}}, now) == "checkpoint 10 min ago");
+  CHECK(ppsynth::run_progress_text(json{{"progress", {{"checkpointed", now - 4 * 3600 - 59}}}}, now) == "checkpoint 4 h ago");
+  const json window = {{"stage", "sigma 2/4"}, {"index", 2}, {"count", 4}, {"window", 7}, {"windows", 16}};
+  CHECK(ppsynth::run_progress_text(json{{"progress", window}}, now) == "stage 2/4, window 7/16 (sigma 2/4)");
 }
 
 TEST_CASE("summaries: NumPy's quantiles, non-finite values left out", "[sweep][stats]") {
