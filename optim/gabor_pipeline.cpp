@@ -66,8 +66,12 @@ json gabor_defaults() {
       // pairs with that class across the seam were never measured). Where no class parks
       // there is no pile to take apart, and a relax would only spread the band (it keeps the
       // band's count): poisson_n64c2_point at the full settings parks nowhere and came out
-      // thinner at the seam (docs/large_outputs.md).
-      {"border_relax", {{"iterations", 0}, {"band", 1.0}, {"lr", nullptr}, {"separation", 1.0}, {"parked", 1.5}}},
+      // thinner at the seam (docs/large_outputs.md). `after`: "class" puts each class's relax
+      // right after its sigma stages, so the later classes are synthesised beside the relaxed
+      // ones; "all" puts every relax after every class's sigma stages, which then are the
+      // paper's bit for bit, as on a one-class exemplar: class by class in class order, its
+      // band moving, every other point of every class frozen, the targets of all classes.
+      {"border_relax", {{"iterations", 0}, {"band", 1.0}, {"lr", nullptr}, {"separation", 1.0}, {"parked", 1.5}, {"after", "class"}}},
       // Rectangle outputs ("output": {"size"} or {"points"}) run window by window
       // (optim/window_plan.hpp): windows of at most `pixels` grid positions across; a margin
       // of 3 sigma_max + `receptive_field` positions (the network's half-width) on each side
@@ -171,6 +175,11 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
     if (quick) s.relax_iterations = std::min(s.relax_iterations, s.max_iterations);
     s.relax_band = get_number(r, "band", "method.border_relax") * s.mean_nn_distance / s.upscale;
     s.relax_parked = get_number(r, "parked", "method.border_relax");
+    const json& after = r["after"];
+    if (after != "class" && after != "all")
+      throw config_error("method.border_relax.after", "expected \"class\" (after each class's sigma stages) or \"all\" "
+                                                      "(after every class's), not " + after.dump());
+    s.relax_after_all = after == "all";
     const json& lr = r["lr"];
     if (!lr.is_null() && !(lr.is_number() && lr.get<double>() > 0))
       throw config_error("method.border_relax.lr", "expected null (the finest sigma's rate) or a number > 0");

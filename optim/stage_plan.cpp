@@ -16,6 +16,7 @@ Vec2 to_output(const StageWindow& w, double u, double v) {
 SynthesisPlan class_sigma_plan(const PointSet& exemplar, const GaborSettings& s,
                                const std::vector<std::vector<size_t>>& out_index) {
   SynthesisPlan plan;
+  SynthesisPlan relax_after_all;  // method.border_relax.after "all": appended after every class
   const int K = exemplar.num_classes();
   for (int st = 0; st < K; ++st) {
     const int cls = s.class_order[st];
@@ -40,10 +41,23 @@ SynthesisPlan class_sigma_plan(const PointSet& exemplar, const GaborSettings& s,
       if (j + 1 == s.sigmas.size() && s.relax_iterations > 0) {  // the finest sigma's settings, the border band only
         stage.label = of_class + "border relax";
         stage.border_relax = true;
-        plan.push_back(std::move(stage));
+        if (!s.relax_after_all) {
+          plan.push_back(std::move(stage));
+          continue;
+        }
+        // After every class: a group of its own, beside every other point of every class,
+        // measured against the targets of all classes (the last class's stages measure them).
+        stage.group = K + st;
+        stage.target_classes = s.class_order;
+        stage.k = s.k_per_stage ? static_cast<int>(std::min<size_t>(s.k, exemplar.size())) : s.k;
+        stage.frozen.clear();
+        for (int other : s.class_order)
+          if (other != cls) stage.frozen.insert(stage.frozen.end(), out_index[other].begin(), out_index[other].end());
+        relax_after_all.push_back(std::move(stage));
       }
     }
   }
+  plan.insert(plan.end(), relax_after_all.begin(), relax_after_all.end());
   return plan;
 }
 

@@ -85,6 +85,66 @@ TEST_CASE("a border relax moves only its class's points near the grid's edge, af
   }
 }
 
+TEST_CASE("after \"all\", the relaxes follow every class's sigma stages, which stay the paper's bit for bit", "[optim][border_relax]") {
+  const PointSet ex = test::small_exemplar(2, false);
+  const double band = mean_nn_distance(ex) / 2;
+  auto run = [&](const json& method_json, StageEnds& ends) {
+    auto method = MethodRegistry::instance().create(method_json, "method");
+    SynthesisContext ctx;
+    ctx.quick = true;
+    ctx.seed = 7;
+    ctx.observers.push_back(&ends);
+    return method->synthesize(ex, ctx);
+  };
+  json after_all = relaxed_method(4);
+  after_all["border_relax"]["after"] = "all";
+  StageEnds relaxed, paper;
+  const PointSet out = run(after_all, relaxed);
+  run(relaxed_method(0), paper);
+  REQUIRE(paper.labels.size() == 4);
+  REQUIRE(relaxed.labels.size() == 6);
+  CHECK(relaxed.labels[4] == "class 1/2 (id 0), border relax");
+  CHECK(relaxed.labels[5] == "class 2/2 (id 1), border relax");
+  for (size_t i = 0; i < 4; ++i) CHECK(same_bits(relaxed.points[i], paper.points[i]));
+  // Each relax moves its class's band only: every point of the other class stays too.
+  for (int c = 0; c < 2; ++c) {
+    const PointSet& before = relaxed.points[3 + c];
+    const PointSet& after = relaxed.points[4 + c];
+    size_t band_points = 0, moved = 0;
+    for (size_t i = 0; i < before.size(); ++i) {
+      const Vec2 p = before[i];
+      const bool in_band = p.x < band || p.x > 1 - band || p.y < band || p.y > 1 - band;
+      if (before.cls(i) == c && in_band) {
+        ++band_points;
+        moved += p.x != after[i].x || p.y != after[i].y;
+      } else {
+        INFO("relax of class " << c << ", point " << i << " of class " << before.cls(i));
+        CHECK(p.x == after[i].x);
+        CHECK(p.y == after[i].y);
+      }
+    }
+    INFO("class " << c);
+    CHECK(band_points > 0);
+    CHECK(moved > band_points / 2);
+  }
+  CHECK(same_bits(out, relaxed.points.back()));
+  // It resumes bit for bit from inside the first relax and from inside the last.
+  auto whole_run = test::checkpointed_run(after_all, ex, 5, nullptr);
+  const std::vector<std::string>& cps = whole_run.checkpoints;
+  const PointSet& whole = whole_run.output;
+  REQUIRE(cps.size() > 10);
+  for (size_t i : {cps.size() - 7, cps.size() - 2}) {
+    INFO("checkpoint " << i);
+    CHECK(same_bits(test::checkpointed_run(after_all, ex, 5, &cps[i]).output, whole));
+  }
+  json bad = after_all;
+  bad["border_relax"]["after"] = "each";
+  OutputShape square;
+  square.upscale = 2;
+  CHECK(resolve_gabor_settings(method_params(after_all), ex, square, false).relax_after_all);
+  CHECK_THROWS_WITH(resolve_gabor_settings(method_params(bad), ex, square, false), Catch::Contains("method.border_relax.after"));
+}
+
 TEST_CASE("the border relax's separation acts in the relax stages only, and keeps their pairs apart", "[optim][border_relax]") {
   // Class 0 a 3 x 3 lattice: its pairs are wide (1/3), so the output's best-candidate start
   // has pairs closer than the term's threshold for it to act on; class 1 four points.
