@@ -52,8 +52,9 @@ struct GaborSettings {
   double relax_band = 0;
   double relax_lr = 0;
   double relax_parked = 0;
-  // method.border_relax.after "all": the relax stages follow every class's sigma stages (which
-  // stay the paper's bit for bit), each measuring every class; "class" (false): each follows its class's.
+  // method.border_relax.after "all" (the default): the relax stages follow every class's sigma
+  // stages (which stay the paper's bit for bit), each measuring every class; "class" (false):
+  // each follows its own class's.
   bool relax_after_all = false;
   // The grid of each sigma stage (coarse -> fine): `res` and `out_res` at every stage, or with
   // method.grid.per_sigma coarser grids at the coarser sigmas, keeping the finest stage's

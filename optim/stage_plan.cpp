@@ -41,7 +41,7 @@ SynthesisPlan class_sigma_plan(const PointSet& exemplar, const GaborSettings& s,
       if (j + 1 == s.sigmas.size() && s.relax_iterations > 0) {  // the finest sigma's settings, the border band only
         stage.label = of_class + "border relax";
         stage.border_relax = true;
-        if (!s.relax_after_all) {
+        if (!s.relax_after_all || K == 1) {  // one class: after it is after all
           plan.push_back(std::move(stage));
           continue;
         }

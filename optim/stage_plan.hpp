@@ -7,8 +7,9 @@
 //
 // The paper's plan (class_sigma_plan): one group per class in class order, one stage per
 // sigma, earlier classes frozen, the maps on the unit square read as a torus; with
-// method.border_relax a last stage in each class's group relaxes its border band (or, with
-// border_relax.after "all", one group per class after every class's stages). The windows of
+// method.border_relax one more stage per class relaxes its border band: after every class's
+// stages, a group of its own each (border_relax.after "all", the default), or last in its
+// class's group ("class"). The windows of
 // a large canvas (optim/window_plan.hpp) are another plan for the same engine
 // (optim/gabor_engine.hpp): the same class and sigma stages, once per window.
 #include <string>
