@@ -43,6 +43,23 @@ struct StageEnds : SynthesisObserver {
   }
 };
 
+// A relax stage of class c, from `before` to `after`: checks that every point but class c's
+// within `band` of the edge stayed bit for bit; adds the band's points and those that moved.
+void check_band_relax(const PointSet& before, const PointSet& after, int c, double band, size_t& band_points, size_t& moved) {
+  REQUIRE(before.size() == after.size());
+  for (size_t i = 0; i < before.size(); ++i) {
+    const Vec2 p = before[i];
+    const bool in_band = p.x < band || p.x > 1 - band || p.y < band || p.y > 1 - band;
+    if (before.cls(i) == c && in_band) {
+      ++band_points;
+      moved += p.x != after[i].x || p.y != after[i].y;
+    } else {
+      INFO("relax of class " << c << ", point " << i << " of class " << before.cls(i));
+      CHECK(p.x == after[i].x);  // frozen: bit for bit where the stage found it
+      CHECK(p.y == after[i].y);
+    }
+  }
+}
 
 }  // namespace
 
@@ -64,21 +81,7 @@ TEST_CASE("a border relax moves only its class's points near the grid's edge, af
     for (int c = 0; c < classes; ++c) {
       const size_t r = 3 * c + 2;
       CHECK(ends.labels[r].find("border relax") != std::string::npos);
-      const PointSet& before = ends.points[r - 1];
-      const PointSet& after = ends.points[r];
-      REQUIRE(before.size() == after.size());
-      for (size_t i = 0; i < before.size(); ++i) {
-        const Vec2 p = before[i];
-        const bool in_band = p.x < band || p.x > 1 - band || p.y < band || p.y > 1 - band;
-        if (before.cls(i) == c && in_band) {
-          ++band_points;
-          moved += p.x != after[i].x || p.y != after[i].y;
-        } else {
-          INFO("point " << i << " of class " << before.cls(i));
-          CHECK(p.x == after[i].x);  // frozen: bit for bit where the stage found it
-          CHECK(p.y == after[i].y);
-        }
-      }
+      check_band_relax(ends.points[r - 1], ends.points[r], c, band, band_points, moved);
     }
     CHECK(band_points > 0);
     CHECK(moved > band_points / 2);
@@ -109,21 +112,8 @@ TEST_CASE("by default the relaxes follow every class's sigma stages, which stay 
   for (size_t i = 0; i < 4; ++i) CHECK(same_bits(relaxed.points[i], paper.points[i]));
   // Each relax moves its class's band only: every point of the other class stays too.
   for (int c = 0; c < 2; ++c) {
-    const PointSet& before = relaxed.points[3 + c];
-    const PointSet& after = relaxed.points[4 + c];
     size_t band_points = 0, moved = 0;
-    for (size_t i = 0; i < before.size(); ++i) {
-      const Vec2 p = before[i];
-      const bool in_band = p.x < band || p.x > 1 - band || p.y < band || p.y > 1 - band;
-      if (before.cls(i) == c && in_band) {
-        ++band_points;
-        moved += p.x != after[i].x || p.y != after[i].y;
-      } else {
-        INFO("relax of class " << c << ", point " << i << " of class " << before.cls(i));
-        CHECK(p.x == after[i].x);
-        CHECK(p.y == after[i].y);
-      }
-    }
+    check_band_relax(relaxed.points[3 + c], relaxed.points[4 + c], c, band, band_points, moved);
     INFO("class " << c);
     CHECK(band_points > 0);
     CHECK(moved > band_points / 2);
