@@ -369,7 +369,9 @@ void GaborEngine::enter_stage(const Stage& stage) {
   relax_mask_ = torch::Tensor();
   if (stage.border_relax) {
     relax_parked_ = parked_over_uniform();
-    relax_mask_ = border_band();
+    // A class the relax leaves alone (method.border_relax.parked) keeps every point where it is.
+    relax_mask_ = relax_this_class() ? border_band()
+                                     : torch::zeros({static_cast<int64_t>(moving_idx_.size()), 1}, torch::kBool);
     if (state_.iteration == 0)  // why a relax moves nothing, where the user watches
       spdlog::info("{}: {:.2f} x uniform points' share within 1 % of the edge (method.border_relax.parked {:g}): {}", stage.label,
                    relax_parked_, s_.relax_parked, relax_mask_.any().item<bool>() ? "relaxing its band" : "nothing to move");
@@ -409,8 +411,6 @@ torch::Tensor GaborEngine::border_band() const {
   // checkpoint holds it), so a run resumed inside the stage moves the same points.
   const double b = s_.relax_band;
   auto mask = torch::zeros({static_cast<int64_t>(moving_idx_.size()), 1}, torch::kBool);
-  // A class the relax leaves alone (relax_this_class: method.border_relax.parked) keeps every point where it is.
-  if (!relax_this_class()) return mask;
   auto m = mask.accessor<bool, 2>();
   for (size_t i = 0; i < moving_idx_.size(); ++i) {
     const Vec2 p = out_[moving_idx_[i]];

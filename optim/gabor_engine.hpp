@@ -69,10 +69,9 @@ class GaborEngine {
   PointSet synthesised() const;     // out_ without a frozen exemplar pad, on the area where points move
   ProgressEvent event(const Stage& stage) const;
   int iteration_cap(const Stage& stage) const;  // the border relax's count, else method.max_iterations
-  // A border relax stage's relax_mask_: its class's points near the edge, or none when
-  // neither it nor an earlier class parks (method.border_relax.parked); parked_over_uniform()
-  // is the share that decides (within 1 % of the edge, over uniform points'), on the stage's
-  // start.
+  // A border relax stage's relax_mask_: its class's points near the edge (border_band) when
+  // relax_this_class(), else none; parked_over_uniform() is the share that decides (within
+  // 1 % of the edge, over uniform points'), on the stage's start.
   torch::Tensor border_band() const;
   double parked_over_uniform() const;
   bool relax_this_class() const;  // it parks, or an earlier class parked (or parked = 0)
