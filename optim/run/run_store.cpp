@@ -51,12 +51,6 @@ void plot_pcf(const std::string& path, const nlohmann::json& m) {
   else if (!plots.empty()) plot_curve_grid(path, plots, std::min<int>(3, static_cast<int>(plots.size())));
 }
 
-// The exemplar a finished run synthesised from: its own copy, else the config's file.
-PointSet run_exemplar(const std::string& dir, const nlohmann::json& config) {
-  const std::string copy = dir + "/exemplar.txt";
-  return fs::exists(copy) ? read_points(copy) : load_exemplar(config);
-}
-
 bool same_points(const PointSet& a, const PointSet& b) {
   if (a.size() != b.size() || a.classes() != b.classes() || a.attribute_names() != b.attribute_names()) return false;
   const double tol = 1e-9;  // plain text keeps 17 digits; tolerance only for the text round trip
@@ -154,6 +148,11 @@ void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const
                         {"peak_rss_mib", peak_resident_mib()},
                         {"method_stats", o.stats}};
   write_text_atomic(dir + "/run.json", run.dump(2) + "\n");
+}
+
+PointSet run_exemplar(const std::string& dir, const nlohmann::json& config) {
+  const std::string copy = dir + "/exemplar.txt";
+  return fs::exists(copy) ? read_points(copy) : load_exemplar(config);
 }
 
 RunOutcome load_run(const std::string& dir) {

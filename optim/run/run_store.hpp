@@ -35,6 +35,10 @@ void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const
 // Throws InputError naming the file when something is missing.
 RunOutcome load_run(const std::string& dir);
 
+// The exemplar a run synthesised from: its exemplar.txt copy (written when it finishes), else
+// its config's file (an unfinished run; runs made before the copy).
+PointSet run_exemplar(const std::string& dir, const nlohmann::json& config);
+
 // The keys of a resolved run config that decide a synthesis: all but those that only label or
 // decorate a run (name, description, snapshots, evaluate, checkpoint_seconds) and the
 // exemplar's file name and format (exemplars are compared by content).

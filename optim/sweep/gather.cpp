@@ -29,7 +29,8 @@ namespace {
 
 struct Found {
   std::string dir, group, group_label;
-  nlohmann::json key;  // what decides its group (run_store's group_key)
+  nlohmann::json key;     // what decides its group (run_store's group_key)
+  bool finished = true;   // false: only its snapshots count (GatherOptions::stages)
 };
 
 // How gather evaluates an output itself (a reference; every run with --protocol): the
@@ -41,13 +42,18 @@ EvalOptions eval_options(const GatherOptions& g) {
   return e;
 }
 
+// The output shape a run's config made.
+OutputShape run_output_shape(const json& config, const PointSet& exemplar) {
+  json c = config;
+  c["output"] = merge(output_defaults(), c.value("output", json::object()));
+  return resolve_output_shape(c, exemplar);
+}
+
 // A run's output evaluated at the scale it was made at (its config's output shape), as the
 // run's own metrics.json was: crops are exemplar-sized at that scale whatever its density.
-EvalOptions eval_options(const GatherOptions& g, const RunOutcome& run) {
+EvalOptions eval_options(const GatherOptions& g, const json& config, const PointSet& exemplar) {
   EvalOptions e = eval_options(g);
-  json c = run.config;
-  c["output"] = merge(output_defaults(), c.value("output", json::object()));
-  e.zoom = resolve_output_shape(c, run.exemplar).zoom();
+  e.zoom = run_output_shape(config, exemplar).zoom();
   return e;
 }
 
@@ -86,16 +92,22 @@ std::vector<std::pair<std::string, double>> metric_values(const nlohmann::json& 
   return v;
 }
 
-// What decides a finished run's group (run_store's group_key, as a sweep's plan computes it).
+// What a run recorded of itself (seed, quick, processor): its run.json once it has finished,
+// else its directory's marker (written when it started).
+nlohmann::json recorded(const std::string& dir) {
+  return fs::exists(dir + "/run.json") ? read_run_json(dir + "/run.json") : run_dir_marker(dir);
+}
+
+// What decides a run's group (run_store's group_key, as a sweep's plan computes it).
 nlohmann::json run_group_key(const std::string& dir, const nlohmann::json& config) {
-  return group_key(config, read_run_json(dir + "/run.json").value("quick", false));
+  return group_key(config, recorded(dir).value("quick", false));
 }
 
 // The group of a run directory made outside a sweep.
-Found loose_run(const std::string& dir) {
+Found loose_run(const std::string& dir, bool finished) {
   const nlohmann::json config = read_run_json(dir + "/config.json");
   const nlohmann::json key = run_group_key(dir, config);
-  return {dir, json_id(key), run_name(config) + " (" + config["method"].value("type", std::string("?")) + ")", key};
+  return {dir, json_id(key), run_name(config) + " (" + config["method"].value("type", std::string("?")) + ")", key, finished};
 }
 
 // Groups of one label but other settings (runs made outside a sweep with `--set upscale=3`;
@@ -138,21 +150,27 @@ void label_by_differences(std::vector<Found>& found) {
     }
 }
 
+// Finished runs, and unfinished ones that have begun (their snapshots count for --stage).
 void discover(const std::string& dir, std::vector<Found>& found, std::vector<std::string>& unfinished, int depth) {
   if (fs::is_regular_file(fs::path(dir) / "manifest.json")) {
     for (const auto& row : load_sweep(dir).rows) {
       const std::string d = (fs::path(dir) / row.dir).string();
-      if (run_dir_state(d) == RunDirState::Complete) found.push_back({d, row.group, row.group_label, run_group_key(d, read_run_json(d + "/config.json"))});
-      else unfinished.push_back(d);
+      const RunDirState state = run_dir_state(d);
+      if (state != RunDirState::Complete) unfinished.push_back(d);
+      if (state == RunDirState::Complete || (state == RunDirState::Unfinished && fs::exists(d + "/config.json")))
+        found.push_back({d, row.group, row.group_label, run_group_key(d, read_run_json(d + "/config.json")),
+                         state == RunDirState::Complete});
     }
     return;
   }
   switch (run_dir_state(dir)) {
     case RunDirState::Complete:
-      if (run_dir_marker(dir).value("kind", "run") == "run") found.push_back(loose_run(dir));
+      if (run_dir_marker(dir).value("kind", "run") == "run") found.push_back(loose_run(dir, true));
       return;
     case RunDirState::Unfinished:
       unfinished.push_back(dir);
+      if (run_dir_marker(dir).value("kind", "run") == "run" && fs::exists(dir + "/config.json"))
+        found.push_back(loose_run(dir, false));
       return;
     default:
       break;
@@ -240,6 +258,44 @@ std::vector<std::string> processor_notes(const std::vector<GatheredRun>& runs) {
   return notes;
 }
 
+// Every run's points after `stage` (GatherOptions::stages) as runs of the group "<label> @
+// stage N"; finished runs without that snapshot are listed as left out.
+void gather_stage(const std::vector<Found>& found, int stage, const GatherOptions& options, GatherResult& r) {
+  char name[32];
+  std::snprintf(name, sizeof name, "stage%02d.txt", stage);
+  const std::string what = "--stage " + std::to_string(stage);
+  if (stage < 1) throw InputError(what + ": expected a stage number >= 1 (as the runs' snapshots/stageNN.txt count them)");
+  std::set<std::string> seen;
+  size_t gathered = 0;
+  for (const Found& f : found) {
+    if (!seen.insert(fs::weakly_canonical(f.dir).string()).second) continue;  // named twice
+    const std::string file = f.dir + "/snapshots/" + name;
+    if (!fs::exists(file)) {
+      if (f.finished) r.unfinished.push_back(f.dir + " (" + what + ": no snapshots/" + name + ")");
+      continue;  // an unfinished run is listed as such already
+    }
+    const json config = read_run_json(f.dir + "/config.json");
+    const PointSet exemplar = run_exemplar(f.dir, config);
+    const PointSet points = read_points(file);
+    const Domain want = run_output_shape(config, exemplar).domain(), got = points.domain();
+    if (got.x0 != want.x0 || got.y0 != want.y0 || got.x1 != want.x1 || got.y1 != want.y1) {
+      char text[256];
+      std::snprintf(text, sizeof text, ": covers [%g, %g] x [%g, %g], not the output's [%g, %g] x [%g, %g]", got.x0, got.x1, got.y0,
+                    got.y1, want.x0, want.x1, want.y0, want.y1);
+      throw InputError(file + text + " (one window of a large output, or a padded canvas): " + what + " gathers whole outputs only");
+    }
+    const std::string n = std::to_string(stage);
+    GatheredRun run{f.dir, f.group + "@stage" + n, f.group_label + " @ stage " + n, 0, {}, {}, stage};
+    run.values = metric_values(evaluate(exemplar, points, eval_options(options, config, exemplar)));
+    const json info = recorded(f.dir);
+    run.seed = info.value("seed", config.value("seed", uint64_t{0}));
+    run.processor = info.value("processor", std::string());
+    r.runs.push_back(std::move(run));
+    ++gathered;
+  }
+  if (gathered == 0) throw InputError(what + ": no gathered run has passed that stage (none has snapshots/" + std::string(name) + ")");
+}
+
 }  // namespace
 
 ReferenceOutput parse_reference(const std::string& text) {
@@ -263,12 +319,13 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
   label_by_differences(found);
   std::set<std::string> seen;
   for (const Found& f : found) {
+    if (!f.finished) continue;
     const std::string canonical = fs::weakly_canonical(f.dir).string();
     if (!seen.insert(canonical).second) continue;  // named twice
     GatheredRun run{f.dir, f.group, f.group_label, 0, {}, {}};
     if (options.protocol) {  // measured again, the same way for every run
       const RunOutcome o = load_run(f.dir);
-      run.values = metric_values(evaluate(o.exemplar, o.output, eval_options(options, o)));
+      run.values = metric_values(evaluate(o.exemplar, o.output, eval_options(options, o.config, o.exemplar)));
     } else if (fs::exists(f.dir + "/metrics.json")) {
       run.values = metric_values(read_run_json(f.dir + "/metrics.json"));
     } else {
@@ -281,6 +338,7 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
     run.values.push_back({"run/seconds", info.value("total_seconds", 0.0)});
     r.runs.push_back(std::move(run));
   }
+  for (const int stage : options.stages) gather_stage(found, stage, options, r);
   std::sort(r.runs.begin(), r.runs.end(), [](const GatheredRun& a, const GatheredRun& b) {
     return std::tie(a.group_label, a.group, a.seed, a.dir) < std::tie(b.group_label, b.group, b.seed, b.dir);
   });
@@ -448,7 +506,8 @@ nlohmann::json to_json(const GatherResult& r) {
   for (const auto& run : r.runs) {
     nlohmann::json v = nlohmann::json::object();
     for (const auto& [k, x] : run.values) v[k] = x;
-    runs.push_back({{"dir", run.dir}, {"group", run.group}, {"group_label", run.group_label}, {"seed", run.seed}, {"values", v}});
+    runs.push_back({{"dir", run.dir}, {"group", run.group}, {"group_label", run.group_label}, {"seed", run.seed},
+                    {"stage", run.stage}, {"values", v}});
   }
   auto optional = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); };
   for (const auto& s : r.summaries)
@@ -468,6 +527,13 @@ nlohmann::json to_json(const GatherResult& r) {
   return {{"references", refs}, {"bound", r.options.bound}, {"runs", runs}, {"summaries", sums},
           {"evaluation", r.options.protocol ? std::string(patch_protocol_name(*r.options.protocol)) : std::string("metrics.json")},
           {"baselines", r.options.baselines}, {"comparisons", comps}, {"left_out", r.unfinished}, {"notes", r.notes}};
+}
+
+// "12 finished runs" or "10 finished runs and 5 stage snapshots" (GatherOptions::stages).
+std::string runs_text(const GatherResult& r) {
+  const auto snapshots = std::count_if(r.runs.begin(), r.runs.end(), [](const GatheredRun& x) { return x.stage > 0; });
+  const std::string finished = std::to_string(r.runs.size() - static_cast<size_t>(snapshots)) + " finished runs";
+  return snapshots == 0 ? finished : finished + " and " + std::to_string(snapshots) + " stage snapshots";
 }
 
 // The notes (GatherResult::notes) as paragraphs above the Markdown's tables.
@@ -598,7 +664,7 @@ void write_gather(const GatherResult& r, const std::string& out, bool force) {
     write_table_csv(d + "/gather.csv", summary_header(), summary_rows(r));
     const auto [seed_header, seed_rows] = per_seed_table(r);
     write_table_csv(d + "/per_seed.csv", seed_header, seed_rows);
-    std::string md = "# Gathered runs\n\n" + std::to_string(r.runs.size()) + " finished runs" +
+    std::string md = "# Gathered runs\n\n" + runs_text(r) +
                      (r.options.references.empty() ? "" : "; reference " + references_text(r.options) + ", bound " + num(r.options.bound, "%g") + " x") +
                      ".\n\n" + notes_markdown(r.notes) + table_markdown(summary_header(), summary_rows(r)) +
                      (r.comparisons.empty() ? std::string()
@@ -611,10 +677,10 @@ void write_gather(const GatherResult& r, const std::string& out, bool force) {
     if (!r.comparisons.empty()) write_table_csv(d + "/baselines.csv", comparison_header(), comparison_rows(r));
     write_text_atomic(d + "/gather.md", md);
     write_text_atomic(d + "/gather.json", to_json(r).dump(1) + "\n");
-    HtmlReport html("ppsynth gather: " + std::to_string(r.runs.size()) + " runs");
+    HtmlReport html("ppsynth gather: " + runs_text(r));
     html.add_paragraph("Every finished run, grouped by configuration with the seeds pooled: one dot per seed, the box from "
                        "the first to the third quartile with the median, whiskers to the extremes.");
-    std::vector<std::pair<std::string, std::string>> kv = {{"runs", std::to_string(r.runs.size())},
+    std::vector<std::pair<std::string, std::string>> kv = {{"runs", runs_text(r)},
                                                            {"left out (unfinished)", std::to_string(r.unfinished.size())},
                                                            {"evaluation", evaluation_text(r.options)}};
     if (!r.options.references.empty()) {

@@ -36,6 +36,15 @@ struct GatherOptions {
   // (and every reference) evaluated again against its exemplar with this protocol, e.g.
   // crops for finished u = 2 runs measured away from their frame (docs/large_outputs.md).
   std::optional<PatchProtocol> protocol;
+  // Stage numbers (1-based, as snapshots/stageNN.txt): each run's points after that stage
+  // also make a group of their own, "<group label> @ stage N", evaluated here (with
+  // `protocol`, else the evaluation's defaults, as a run's metrics.json). A run counts there
+  // once it has passed the stage, finished or not. What it is for: a plan that appends stages
+  // to another's (a border relax after the published stages) holds that plan's output as a
+  // snapshot, bit for bit, so one sweep gives both groups, paired by seed, for half the runs
+  // (`--baseline "<label> @ stage N"`). Whole outputs only: a snapshot of one window of a large
+  // output, or of a padded canvas, is an error naming it.
+  std::vector<int> stages;
 };
 
 // One finished run and the numbers taken from it.
@@ -44,6 +53,7 @@ struct GatheredRun {
   uint64_t seed = 0;
   std::vector<std::pair<std::string, double>> values;  // "<scope>/<metric>" -> value
   std::string processor;  // run.json's (core/processor.hpp); "" for runs made before it was recorded
+  int stage = 0;          // 0: the run's output; N: its points after stage N (GatherOptions::stages)
 };
 
 struct MetricSummary {
@@ -79,7 +89,7 @@ struct GatherResult {
   std::vector<GatheredRun> runs;
   std::vector<MetricSummary> summaries;  // by group, then scope, then metric
   std::vector<BaselineComparison> comparisons;  // by baseline, then group, scope, metric
-  std::vector<std::string> unfinished;   // run directories left out (not complete)
+  std::vector<std::string> unfinished;   // run directories left out (not complete; not past a stage)
   // What a reader of the numbers must know: a group whose seeds ran on more than one kind of
   // processor (their seconds do not compare, and a seed rerun elsewhere is another sample).
   std::vector<std::string> notes;

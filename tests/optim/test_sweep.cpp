@@ -10,6 +10,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "core/formats/point_io.hpp"
 #include "core/metrics/evaluation.hpp"
 #include "core/metrics/summary_stats.hpp"
 #include "core/processor.hpp"
@@ -374,6 +375,84 @@ TEST_CASE("gather compares groups with a baseline: ratio of medians and a bootst
   CHECK(dup->paired_seeds == std::vector<uint64_t>{3, 6});
   // a single loose run keeps its plain label
   CHECK(gather_runs({loose[0]}, GatherOptions{}).runs.at(0).group_label == "lines (gabor)");
+}
+
+TEST_CASE("gather takes each run's points after a stage as a group of its own", "[sweep]") {
+  const auto d = test::scratch_dir("sweep_stage");
+  const std::string dir = (d / "sw").string();
+  plan_sweep(expand_sweep_spec(tiny_spec(), "spec", ""), dir);
+  const auto m = load_sweep(dir);
+  for (size_t i = 0; i < m.rows.size(); ++i) REQUIRE(run_sweep_task(dir, i, nullptr) == RowState::Done);
+  auto row_dir = [&](size_t i) { return (fs::path(dir) / m.rows[i].dir).string(); };
+  int last = 0;  // the plan's stage count, from the snapshots a run wrote
+  while (fs::exists(row_dir(0) + "/snapshots/stage" + std::string(last + 1 < 10 ? "0" : "") + std::to_string(last + 1) + ".txt")) ++last;
+  REQUIRE(last >= 2);
+  const std::string last_label = "lines @ stage " + std::to_string(last);
+
+  GatherOptions o;
+  o.protocol = PatchProtocol::Crops;
+  o.stages = {1, last};
+  o.baselines = {last_label};
+  const GatherResult g = gather_runs({dir}, o);
+  auto summary = [](const GatherResult& r, const std::string& label) {
+    const auto it = std::find_if(r.summaries.begin(), r.summaries.end(), [&](const MetricSummary& s) {
+      return s.group_label == label && s.scope == "all" && s.metric == "pcf_mse";
+    });
+    REQUIRE(it != r.summaries.end());
+    return *it;
+  };
+  CHECK(summary(g, "lines").seeds == std::vector<uint64_t>{3, 5, 6});
+  CHECK(summary(g, "lines @ stage 1").seeds == std::vector<uint64_t>{3, 5, 6});
+  // The last stage's points are the output, bit for bit: every seed's ratio is exactly 1.
+  const auto final_over_last = std::find_if(g.comparisons.begin(), g.comparisons.end(), [](const BaselineComparison& c) {
+    return c.group_label == "lines" && c.scope == "all" && c.metric == "pcf_mse";
+  });
+  REQUIRE(final_over_last != g.comparisons.end());
+  CHECK(final_over_last->paired_ratios == std::vector<double>{1.0, 1.0, 1.0});
+  // Stage 1's value is the evaluation of that snapshot, and not the output's.
+  EvalOptions e;
+  e.protocol = PatchProtocol::Crops;
+  e.include_curves = false;
+  const RunOutcome seed3 = load_run(row_dir(0));
+  const double stage1 = evaluate(seed3.exemplar, read_points(row_dir(0) + "/snapshots/stage01.txt"), e)["all"]["pcf_mse"].get<double>();
+  CHECK(summary(g, "lines @ stage 1").values[0] == Approx(stage1));
+  CHECK(summary(g, "lines @ stage 1").values[0] != Approx(summary(g, "lines").values[0]));
+  // Snapshots have no wall time of their own.
+  CHECK(std::none_of(g.summaries.begin(), g.summaries.end(),
+                     [](const MetricSummary& s) { return s.group_label == "lines @ stage 1" && s.metric == "seconds"; }));
+  write_gather(g, (d / "g").string(), false);
+  std::ifstream md(d / "g" / "gather.md");
+  CHECK_THAT(std::string(std::istreambuf_iterator<char>(md), {}), Catch::Contains("3 finished runs and 6 stage snapshots"));
+
+  // An unfinished run counts for the stages it has passed, and not as a finished run.
+  const fs::path marker = fs::path(row_dir(2)) / ".ppsynth-run";
+  json state = read_run_json(marker.string());
+  state["state"] = "running";
+  std::ofstream(marker) << state.dump(2);
+  fs::remove(fs::path(row_dir(2)) / "run.json");
+  const GatherResult running = gather_runs({dir}, o);
+  CHECK(summary(running, "lines").seeds == std::vector<uint64_t>{3, 5});
+  CHECK(summary(running, "lines @ stage 1").seeds == std::vector<uint64_t>{3, 5, 6});
+  CHECK(std::count(running.unfinished.begin(), running.unfinished.end(), row_dir(2)) == 1);
+
+  // A finished run without the snapshot is left out, and says why.
+  fs::remove(fs::path(row_dir(0)) / "snapshots" / "stage01.txt");
+  const GatherResult without = gather_runs({dir}, o);
+  CHECK(summary(without, "lines @ stage 1").seeds == std::vector<uint64_t>{5, 6});
+  CHECK(std::count(without.unfinished.begin(), without.unfinished.end(),
+                   row_dir(0) + " (--stage 1: no snapshots/stage01.txt)") == 1);
+
+  // Stages no run has passed, or that do not exist, and a snapshot that is not the whole output.
+  GatherOptions bad = o;
+  bad.baselines.clear();
+  bad.stages = {99};
+  CHECK_THROWS_WITH(gather_runs({dir}, bad), Catch::Contains("--stage 99: no gathered run has passed"));
+  bad.stages = {0};
+  CHECK_THROWS_WITH(gather_runs({dir}, bad), Catch::Contains("--stage 0: expected a stage number >= 1"));
+  const std::string window = row_dir(1) + "/snapshots/stage02.txt";
+  write_points(window, read_points(window).crop({0, 0, 0.5, 1}), Format::Plain);  // as a window's snapshot is
+  bad.stages = {2};
+  CHECK_THROWS_WITH(gather_runs({dir}, bad), Catch::Contains(window) && Catch::Contains("whole outputs only"));
 }
 
 TEST_CASE("gather tells apart two sweeps of one run config with other settings", "[sweep]") {

@@ -1,5 +1,5 @@
 // `ppsynth gather DIR... [-o OUT] [--reference [EXEMPLAR=]FILE ...] [--bound B] [--baseline GROUP ...]
-//                 [--protocol quadrants|crops|auto] [--force]`
+//                 [--protocol quadrants|crops|auto] [--stage N ...] [--force]`
 // Statistics over seeds of every finished run under the directories (sweeps, run directories,
 // folders of them): prints the table; with -o writes gather.csv, gather.md, gather.json,
 // per_seed.csv and index.html (strip plots). The library: optim/sweep/gather.hpp.
@@ -17,6 +17,7 @@ struct Opts {
   std::vector<std::string> references, baselines;
   double bound = 1.25;
   std::string protocol;
+  std::vector<int> stages;
   bool force = false;
 };
 
@@ -35,12 +36,17 @@ ppsynth::app::RunFn setup(CLI::App& cmd) {
   cmd.add_option("--protocol", o->protocol,
                  "evaluate every run's output (and reference) again with this protocol instead of reading its metrics.json: "
                  "quadrants (the paper's), crops (20 random exemplar-sized crops: the pattern away from the output's frame) or auto");
+  cmd.add_option("--stage", o->stages,
+                 "also each run's points after stage N (its snapshots/stageNN.txt; unfinished runs once past it) as a group "
+                 "\"<label> @ stage N\", e.g. the published stages' output inside runs that append a border relax, for "
+                 "--baseline (repeatable)");
   return [o]() -> int {
     ppsynth::GatherOptions opts;
     if (!o->protocol.empty()) opts.protocol = ppsynth::parse_patch_protocol(o->protocol);
     opts.baselines = o->baselines;
     for (const auto& r : o->references) opts.references.push_back(ppsynth::parse_reference(r));
     opts.bound = o->bound;
+    opts.stages = o->stages;
     const auto r = ppsynth::gather_runs(o->dirs, opts);
     if (r.runs.empty()) throw ppsynth::InputError("gather: no finished run under the given directories");
     std::cout << ppsynth::format_gather(r);
