@@ -339,8 +339,11 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
     r.runs.push_back(std::move(run));
   }
   for (const int stage : options.stages) gather_stage(found, stage, options, r);
-  std::sort(r.runs.begin(), r.runs.end(), [](const GatheredRun& a, const GatheredRun& b) {
-    return std::tie(a.group_label, a.group, a.seed, a.dir) < std::tie(b.group_label, b.group, b.seed, b.dir);
+  // By label, a group's stages after it in their order ("@ stage 2" before "@ stage 10").
+  auto base_label = [](const GatheredRun& x) { return x.stage ? x.group_label.substr(0, x.group_label.rfind(" @ stage ")) : x.group_label; };
+  std::sort(r.runs.begin(), r.runs.end(), [&](const GatheredRun& a, const GatheredRun& b) {
+    const std::string la = base_label(a), lb = base_label(b);
+    return std::tie(la, a.stage, a.group, a.seed, a.dir) < std::tie(lb, b.stage, b.group, b.seed, b.dir);
   });
   r.notes = processor_notes(r.runs);
   // group -> key -> summary, keys in first-seen order

@@ -403,6 +403,16 @@ TEST_CASE("gather takes each run's points after a stage as a group of its own", 
   };
   CHECK(summary(g, "lines").seeds == std::vector<uint64_t>{3, 5, 6});
   CHECK(summary(g, "lines @ stage 1").seeds == std::vector<uint64_t>{3, 5, 6});
+  // Each group's stages follow it in their order (tables and plots), not in the order of text:
+  // a stage 10 (here a copy of stage 1) comes after stage 2.
+  for (size_t i = 0; i < m.rows.size(); ++i)
+    fs::copy_file(row_dir(i) + "/snapshots/stage01.txt", row_dir(i) + "/snapshots/stage10.txt");
+  GatherOptions ten = o;
+  ten.stages = {10, 2, 1};
+  std::vector<std::string> order;
+  for (const auto& s : gather_runs({dir}, ten).summaries)
+    if (s.scope == "all" && s.metric == "pcf_mse") order.push_back(s.group_label);
+  CHECK(order == std::vector<std::string>{"lines", "lines @ stage 1", "lines @ stage 2", "lines @ stage 10"});
   // The last stage's points are the output, bit for bit: every seed's ratio is exactly 1.
   const auto final_over_last = std::find_if(g.comparisons.begin(), g.comparisons.end(), [](const BaselineComparison& c) {
     return c.group_label == "lines" && c.scope == "all" && c.metric == "pcf_mse";
