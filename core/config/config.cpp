@@ -1,5 +1,6 @@
 #include "core/config/config.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -219,6 +220,42 @@ std::string get_string(const json& j, const std::string& key, const std::string&
 bool get_bool(const json& j, const std::string& key, const std::string& key_path) {
   if (!j.contains(key) || !j[key].is_boolean()) throw config_error(join(key_path, key), "expected a boolean");
   return j[key].get<bool>();
+}
+
+std::vector<uint64_t> parse_number_list(const json& value, const std::string& key, const std::string& noun) {
+  std::vector<uint64_t> out;
+  std::set<uint64_t> seen;
+  auto add = [&](uint64_t s) {
+    if (seen.insert(s).second) out.push_back(s);
+  };
+  const json list = value.is_array() ? value : json::array({value});
+  for (size_t i = 0; i < list.size(); ++i) {
+    const auto& s = list[i];
+    const std::string kp = key + "[" + std::to_string(i) + "]";
+    if (s.is_number_unsigned() || (s.is_number_integer() && s.get<long long>() >= 0)) {
+      add(s.get<uint64_t>());
+      continue;
+    }
+    const auto bad = [&] {
+      return config_error(kp, "expected a " + noun + " >= 0, a range \"first-last\" (at most 100000 " + noun +
+                              "s) or a list of both separated by commas (\"95,97-98\")");
+    };
+    if (!s.is_string()) throw bad();
+    const std::string text = s.get<std::string>();
+    for (size_t a = 0, comma; a <= text.size(); a = comma + 1) {  // "95,97-98": each part a seed or a range
+      comma = std::min(text.find(',', a), text.size());
+      const std::string part = text.substr(a, comma - a);
+      unsigned long long first = 0, last = 0;
+      char tail = 0;
+      const int n = std::sscanf(part.c_str(), "%llu-%llu%c", &first, &last, &tail);
+      if (n == 1 && part.find_first_not_of("0123456789") == std::string::npos) last = first;
+      else if (n != 2 || part.find_first_not_of("0123456789-") != std::string::npos) throw bad();
+      if (last < first || last - first > 100000) throw bad();
+      for (auto v = first; v <= last; ++v) add(v);
+    }
+  }
+  if (out.empty()) throw config_error(key, "no " + noun + "s");
+  return out;
 }
 
 }  // namespace ppsynth

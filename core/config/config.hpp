@@ -4,6 +4,7 @@
 // merge, everything else replaces). Defaults are declared once, by the part that uses them
 // (see core/registry.hpp); apply_defaults() merges user keys over them and refuses what it
 // does not know, naming the key path, e.g. "config key 'losses[1].weight': expected a number".
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -41,5 +42,10 @@ double get_number(const json& j, const std::string& key, const std::string& key_
 int get_int(const json& j, const std::string& key, const std::string& key_path);
 std::string get_string(const json& j, const std::string& key, const std::string& key_path);
 bool get_bool(const json& j, const std::string& key, const std::string& key_path);
+
+// A list of whole numbers >= 0 (a sweep's seeds, gather's stages): 95, "95", "96-99",
+// "95,97-98", [95, "97-98"] -> in order, without repeats. Errors name `key` (and the element)
+// and call each number a `noun` ("seed").
+std::vector<uint64_t> parse_number_list(const json& value, const std::string& key, const std::string& noun);
 
 }  // namespace ppsynth

@@ -121,42 +121,6 @@ std::string json_id(const nlohmann::json& value) {
   return std::string(buf, 12);
 }
 
-std::vector<uint64_t> parse_seeds(const nlohmann::json& seeds, const std::string& key) {
-  std::vector<uint64_t> out;
-  std::set<uint64_t> seen;
-  auto add = [&](uint64_t s) {
-    if (seen.insert(s).second) out.push_back(s);
-  };
-  const nlohmann::json list = seeds.is_array() ? seeds : nlohmann::json::array({seeds});
-  for (size_t i = 0; i < list.size(); ++i) {
-    const auto& s = list[i];
-    const std::string kp = key + "[" + std::to_string(i) + "]";
-    if (s.is_number_unsigned() || (s.is_number_integer() && s.get<long long>() >= 0)) {
-      add(s.get<uint64_t>());
-      continue;
-    }
-    const auto bad = [&] {
-      return config_error(kp, "expected a seed >= 0, a range \"first-last\" (at most 100000 seeds) or a list of "
-                              "both separated by commas (\"95,97-98\")");
-    };
-    if (!s.is_string()) throw bad();
-    const std::string text = s.get<std::string>();
-    for (size_t a = 0, comma; a <= text.size(); a = comma + 1) {  // "95,97-98": each part a seed or a range
-      comma = std::min(text.find(',', a), text.size());
-      const std::string part = text.substr(a, comma - a);
-      unsigned long long first = 0, last = 0;
-      char tail = 0;
-      const int n = std::sscanf(part.c_str(), "%llu-%llu%c", &first, &last, &tail);
-      if (n == 1 && part.find_first_not_of("0123456789") == std::string::npos) last = first;
-      else if (n != 2 || part.find_first_not_of("0123456789-") != std::string::npos) throw bad();
-      if (last < first || last - first > 100000) throw bad();
-      for (auto v = first; v <= last; ++v) add(v);
-    }
-  }
-  if (out.empty()) throw config_error(key, "no seeds");
-  return out;
-}
-
 SweepManifest expand_sweep_spec(const nlohmann::json& user, const std::string& source, const std::string& base_dir) {
   nlohmann::json spec = apply_defaults(spec_defaults(), user, "");
   spec["grid"].erase("*");  // the open-object marker of the defaults, when no grid was given
@@ -171,7 +135,7 @@ SweepManifest expand_sweep_spec(const nlohmann::json& user, const std::string& s
   m.resources.time_minutes = get_int(res, "time_minutes", "resources");
   if (m.resources.cpus < 1 || m.resources.memory_mb < 1 || m.resources.time_minutes < 1)
     throw config_error("resources", "cpus, memory_mb and time_minutes must be >= 1");
-  const auto seeds = parse_seeds(spec["seeds"].is_null() ? nlohmann::json(95) : spec["seeds"], "seeds");
+  const auto seeds = parse_number_list(spec["seeds"].is_null() ? nlohmann::json(95) : spec["seeds"], "seeds", "seed");
   const bool quick = spec["quick"].get<bool>();
   std::vector<std::string> common;
   for (const auto& s : spec["set"]) {

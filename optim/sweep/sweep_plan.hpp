@@ -75,8 +75,5 @@ SweepManifest load_sweep(const std::string& dir);
 // A short stable hash of a JSON value (FNV-1a 64 of its compact dump, 12 hex digits).
 std::string json_id(const nlohmann::json& value);
 
-// 95, "95", "96-99", "95,97-98", [95, "97-98"] -> seeds, in order, without repeats; key names the
-// config key.
-std::vector<uint64_t> parse_seeds(const nlohmann::json& seeds, const std::string& key);
 
 }  // namespace ppsynth

@@ -79,6 +79,17 @@ TEST_CASE("a sweep planned, interrupted, run by local tasks, followed and gather
   CHECK(fs::exists(d / "g" / "index.html"));
   CHECK(std::count(gather.output.begin(), gather.output.end(), '\n') > 10);
   CHECK(run_ppsynth("sweep status " + (d / "g").string()).status == 2);  // not a sweep
+  // --stage: a range, before or after the directories; a bad list or a stage no run passed exits 2.
+  auto staged = run_ppsynth("gather --stage 1-2 " + dir);
+  INFO(staged.output);
+  REQUIRE(staged.status == 0);
+  CHECK_THAT(staged.output, Catch::Contains("\nlines @ stage 1\n") && Catch::Contains("\nlines @ stage 2\n"));
+  auto bad_list = run_ppsynth("gather " + dir + " --stage 1-x");
+  CHECK(bad_list.status == 2);
+  CHECK_THAT(bad_list.output, Catch::Contains("--stage[0]") && Catch::Contains("expected a stage"));
+  auto not_passed = run_ppsynth("gather " + dir + " --stage 999");
+  CHECK(not_passed.status == 2);
+  CHECK_THAT(not_passed.output, Catch::Contains("--stage 999: no gathered run has passed that stage"));
 
   // A reference output belongs to one exemplar: with runs of two, a plain file is refused, and
   // a named one is compared with that exemplar's runs only.

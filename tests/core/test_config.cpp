@@ -69,3 +69,18 @@ TEST_CASE("registry creates by name with defaults and refuses duplicates", "[con
   CHECK_THROWS_WITH(ThingRegistry::instance().create(json{{"type", "seven"}, {"w", 1}}, "thing"), Catch::Contains("thing.w"));
   CHECK_THROWS_AS(ThingRegistry::instance().add("seven", ThingRegistry::Entry{}), std::logic_error);
 }
+
+TEST_CASE("number lists (seeds, stages): numbers and ranges, in order, without repeats", "[config]") {
+  CHECK(parse_number_list(json::array({95, "96-98", 95}), "seeds", "seed") == std::vector<uint64_t>{95, 96, 97, 98});
+  CHECK(parse_number_list(json("7-7"), "seeds", "seed") == std::vector<uint64_t>{7});
+  CHECK(parse_number_list(json("95,97-98"), "seeds", "seed") == std::vector<uint64_t>{95, 97, 98});
+  CHECK(parse_number_list(json("95"), "seeds", "seed") == std::vector<uint64_t>{95});
+  CHECK_THROWS_WITH(parse_number_list(json("95,x"), "seeds", "seed"), Catch::Contains("seeds[0]"));
+  CHECK_THROWS_WITH(parse_number_list(json("9--3"), "seeds", "seed"), Catch::Contains("seeds[0]"));
+  CHECK_THROWS_WITH(parse_number_list(json::array({"9-3"}), "seeds", "seed"), Catch::Contains("seeds[0]"));
+  CHECK_THROWS_WITH(parse_number_list(json::array({-1}), "seeds", "seed"), Catch::Contains("seeds[0]"));
+  CHECK_THROWS_WITH(parse_number_list(json::array(), "seeds", "seed"), Catch::Contains("no seeds"));
+  // The errors call the numbers what they are.
+  CHECK_THROWS_WITH(parse_number_list(json("1-x"), "--stage", "stage"), Catch::Contains("--stage[0]") && Catch::Contains("expected a stage >= 0"));
+}
+

@@ -47,18 +47,6 @@ std::vector<std::string> ids(const SweepManifest& m) {
 
 }  // namespace
 
-TEST_CASE("seeds: numbers and ranges, in order, without repeats", "[sweep]") {
-  CHECK(parse_seeds(json::array({95, "96-98", 95}), "seeds") == std::vector<uint64_t>{95, 96, 97, 98});
-  CHECK(parse_seeds(json("7-7"), "seeds") == std::vector<uint64_t>{7});
-  CHECK(parse_seeds(json("95,97-98"), "seeds") == std::vector<uint64_t>{95, 97, 98});
-  CHECK(parse_seeds(json("95"), "seeds") == std::vector<uint64_t>{95});
-  CHECK_THROWS_WITH(parse_seeds(json("95,x"), "seeds"), Catch::Contains("seeds[0]"));
-  CHECK_THROWS_WITH(parse_seeds(json("9--3"), "seeds"), Catch::Contains("seeds[0]"));
-  CHECK_THROWS_WITH(parse_seeds(json::array({"9-3"}), "seeds"), Catch::Contains("seeds[0]"));
-  CHECK_THROWS_WITH(parse_seeds(json::array({-1}), "seeds"), Catch::Contains("seeds[0]"));
-  CHECK_THROWS_WITH(parse_seeds(json::array(), "seeds"), Catch::Contains("no seeds"));
-}
-
 TEST_CASE("a sweep spec expands into rows with stable ids", "[sweep]") {
   const auto m = expand_sweep_spec(tiny_spec({{"method.max_iterations", {5, 7}}}), "spec", "");
   REQUIRE(m.rows.size() == 6);  // 3 seeds x 2 grid points

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "apps/ppsynth/command.hpp"
+#include "core/config/config.hpp"
 #include "core/error.hpp"
 #include "optim/sweep/gather.hpp"
 
@@ -17,7 +18,7 @@ struct Opts {
   std::vector<std::string> references, baselines;
   double bound = 1.25;
   std::string protocol;
-  std::vector<int> stages;
+  std::vector<std::string> stages;
   bool force = false;
 };
 
@@ -37,16 +38,21 @@ ppsynth::app::RunFn setup(CLI::App& cmd) {
                  "evaluate every run's output (and reference) again with this protocol instead of reading its metrics.json: "
                  "quadrants (the paper's), crops (20 random exemplar-sized crops: the pattern away from the output's frame) or auto");
   cmd.add_option("--stage", o->stages,
-                 "also each run's points after stage N (its snapshots/stageNN.txt; unfinished runs once past it) as a group "
-                 "\"<label> @ stage N\", e.g. the published stages' output inside runs that append a border relax, for "
-                 "--baseline (repeatable)");
+                    "also each run's points after stage N (its snapshots/stageNN.txt; unfinished runs once past it) as a group "
+                    "\"<label> @ stage N\", e.g. the published stages' output inside runs that append a border relax, for "
+                    "--baseline; N, FIRST-LAST or a list (\"1-4,16\"); repeatable")
+      ->allow_extra_args(false);
   return [o]() -> int {
     ppsynth::GatherOptions opts;
     if (!o->protocol.empty()) opts.protocol = ppsynth::parse_patch_protocol(o->protocol);
     opts.baselines = o->baselines;
     for (const auto& r : o->references) opts.references.push_back(ppsynth::parse_reference(r));
     opts.bound = o->bound;
-    opts.stages = o->stages;
+    if (!o->stages.empty())
+      for (const uint64_t stage : ppsynth::parse_number_list(nlohmann::json(o->stages), "--stage", "stage")) {
+        if (stage > 100000) throw ppsynth::InputError("--stage " + std::to_string(stage) + ": no plan has that many stages");
+        opts.stages.push_back(static_cast<int>(stage));
+      }
     const auto r = ppsynth::gather_runs(o->dirs, opts);
     if (r.runs.empty()) throw ppsynth::InputError("gather: no finished run under the given directories");
     std::cout << ppsynth::format_gather(r);
