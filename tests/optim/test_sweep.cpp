@@ -39,6 +39,14 @@ json tiny_spec(json grid = json::object()) {
           {"grid", grid}};
 }
 
+// The spec planned into `dir` and every row run there, in process.
+SweepManifest planned_and_run(const json& spec, const std::string& dir) {
+  plan_sweep(expand_sweep_spec(spec, "spec", ""), dir);
+  const SweepManifest m = load_sweep(dir);
+  for (size_t i = 0; i < m.rows.size(); ++i) REQUIRE(run_sweep_task(dir, i, nullptr) == RowState::Done);
+  return m;
+}
+
 std::vector<std::string> ids(const SweepManifest& m) {
   std::vector<std::string> v;
   for (const auto& r : m.rows) v.push_back(r.id);
@@ -115,9 +123,7 @@ TEST_CASE("planning again keeps unchanged rows; only a sweep's directory is plan
 TEST_CASE("tasks run rows, skip finished ones, and gather pools seeds against a reference", "[sweep]") {
   const auto d = test::scratch_dir("sweep_tasks");
   const std::string dir = (d / "sw").string();
-  plan_sweep(expand_sweep_spec(tiny_spec(), "spec", ""), dir);
-  const auto m = load_sweep(dir);
-  for (size_t i = 0; i < m.rows.size(); ++i) CHECK(run_sweep_task(dir, i, nullptr) == RowState::Done);
+  const auto m = planned_and_run(tiny_spec(), dir);
   for (const auto& s : sweep_status(dir, m)) CHECK(s.state == RowState::Done);
   const auto before = fs::last_write_time(fs::path(dir) / m.rows[0].dir / "output.txt");
   CHECK(run_sweep_task(dir, 0, nullptr) == RowState::Done);  // done already: not run again
@@ -243,10 +249,8 @@ TEST_CASE("the SLURM job script: one array task per run that is not done", "[swe
 TEST_CASE("gather compares groups with a baseline: ratio of medians and a bootstrap interval", "[sweep]") {
   const auto d = test::scratch_dir("sweep_baseline");
   const std::string dir = (d / "sw").string();
-  plan_sweep(expand_sweep_spec(tiny_spec({{"method.quick.max_iterations", {1, 3}}}), "spec", ""), dir);
-  const auto m = load_sweep(dir);
+  const auto m = planned_and_run(tiny_spec({{"method.quick.max_iterations", {1, 3}}}), dir);
   REQUIRE(m.rows.size() == 6);
-  for (size_t i = 0; i < m.rows.size(); ++i) REQUIRE(run_sweep_task(dir, i, nullptr) == RowState::Done);
   GatherOptions o;
   o.baselines = {"lines [method.quick.max_iterations=1]"};
   const GatherResult g = gather_runs({dir}, o);
@@ -368,9 +372,7 @@ TEST_CASE("gather compares groups with a baseline: ratio of medians and a bootst
 TEST_CASE("gather takes each run's points after a stage as a group of its own", "[sweep]") {
   const auto d = test::scratch_dir("sweep_stage");
   const std::string dir = (d / "sw").string();
-  plan_sweep(expand_sweep_spec(tiny_spec(), "spec", ""), dir);
-  const auto m = load_sweep(dir);
-  for (size_t i = 0; i < m.rows.size(); ++i) REQUIRE(run_sweep_task(dir, i, nullptr) == RowState::Done);
+  const auto m = planned_and_run(tiny_spec(), dir);
   auto row_dir = [&](size_t i) { return (fs::path(dir) / m.rows[i].dir).string(); };
   int last = 0;  // the plan's stage count, from the snapshots a run wrote
   while (fs::exists(row_dir(0) + "/snapshots/stage" + std::string(last + 1 < 10 ? "0" : "") + std::to_string(last + 1) + ".txt")) ++last;
