@@ -18,6 +18,8 @@ SynthesisPlan class_sigma_plan(const PointSet& exemplar, const GaborSettings& s,
   SynthesisPlan plan;
   SynthesisPlan relax_after_all;  // method.border_relax.after "all": appended after every class
   const int K = exemplar.num_classes();
+  // The neighbour count of a stage whose targets hold `points` exemplar points.
+  auto k_for = [&](size_t points) { return s.k_per_stage ? static_cast<int>(std::min<size_t>(s.k, points)) : s.k; };
   for (int st = 0; st < K; ++st) {
     const int cls = s.class_order[st];
     const std::vector<int> active(s.class_order.begin(), s.class_order.begin() + st + 1);
@@ -32,7 +34,7 @@ SynthesisPlan class_sigma_plan(const PointSet& exemplar, const GaborSettings& s,
       stage.group = st;
       stage.sigma_index = static_cast<int>(j);
       stage.sigma = s.sigmas[j];
-      stage.k = s.k_per_stage ? static_cast<int>(std::min<size_t>(s.k, active_points)) : s.k;
+      stage.k = k_for(active_points);
       stage.target_classes = active;
       stage.own_class = cls;
       stage.moving = out_index[cls];
@@ -49,7 +51,7 @@ SynthesisPlan class_sigma_plan(const PointSet& exemplar, const GaborSettings& s,
         // measured against the targets of all classes (the last class's stages measure them).
         stage.group = K + st;
         stage.target_classes = s.class_order;
-        stage.k = s.k_per_stage ? static_cast<int>(std::min<size_t>(s.k, exemplar.size())) : s.k;
+        stage.k = k_for(exemplar.size());
         stage.frozen.clear();
         for (int other : s.class_order)
           if (other != cls) stage.frozen.insert(stage.frozen.end(), out_index[other].begin(), out_index[other].end());
