@@ -44,7 +44,8 @@ struct GaborSettings {
   enum class Measure { grid, tiles, rolled };
   Measure measure = Measure::grid;
   bool measure_tiles() const { return measure == Measure::tiles; }
-  // method.border_relax: the relax stage after each class's sigmas (0: none, the paper's);
+  // method.border_relax: the relax stage after each class's sigmas (0: none, the paper's;
+  // null or "auto", the default, resolves to 60 on the u x u square measured as one grid, else 0);
   // its band in output units (the unit square) and Adam's rate (0: the finest sigma's); a
   // class is relaxed when its share within 1 % of the edge exceeds relax_parked x uniform's
   // or an earlier class was relaxed (0: always).

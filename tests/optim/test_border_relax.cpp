@@ -1,7 +1,8 @@
 // method.border_relax (optim/stage_plan.hpp): after each class's sigma stages on the u x u
 // torus, a stage that moves only that class's points within the band of the grid's edge, on
 // the rolled grid. It must leave every other point where the stage found it, move the band,
-// resume bit for bit, and be refused where there is no grid edge.
+// resume bit for bit, and be refused where there is no grid edge. By default ("auto") it runs
+// wherever there is one; configs/runs keep the published border.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/config/config.hpp"
 #include "core/metrics/border.hpp"
 #include "core/metrics/nearest_neighbor.hpp"
 #include "core/output_shape.hpp"
@@ -287,6 +289,45 @@ TEST_CASE("method.border_relax is refused where there is no grid edge, naming th
   json bad_band = relax;
   bad_band["border_relax"]["band"] = 0;
   CHECK_THROWS_WITH(method_params(bad_band), Catch::Contains("method.border_relax.band"));
-  // Off (0 iterations, the default) it is the paper's plan, wherever the output goes.
-  CHECK(resolve_gabor_settings(method_params(json{{"type", "gabor"}}), ex, rect, false).relax_iterations == 0);
+  json fraction = relax;
+  fraction["border_relax"]["iterations"] = 2.5;
+  CHECK_THROWS_WITH(resolve_gabor_settings(method_params(fraction), ex, square, false), Catch::Contains("method.border_relax.iterations"));
+  json word = relax;
+  word["border_relax"]["iterations"] = "many";
+  CHECK_THROWS_WITH(resolve_gabor_settings(method_params(word), ex, square, false), Catch::Contains("method.border_relax.iterations"));
+  // Off (0 iterations, as configs/runs set it) it is the paper's plan, wherever the output goes.
+  json off = relax;
+  off["border_relax"]["iterations"] = 0;
+  CHECK(resolve_gabor_settings(method_params(off), ex, square, false).relax_iterations == 0);
+  CHECK(resolve_gabor_settings(method_params(off), ex, rect, false).relax_iterations == 0);
+}
+
+TEST_CASE("by default (null, \"auto\") the border is relaxed on the u x u square measured as one grid, and nowhere else", "[optim][border_relax]") {
+  const PointSet ex = test::small_exemplar(1, false);
+  OutputShape square;
+  square.upscale = 2;
+  const json plain = {{"type", "gabor"}};
+  CHECK(method_params(plain)["border_relax"]["iterations"].is_null());
+  json named = plain;
+  named["border_relax"] = {{"iterations", "auto"}};
+  CHECK(resolve_gabor_settings(method_params(named), ex, square, false).relax_iterations == 60);
+  CHECK(resolve_gabor_settings(method_params(plain), ex, square, false).relax_iterations == 60);
+  CHECK(resolve_gabor_settings(method_params(plain), ex, square, true).relax_iterations == 4);  // --quick's cap
+  // No fixed grid edge: a rectangle (output.border instead), tiles, rolled, maps of other terms.
+  const OutputShape rect = resolve_output_shape(resolve_run_config(json{{"output", {{"size", {2, 2}}}}}, {}), ex);
+  CHECK(resolve_gabor_settings(method_params(plain), ex, rect, false).relax_iterations == 0);
+  for (const char* measure : {"tiles", "rolled"}) {
+    json m = plain;
+    m["measure"] = measure;
+    CHECK(resolve_gabor_settings(method_params(m), ex, square, false).relax_iterations == 0);
+  }
+  json own = plain;
+  own["map_terms"] = {{"class_own", {{"weight", 1}}}};
+  CHECK(resolve_gabor_settings(method_params(own), ex, square, false).relax_iterations == 0);
+  // The shipped paper configs keep the published border.
+  for (const char* name : {"lines", "lemon_4c_v2", "poisson_n64c2_point", "ps_Tree1"}) {
+    INFO(name);
+    const json run = load_config(std::string(PPSYNTH_SOURCE_DIR) + "/configs/runs/" + name + ".json");
+    CHECK(run["method"]["border_relax"]["iterations"] == 0);
+  }
 }

@@ -64,6 +64,7 @@ TEST_CASE("a stage stopped by the pattern rule resumes to the same stopping iter
   spec["quick"]["max_iterations"] = 80;
   spec["grid"] = {{"per_sigma", true}};
   spec["convergence"] = {{"type", "pattern"}, {"window", 10}, {"check_every", 5}, {"threshold", 0.5}, {"min_iterations", 0}};
+  spec["border_relax"] = {{"iterations", 0}};  // the sigma stages only
   const PointSet ex = test::small_exemplar(1, false);
   const Run whole = synthesize(ex, nullptr, nullptr, spec);
   REQUIRE(whole.stats["stages"].size() == 2);
@@ -88,6 +89,7 @@ TEST_CASE("a stage that ends on its best iterate ends there, and resumes to the 
   spec["quick"]["max_iterations"] = 60;
   spec["quick"]["num_sigmas"] = 1;
   spec["convergence"] = {{"type", "pattern"}, {"window", 1000}, {"check_every", 5}, {"min_iterations", 0}};
+  spec["border_relax"] = {{"iterations", 0}};  // no relax after it: the stage's end is the output
   const PointSet ex = test::small_exemplar(1, false);
   const Run last = synthesize(ex, nullptr, nullptr, spec);
   spec["convergence"]["end_on"] = "best";

@@ -46,8 +46,12 @@ TEST_CASE("the example of docs/ARCHITECTURE.md builds, runs, and equals synthesi
   options.quick = true;
   const SynthesisResult in_memory = synthesize(exemplar, spec, options);
   require_same_points(from_example, in_memory.output);
-  CHECK(in_memory.stages.size() == 2);  // --quick: two sigmas, one class
-  for (const auto& s : in_memory.stages) CHECK((s.iterations >= 1 && s.iterations <= 20));
+  // --quick: two sigmas of one class, then the border relax (the default: at most --quick's
+  // 4 iterations, 0 when the class does not park).
+  REQUIRE(in_memory.stages.size() == 3);
+  for (int i : {0, 1}) CHECK((in_memory.stages[i].iterations >= 1 && in_memory.stages[i].iterations <= 20));
+  CHECK(in_memory.stages[2].stage == "border relax");
+  CHECK((in_memory.stages[2].iterations >= 0 && in_memory.stages[2].iterations <= 4));
   CHECK(in_memory.metrics["all"]["pcf_mse"].is_number());
   CHECK(in_memory.initialization.size() == 80);
 }
