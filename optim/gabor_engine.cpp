@@ -6,7 +6,7 @@
 #include <numeric>
 #include <sstream>
 
-#include <spdlog/spdlog.h>
+#include <spdlog/fmt/fmt.h>
 
 #include "core/memory_budget.hpp"
 #include "core/metrics/border.hpp"
@@ -372,9 +372,6 @@ void GaborEngine::enter_stage(const Stage& stage) {
     // A class the relax leaves alone (method.border_relax.parked) keeps every point where it is.
     relax_mask_ = relax_this_class() ? border_band()
                                      : torch::zeros({static_cast<int64_t>(moving_idx_.size()), 1}, torch::kBool);
-    if (state_.iteration == 0)  // why a relax moves nothing, where the user watches
-      spdlog::info("{}: {:.2f} x uniform points' share within 1 % of the edge (method.border_relax.parked {:g}): {}", stage.label,
-                   relax_parked_, s_.relax_parked, relax_mask_.any().item<bool>() ? "relaxing its band" : "nothing to move");
   }
   json optimizer = p_["optimizer"];
   if (stage.border_relax && s_.relax_lr > 0) optimizer["lr"] = json::array({s_.relax_lr});
@@ -384,7 +381,13 @@ void GaborEngine::enter_stage(const Stage& stage) {
   // Resumed inside the stage: its clock goes on from the last iteration recorded before.
   if (state_.iteration > 0 && !state_.history.empty() && state_.history.back().stage == state_.stage)
     stage_start_ -= std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(state_.history.back().seconds));
-  if (state_.iteration == 0) ctx_.stage_begin(event(stage));
+  if (state_.iteration == 0) {
+    ProgressEvent begin = event(stage);
+    if (stage.border_relax)  // why a relax moves nothing, where the user watches
+      begin.note = fmt::format("{:.2f} x uniform points' share within 1 % of the edge (method.border_relax.parked {:g}): {}",
+                               relax_parked_, s_.relax_parked, relax_mask_.any().item<bool>() ? "relaxing its band" : "nothing to move");
+    ctx_.stage_begin(begin);
+  }
 }
 
 int GaborEngine::iteration_cap(const Stage& stage) const {

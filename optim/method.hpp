@@ -38,6 +38,9 @@ struct ProgressEvent {
   // not the canvas: a canvas per window would make the snapshots grow with the area squared
   // (1.1 GB for 100,000 points of lines, 256 windows).
   Domain window_grid;
+  // At a stage's beginning: why it does what it does, where the stage decides that itself
+  // (the border relax: how much its class parks, and whether its band moves). Empty otherwise.
+  std::string note;
 };
 
 class SynthesisObserver {

@@ -24,7 +24,7 @@ std::string fmt_duration(double s) {
 }  // namespace
 
 void ProgressLog::on_stage_begin(const ProgressEvent& e) {
-  spdlog::info("[{}] stage {}/{}: {}", name_, e.stage_index + 1, e.stage_count, e.stage);
+  spdlog::info("[{}] stage {}/{}: {}{}{}", name_, e.stage_index + 1, e.stage_count, e.stage, e.note.empty() ? "" : ": ", e.note);
 }
 
 void ProgressLog::on_iteration(const ProgressEvent& e) {

@@ -35,10 +35,11 @@ json relaxed_method(int iterations, double separation = 1.0, double parked = 0) 
               {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 5}, {"num_sigmas", 2}}}};
 }
 
-// The output at every stage's end, with the stage's label.
+// The output at every stage's end, with the stage's label; the note of every stage's beginning.
 struct StageEnds : SynthesisObserver {
-  std::vector<std::string> labels;
+  std::vector<std::string> labels, notes;
   std::vector<PointSet> points;
+  void on_stage_begin(const ProgressEvent& e) override { notes.push_back(e.note); }
   void on_stage_end(const ProgressEvent& e, const PointSet& p) override {
     labels.push_back(e.stage);
     points.push_back(p);
@@ -229,6 +230,11 @@ TEST_CASE("a class is relaxed when it or an earlier class parks; a run where non
   CHECK(at_stats["stages"][2]["parked_over_uniform"].get<double>() == Approx(parked));
   CHECK(at_stats["stages"][2]["iterations"] == 0);
   CHECK(at_stats["stages"][2]["relaxed"] == false);
+  // The relax stage's beginning says it to the progress log; a sigma stage has no note.
+  REQUIRE(at.notes.size() == 6);
+  CHECK(at.notes[1].empty());
+  CHECK_THAT(at.notes[2], Catch::Contains("x uniform points' share within 1 % of the edge") && Catch::EndsWith("nothing to move"));
+  CHECK_THAT(under.notes[2], Catch::EndsWith("relaxing its band"));
   CHECK_FALSE(at_stats["stages"][1].contains("parked_over_uniform"));
   // Class 1 parks less than the bound in both runs; once class 0 was relaxed, it is relaxed
   // too (its pairs with class 0 across the seam were never measured before), else not.
