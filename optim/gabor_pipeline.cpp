@@ -80,8 +80,8 @@ json gabor_defaults() {
       // `iterations` null or "auto" (the default: issue 20's clean border, the published one
       // kept as an option): 60 on the u x u square measured as one grid without map_terms, 0 where
       // there is no fixed grid edge to relax (rectangles take output.border instead; "tiles"
-      // and "rolled" move the edge). 0: the paper's border, as configs/runs and configs/paper
-      // set it to reproduce the paper.
+      // and "rolled" move the edge). 0: the paper's border, as the shipped configs/runs set it
+      // to reproduce the paper (configs/paper runs them).
       {"border_relax", {{"iterations", nullptr}, {"band", 1.0}, {"lr", nullptr}, {"separation", 1.0}, {"parked", 1.5}, {"after", "all"}}},
       // Rectangle outputs ("output": {"size"} or {"points"}) run window by window
       // (optim/window_plan.hpp): windows of at most `pixels` grid positions across; a margin
