@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/config/param_bounds.hpp"
 #include "core/memory_budget.hpp"
 #include "core/metrics/nearest_neighbor.hpp"
 #include "models/feature_grid.hpp"
@@ -184,11 +185,12 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
     const json& r = p["border_relax"];
     const json& iterations = r["iterations"];
     const bool relax_auto = iterations.is_null() || iterations == "auto";
-    if (!relax_auto && !(iterations.is_number_integer() && iterations.get<int64_t>() >= 0 && iterations.get<int64_t>() <= 1000000000))
-      throw config_error("method.border_relax.iterations", "expected null (\"auto\") or a whole number in [0, 1000000000], got " + iterations.dump());
+    // A count is bounded as every other parameter is; gabor_bounds() cannot hold it, since it
+    // would refuse "auto".
+    if (!relax_auto) check_bounds(r, json{{"iterations", "int [0, 1000000000]"}}, "method.border_relax");
     // Where "auto" relaxes: the paper's square, its whole grid measured, no maps of other terms.
     const bool has_grid_edge = !shape.rectangle && s.measure == GaborSettings::Measure::grid && p["map_terms"].empty();
-    s.relax_iterations = relax_auto ? (has_grid_edge ? k_auto_relax_iterations : 0) : iterations.get<int>();
+    s.relax_iterations = relax_auto ? (has_grid_edge ? k_auto_relax_iterations : 0) : get_int(r, "iterations", "method.border_relax");
     if (quick) s.relax_iterations = std::min(s.relax_iterations, s.max_iterations);
     s.relax_band = get_number(r, "band", "method.border_relax") * s.mean_nn_distance / s.upscale;
     s.relax_parked = get_number(r, "parked", "method.border_relax");
