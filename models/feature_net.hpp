@@ -17,6 +17,9 @@ using Features = std::vector<torch::Tensor>;  // one 1 x C_l x H_l x W_l tensor 
 class FeatureNet : public torch::nn::Module {
  public:
   virtual Features forward(const torch::Tensor& maps) = 0;
+  // What the net decided when it was made that its config left open (the "random" net's
+  // precision under "auto", and why), merged into the resolved config a run records.
+  virtual nlohmann::json choices() const { return nlohmann::json::object(); }
 };
 
 // Created with the number of input channels and the run's seed (for random weights).

@@ -1,5 +1,7 @@
 #include "models/random_filter_net.hpp"
 
+#include "models/network_precision.hpp"
+
 namespace ppsynth {
 
 namespace {
@@ -63,8 +65,8 @@ RandomFilterNet::RandomFilterNet(RandomFilterNetOptions o) : opt_(o) {
   }
   freeze(*this);
   if (o.dtype != torch::kFloat32) this->to(o.dtype);
-  // The fast path in float32 and in bfloat16 (oneDNN's channels-last bf16 convolutions run on
-  // the CPU's AVX512_BF16 units: ~2x the float32 rate on the bench's 120 -> 120 7x7).
+  // The fast path in float32 and in bfloat16 (oneDNN's channels-last bf16 convolutions, on the
+  // CPU's bf16 units where it has them).
   if (o.fast_cpu && (o.dtype == torch::kFloat32 || o.dtype == torch::kBFloat16))
     for (auto& c : convs_) {
       w_cl_.push_back(c->weight.contiguous(kChannelsLast));
@@ -89,6 +91,10 @@ torch::Tensor RandomFilterNet::activate(const torch::Tensor& x, bool fast) const
   // its output for backward, and it saves a full-resolution buffer per layer.
   if (opt_.relu) y = torch::relu_(y);
   return y;
+}
+
+nlohmann::json RandomFilterNet::choices() const {
+  return {{"precision", opt_.dtype == torch::kBFloat16 ? "bfloat16" : "float32"}, {"precision_reason", opt_.precision_reason}};
 }
 
 Features RandomFilterNet::forward(const torch::Tensor& maps) {
@@ -127,10 +133,10 @@ PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "random",
                    o.instance_norm = p["instance_norm"];
                    o.relu = p["relu"];
                    o.seed = seed;
-                   const std::string prec = p["precision"].get<std::string>();
-                   if (prec == "bfloat16") o.dtype = torch::kBFloat16;
-                   else if (prec != "float32")
-                     throw ppsynth::config_error("feature_net.precision", "expected \"float32\" or \"bfloat16\", got \"" + prec + "\"");
+                   const ppsynth::NetworkPrecision prec =
+                       ppsynth::resolve_network_precision(p["precision"].get<std::string>(), "method.feature_net.precision");
+                   o.dtype = prec.dtype;
+                   o.precision_reason = prec.reason;
                    if (o.channels < 1) throw ppsynth::config_error("feature_net.channels", "must be >= 1");
                    if (o.kernel_size < 1 || o.kernel_size % 2 == 0)
                      throw ppsynth::config_error("feature_net.kernel_size", "must be odd and >= 1");

@@ -20,10 +20,11 @@ struct RandomFilterNetOptions {
   bool instance_norm = true;
   bool relu = true;
   uint64_t seed = 95;
-  // Arithmetic of the network: float32 (faithful) or bfloat16 (a speed knob: oneDNN's bf16
-  // convolutions are ~2x faster on CPUs with AVX512_BF16; features return as float32, so the
-  // losses stay in float32). Weights are drawn in float32 from the seed either way.
+  // Arithmetic of the network: float32 (faithful) or bfloat16 (a speed knob where the CPU has
+  // bf16 units; models/network_precision.hpp chooses). Features return as float32, so the
+  // losses stay in float32. Weights are drawn in float32 from the seed either way.
   torch::Dtype dtype = torch::kFloat32;
+  std::string precision_reason;  // how the precision was chosen (choices())
   // CPU fast path for float32 and bfloat16, batch 1 (the synthesis): channels-last
   // activations and an input-gradient-only backward (see random_filter_net.cpp). Same
   // features and gradients as the plain path within the precision's rounding
@@ -35,6 +36,7 @@ class RandomFilterNet : public FeatureNet {
  public:
   explicit RandomFilterNet(RandomFilterNetOptions options);
   Features forward(const torch::Tensor& maps) override;
+  nlohmann::json choices() const override;
   const RandomFilterNetOptions& options() const { return opt_; }
 
  private:

@@ -296,6 +296,7 @@ void GaborPipeline::set_grid(int sigma_index) {
 
 void GaborPipeline::redraw_network(uint64_t seed) {
   net_ = FeatureNetRegistry::instance().create(s_.feature_net, "method.feature_net", in_channels_, seed, &resolved_net_);
+  resolved_net_.update(net_->choices());
 }
 
 void GaborPipeline::set_targets(const torch::Tensor& ex_points, const torch::Tensor& ex_weights, double sigma) {

@@ -3,48 +3,65 @@
 #include "core/config/config.hpp"
 #include "core/config/defaults_catalog.hpp"
 #include "core/error.hpp"
+#include "core/processor.hpp"
 
 namespace ppsynth {
 
 nlohmann::json presets() {
   using json = nlohmann::json;
   return json{
-      // Issue 21: the Gabor method's quality in the least time on a CPU, measured over seeds
-      // 95-99 on lines, poisson_n64c2_point, Tree1, Cattles and Fluid1 against the default
-      // (docs/performance.md, "Time to quality"; lines: median 69 s over 5 seeds instead of 745 s idle):
-      //   - bfloat16 network on the channels-last path (oneDNN's bf16 convolutions, AMX
-      //     where the CPU has it: 0.18 s instead of 0.97 s per iteration on lines);
-      //   - per-sigma grids: the coarse sigmas on coarser grids, the finest on the full one;
-      //   - the "pattern" stopping rule: a sigma stage ends when its PCF stops improving, on
-      //     its best checked iterate as the output square shows it ("end_on": "best"; ending
-      //     on the last iterate, lines' PCF MSE was 1.54 x the default's, bimodal with the
-      //     parked pairs of the last sigma), checked every 5 iterations (twice the candidates
-      //     of the rule's default 10 for one PCF more per 10 iterations: poisson_n64c2_point's
-      //     PCF MSE went from 1.14 x the default's to 0.90 x).
-      // Read by 20 random crops instead of the quadrants (the frame left out), lines' PCF MSE
-      // is 1.52 x the default's and Tree1's 1.11 x; ending on the last iterate it was 1.15 x
-      // and 1.01 x (docs/performance.md): the best is judged on the whole square, border included.
-      // 40 filters and the 9/d grid without the 128 floor were measured too and left out:
-      // they cost Tree1's structure (PCF MSE 0.023 against 0.012).
+      // The Gabor method's quality in the least time on a CPU (docs/performance.md, "Time to
+      // quality", has the measurements behind each knob):
+      //   - the network in bf16 where the CPU has bf16 units ("auto"): oneDNN's bf16
+      //     convolutions run several times float32's rate there;
+      //   - per-sigma grids: a map blurred by sigma holds no detail finer than sigma, so the
+      //     coarse sigmas run on coarser grids and the finest keeps the full one;
+      //   - the "pattern" stopping rule: a sigma stage ends when the PCF of its points stops
+      //     improving, checked every 5 iterations, and ends on its best checked iterate (a
+      //     stage whose pattern got worse while its loss still fell gives back what it lost).
+      // Where bf16 would be emulated, the network runs float32, and "without_bf16_units" buys
+      // back the time bf16 would have saved.
       {"fast",
-       {{"description", "bf16 network, per-sigma grids, stop when the pattern stops improving (checked every 5 iterations) and keep its best: lines in 62-124 s (median 69 s) instead of 745 s"},
+       {{"description", "the network in bf16 where the CPU has bf16 units, per-sigma grids, and stages that stop when the "
+                        "pattern stops improving and keep its best; without bf16 units, a float32 network sized to match"},
         {"config",
          {{"method",
-           {{"feature_net", {{"precision", "bfloat16"}}},
+           {{"feature_net", {{"precision", "auto"}}},
             {"grid", {{"per_sigma", true}}},
-            {"convergence", {{"type", "pattern"}, {"end_on", "best"}, {"check_every", 5}}}}}}}}},
+            {"convergence", {{"type", "pattern"}, {"end_on", "best"}, {"check_every", 5}}}}}}},
+        {"without_bf16_units", {{"method", {{"feature_net", {{"channels", 64}}}}}}}}},
   };
 }
 
-nlohmann::json apply_preset(const nlohmann::json& config) {
-  if (!config.is_object() || !config.contains("preset") || config["preset"].is_null()) return config;
-  const auto& name = config["preset"];
-  const auto all = presets();
+namespace {
+
+const nlohmann::json& preset_entry(const nlohmann::json& all, const nlohmann::json& name) {
   std::string known;
   for (auto it = all.begin(); it != all.end(); ++it) known += (known.empty() ? "" : ", ") + it.key();
   if (!name.is_string() || !all.contains(name.get<std::string>()))
     throw config_error("preset", "unknown preset " + name.dump() + " (known: " + known + "; null for none)");
-  const auto& fragment = all[name.get<std::string>()]["config"];
+  return all[name.get<std::string>()];
+}
+
+bool takes_float32_variant(const nlohmann::json& entry, bool bf16_units) {
+  return entry.contains("without_bf16_units") && !bf16_units;
+}
+
+}  // namespace
+
+nlohmann::json preset_fragment(const std::string& name, bool bf16_units) {
+  const nlohmann::json all = presets();
+  const nlohmann::json& entry = preset_entry(all, name);
+  return takes_float32_variant(entry, bf16_units) ? merge(entry["config"], entry["without_bf16_units"]) : entry["config"];
+}
+
+nlohmann::json preset_fragment(const std::string& name) { return preset_fragment(name, cpu_isa().native_bf16); }
+
+nlohmann::json apply_preset(const nlohmann::json& config) {
+  if (!config.is_object() || !config.contains("preset") || config["preset"].is_null()) return config;
+  const auto& name = config["preset"];
+  preset_entry(presets(), name);  // the name's error first
+  const nlohmann::json fragment = preset_fragment(name.get<std::string>());
   // A preset sets the Gabor method's parameters: another method would refuse them as unknown
   // keys; say why instead.
   if (fragment.contains("method") && config.contains("method") && config["method"].is_object() &&
@@ -52,6 +69,19 @@ nlohmann::json apply_preset(const nlohmann::json& config) {
     throw config_error("preset", "preset '" + name.get<std::string>() + "' sets the gabor method's parameters; this config's method is '" +
                                      config["method"]["type"].get<std::string>() + "'");
   return merge(fragment, config);
+}
+
+nlohmann::json preset_record(const nlohmann::json& resolved) {
+  if (!resolved.is_object() || !resolved.contains("preset") || !resolved["preset"].is_string()) return nullptr;
+  const nlohmann::json all = presets();
+  const nlohmann::json& entry = preset_entry(all, resolved["preset"]);
+  const bool f32 = takes_float32_variant(entry, cpu_isa().native_bf16);
+  const std::string kind = cpu_isa().kind();
+  return {{"name", resolved["preset"]},
+          {"variant", f32 ? "without bf16 units" : "every processor"},
+          {"reason", !entry.contains("without_bf16_units") ? "one variant for every processor"
+                     : f32 ? "no bf16 units in use on this CPU (" + kind + ")"
+                           : "the CPU's bf16 units are in use (" + kind + ")"}};
 }
 
 }  // namespace ppsynth

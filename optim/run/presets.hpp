@@ -7,15 +7,27 @@
 // `preset=fast` in a sweep's "set" or "grid". The config's own keys win over the preset's;
 // the resolved config keeps the preset's name beside every value it set. Each preset is
 // declared once, in presets.cpp, with what it trades (docs/performance.md, "Time to quality").
+//
+// A preset may differ by processor class: its "config" holds for every processor, and its
+// "without_bf16_units" fragment is merged over it where the network's bf16 would be emulated
+// (core/processor.hpp: no AVX512_BF16 or AMX in use), since there the knobs that make bf16 pay
+// cost time instead. run.json records which variant ran and why (preset_record).
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 namespace ppsynth {
 
-// name -> {"description": ..., "config": fragment}.
+// name -> {"description": ..., "config": fragment[, "without_bf16_units": fragment]}.
 nlohmann::json presets();
+// The fragment a preset contributes on this processor; on a processor with or without bf16
+// units in use (`bf16_units`).
+nlohmann::json preset_fragment(const std::string& name);
+nlohmann::json preset_fragment(const std::string& name, bool bf16_units);
 // `config` with the fragment of its "preset" (if any) merged under it; errors name the key.
 nlohmann::json apply_preset(const nlohmann::json& config);
+// For run.json: {"name", "variant": "every processor" | "without bf16 units", "reason"} of a
+// resolved config's preset on this processor; null without a preset.
+nlohmann::json preset_record(const nlohmann::json& resolved);
 
 }  // namespace ppsynth

@@ -18,6 +18,7 @@
 #include "core/render/plot_points.hpp"
 #include "core/revision.hpp"
 #include "core/run_directory.hpp"
+#include "optim/run/presets.hpp"
 #include "optim/run/run_config.hpp"
 
 namespace fs = std::filesystem;
@@ -143,6 +144,8 @@ void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const
                         {"threads", at::get_num_threads()},
                         // and on the processor's instruction set (core/processor.hpp)
                         {"processor", processor_kind()},
+                        // a preset may differ by processor class (optim/run/presets.hpp)
+                        {"preset", preset_record(r)},
                         {"synthesis_seconds", synthesis_seconds},
                         {"total_seconds", o.seconds},
                         {"peak_rss_mib", peak_resident_mib()},

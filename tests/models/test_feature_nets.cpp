@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include "core/processor.hpp"
 #include "models/feature_net.hpp"
 #include "models/fixed_filter_bank.hpp"
 #include "losses/gram_loss.hpp"
@@ -20,6 +21,10 @@ torch::Tensor generic_loss(const Features& f) {
     loss = loss.defined() ? loss + t : t;
   }
   return loss;
+}
+
+double relative_difference(const torch::Tensor& a, const torch::Tensor& reference) {
+  return ((a - reference).norm() / reference.norm()).item<double>();
 }
 
 // The features of x through a net built from `o` on its fast (channels-last) or plain path,
@@ -105,9 +110,52 @@ TEST_CASE("RandomFilterNet fast CPU path equals the plain path", "[models][net]"
     }
 }
 
-TEST_CASE("RandomFilterNet bfloat16 fast path equals its plain path within bf16 rounding", "[models][net]") {
-  // The bf16 network takes the channels-last path too (issue 21): same features and input
-  // gradient as LibTorch's plain bf16 path, up to bf16's 8-bit mantissa.
+TEST_CASE("RandomFilterNet in bfloat16, fast path: features and input gradient within bf16 rounding of float32", "[models][net][isa]") {
+  // The bf16 network (the fast preset's where the CPU has bf16 units, "bfloat16" anywhere)
+  // runs the channels-last path, whose convolutions sum in float32 (oneDNN, native or
+  // emulated). Against the float32 network on the same input: measured on an AVX2 EPYC
+  // (emulated bf16) over these 4 inputs and 2 widths, the features are 0.7-1.2 % off and the
+  // input gradient of the synthesis-like loss 14-19 % (bf16 activations through instance norm,
+  // ReLU and the Gram term); a convolution summing in bf16 puts the features 6-9 % off, a
+  // wrongly flipped filter the gradient beyond 100 %.
+  INFO(processor_kind());
+  for (int input = 0; input < 4; ++input)
+    for (int channels : {16, 64}) {
+      INFO("input " << input << ", " << channels << " channels");
+      torch::manual_seed(input);
+      auto x = torch::rand({1, 10, 32, 32}) * 3;
+      RandomFilterNetOptions o;
+      o.channels = channels;
+      torch::Tensor g32, g16;
+      auto f32 = features_and_input_grad(o, true, x, g32);
+      o.dtype = torch::kBFloat16;
+      auto f16 = features_and_input_grad(o, true, x, g16);
+      REQUIRE(f16.size() == f32.size());
+      CHECK(f16[0].is_contiguous(at::MemoryFormat::ChannelsLast));
+      for (size_t l = 0; l < f16.size(); ++l) {
+        CHECK(f16[l].scalar_type() == torch::kFloat32);
+        const double rel = relative_difference(f16[l], f32[l]);
+        INFO("layer " << l << ": relative difference " << rel);
+        CHECK(rel < 0.03);
+        CHECK(rel > 0);  // it really ran in reduced precision
+      }
+      CHECK(g16.scalar_type() == torch::kFloat32);
+      const double grad_rel = relative_difference(g16, g32);
+      INFO("input gradient: relative difference " << grad_rel);
+      CHECK(grad_rel < 0.3);
+    }
+}
+
+TEST_CASE("RandomFilterNet in bfloat16: the fast path equals LibTorch's plain path, where bf16 is native", "[models][net][isa]") {
+  // On bf16 units both paths run oneDNN's bf16 kernels and agree within bf16's rounding. Where
+  // oneDNN emulates bf16 (no AVX512_BF16 in use) LibTorch's plain path falls back to kernels
+  // that sum in other orders and precisions (measured on an AVX2 EPYC: 6-9 % apart in the
+  // features, 49 % in the gradient, while the fast path stayed within the bounds of the case
+  // above): there the plain path is not ours to bound, and the case says so.
+  if (!cpu_isa().native_bf16) {
+    WARN("skipped: no bf16 units in use on this CPU (" << processor_kind() << "); the fast path is checked against float32 above");
+    return;
+  }
   RandomFilterNetOptions o;
   o.channels = 16;
   o.dtype = torch::kBFloat16;
@@ -116,14 +164,9 @@ TEST_CASE("RandomFilterNet bfloat16 fast path equals its plain path within bf16 
   auto fast = features_and_input_grad(o, true, x, g_fast);
   auto plain = features_and_input_grad(o, false, x, g_plain);
   REQUIRE(fast.size() == plain.size());
-  CHECK(fast[0].is_contiguous(at::MemoryFormat::ChannelsLast));
   CHECK_FALSE(plain[0].is_contiguous(at::MemoryFormat::ChannelsLast));
-  for (size_t l = 0; l < fast.size(); ++l) {
-    CHECK(fast[l].scalar_type() == torch::kFloat32);
-    CHECK(((fast[l] - plain[l]).norm() / plain[l].norm()).item<double>() < 0.03);
-  }
-  CHECK(g_fast.scalar_type() == torch::kFloat32);
-  CHECK(((g_fast - g_plain).norm() / g_plain.norm()).item<double>() < 0.05);
+  for (size_t l = 0; l < fast.size(); ++l) CHECK(relative_difference(fast[l], plain[l]) < 0.03);
+  CHECK(relative_difference(g_fast, g_plain) < 0.05);
 }
 
 TEST_CASE("Feature nets from the registry: fixed banks and identity", "[models][net]") {
@@ -155,19 +198,18 @@ TEST_CASE("Pixel splat: bilinear, mass-preserving, differentiable", "[models][sp
   CHECK(p.grad().abs().sum().item<double>() > 0);
 }
 
-TEST_CASE("RandomFilterNet in bfloat16 stays close to float32", "[models][net]") {
+TEST_CASE("RandomFilterNet precision: float32, bfloat16 or auto, anything else refused naming the key", "[models][net]") {
   auto& reg = FeatureNetRegistry::instance();
-  auto f32 = reg.create(json{{"type", "random"}, {"channels", 16}}, "feature_net", 10, 5);
-  auto b16 = reg.create(json{{"type", "random"}, {"channels", 16}, {"precision", "bfloat16"}}, "feature_net", 10, 5);
-  auto x = torch::rand({1, 10, 32, 32});
-  auto a = f32->forward(x), b = b16->forward(x);
-  for (size_t l = 0; l < a.size(); ++l) {
-    CHECK(b[l].scalar_type() == torch::kFloat32);
-    const double rel = ((a[l] - b[l]).norm() / a[l].norm()).item<double>();
-    CHECK(rel < 0.05);
-    CHECK(rel > 0);  // it really ran in reduced precision
-  }
-  CHECK_THROWS_WITH(reg.create(json{{"type", "random"}, {"precision", "half"}}, "feature_net", 10, 5), Catch::Contains("precision"));
+  auto net = reg.create(json{{"type", "random"}, {"channels", 4}, {"precision", "auto"}}, "feature_net", 10, 5);
+  // auto: bf16 exactly where the CPU's bf16 units are in use (core/processor.hpp)
+  const json chosen = net->choices();
+  CHECK(chosen["precision"] == (cpu_isa().native_bf16 ? "bfloat16" : "float32"));
+  CHECK(chosen["precision_reason"].get<std::string>().rfind("auto: ", 0) == 0);
+  CHECK(reg.create(json{{"type", "random"}, {"channels", 4}}, "feature_net", 10, 5)->choices()["precision"] == "float32");
+  CHECK(reg.create(json{{"type", "random"}, {"channels", 4}, {"precision", "bfloat16"}}, "feature_net", 10, 5)->choices()["precision"] ==
+        "bfloat16");
+  CHECK_THROWS_WITH(reg.create(json{{"type", "random"}, {"precision", "half"}}, "feature_net", 10, 5),
+                    Catch::Contains("method.feature_net.precision") && Catch::Contains("auto"));
 }
 
 TEST_CASE("Gabor rasterizer: periodic_exemplar and periodic_output reach their own raster", "[models][gabor]") {

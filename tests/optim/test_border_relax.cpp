@@ -149,28 +149,23 @@ TEST_CASE("by default the relaxes follow every class's sigma stages, which stay 
   CHECK_THROWS_WITH(resolve_gabor_settings(method_params(bad), ex, square, false), Catch::Contains("method.border_relax.after"));
 }
 
-TEST_CASE("the border relax's separation acts in the relax stages only, and keeps their pairs apart", "[optim][border_relax]") {
+TEST_CASE("the border relax's separation acts in the relax stages only, and keeps their pairs apart", "[optim][border_relax][isa]") {
   // Class 0 a 3 x 3 lattice: its pairs are wide (1/3), so the output's best-candidate start
   // has pairs closer than the term's threshold for it to act on; class 1 four points.
   PointSet ex;
   for (int i = 0; i < 9; ++i) ex.add({(i % 3 + 0.5) / 3, (i / 3 + 0.5) / 3}, 0);
   for (const Vec2 p : {Vec2{0.1, 0.1}, Vec2{0.6, 0.2}, Vec2{0.3, 0.7}, Vec2{0.8, 0.8}}) ex.add(p, 1);
-  auto stage_ends = [&](double separation) {
+  auto stage_ends = [&](double separation, uint64_t seed) {
     auto method = MethodRegistry::instance().create(relaxed_method(4, separation), "method");
     StageEnds ends;
     SynthesisContext ctx;
     ctx.quick = true;
-    ctx.seed = 7;
+    ctx.seed = seed;
     ctx.observers.push_back(&ends);
     method->synthesize(ex, ctx);
     REQUIRE(ends.points.size() == 6);  // per class: sigma 1, sigma 2, border relax
     return ends.points;
   };
-  const auto off = stage_ends(0), on = stage_ends(50);
-  // Class 0's sigma stages are the paper's, bit for bit: the term waits for the relax.
-  CHECK(same_bits(off[0], on[0]));
-  CHECK(same_bits(off[1], on[1]));
-  CHECK_FALSE(same_bits(off[2], on[2]));
   // What the term asks for: fewer of class 0's pairs inside its threshold (0.9 x the
   // exemplar's closest pair / u, on the output's torus) than the relax alone leaves.
   auto shortfall = [](const PointSet& p) {
@@ -184,8 +179,18 @@ TEST_CASE("the border relax's separation acts in the relax stages only, and keep
       }
     return sum;
   };
-  INFO("before the relax " << shortfall(off[1]) << ", relax alone " << shortfall(off[2]) << ", with the term " << shortfall(on[2]));
-  CHECK(shortfall(on[2]) < shortfall(off[2]));
+  // Decided over three seeds, each paired with itself without the term: the term's effect
+  // must show in every one, not in one draw's trajectory.
+  for (uint64_t seed : {7, 8, 9}) {
+    INFO("seed " << seed);
+    const auto off = stage_ends(0, seed), on = stage_ends(50, seed);
+    // Class 0's sigma stages are the paper's, bit for bit: the term waits for the relax.
+    CHECK(same_bits(off[0], on[0]));
+    CHECK(same_bits(off[1], on[1]));
+    CHECK_FALSE(same_bits(off[2], on[2]));
+    INFO("before the relax " << shortfall(off[1]) << ", relax alone " << shortfall(off[2]) << ", with the term " << shortfall(on[2]));
+    CHECK(shortfall(on[2]) < shortfall(off[2]));
+  }
 }
 
 TEST_CASE("a class is relaxed when it or an earlier class parks; a run where none parks is the paper's bit for bit", "[optim][border_relax]") {

@@ -261,57 +261,149 @@ TEST_CASE("a window run resumed from any checkpoint ends bit for bit as the unin
   }
 }
 
-TEST_CASE("no seam: where windows meet, the pattern's density and spacing are those inside the windows", "[optim][windows]") {
-  // One class of 25 jittered-grid points per unit, a 8 x 3 strip in windows of 3 units with
-  // the automatic margin (3 sigma_max + the 7 x 7 network's reach: about 1 unit at 32 grid
-  // positions per unit): the interiors meet at several x. The points within 0.25 of a meeting
-  // line against the others (both away from the output's border): density, mean
-  // nearest-neighbour distance, and the share of points closer than 0.3 mean spacings.
+namespace {
+
+// The pattern along vertical lines of a strip output: per line, the points within 0.25 of it
+// (away from the output's border) against all such points of the output: their density, mean
+// nearest-neighbour distance and share of points closer than 0.3 mean spacings, as ratios
+// (density, spacing) or a difference (close share) to the whole strip's.
+struct LineStats {
+  double density = 0, spacing = 0, close = 0;
+};
+
+LineStats line_stats(const PointSet& out, const std::vector<double>& nn, double mean_nn, double x0, double height) {
+  const double half = 0.25, y0 = 0.3, y1 = height - 0.3, x_lo = 0.3, x_hi = out.domain().x1 - 0.3;
+  size_t n_all = 0, n = 0, close_all = 0, close = 0;
+  double nn_sum = 0;
+  for (size_t i = 0; i < out.size(); ++i) {
+    if (out[i].y < y0 || out[i].y > y1 || out[i].x < x_lo || out[i].x > x_hi) continue;
+    const bool is_close = nn[i] < 0.3 * mean_nn;
+    ++n_all;
+    close_all += is_close;
+    if (std::abs(out[i].x - x0) >= half) continue;
+    ++n;
+    close += is_close;
+    nn_sum += nn[i];
+  }
+  LineStats s;
+  s.density = (n / (2 * half)) / (n_all / (x_hi - x_lo));
+  s.spacing = n ? nn_sum / n / mean_nn : 0;
+  s.close = (n ? double(close) / n : 0) - double(close_all) / n_all;
+  return s;
+}
+
+// A strip output of seed `seed` and the x of its windows' meeting lines.
+struct Strip {
+  PointSet out;
+  std::vector<double> meeting;
+};
+
+Strip synthesize_strip(uint64_t seed) {
   const PointSet ex = test::small_exemplar(1, false, 25, 0.005);
   auto method = MethodRegistry::instance().create(
-      json{{"type", "gabor"}, {"window", {{"pixels", 96}}},
-           {"quick", {{"res", 32}, {"channels", 8}, {"max_iterations", 30}, {"num_sigmas", 2}}}},
+      json{{"type", "gabor"}, {"window", {{"pixels", 72}}}, {"quick", {{"res", 24}, {"channels", 8}, {"max_iterations", 20}, {"num_sigmas", 2}}}},
       "method");
   SynthesisContext ctx;
   ctx.quick = true;
-  ctx.seed = 4;
+  ctx.seed = seed;
   ctx.output = shape_of(json{{"size", {8, 3}}}, ex);
   json stats;
   ctx.stats = &stats;
-  const PointSet out = method->synthesize(ex, ctx);
+  Strip strip{method->synthesize(ex, ctx), {}};
   REQUIRE(stats["windows"]["nx"].get<int>() >= 3);
   // the meeting lines: half-way in each overlap (window_plan.cpp); recomputed from the layout
   const WindowLayout layout =
       window_layout(ctx.output.canvas(), ctx.output.moving_area(), stats["windows"]["side"], stats["windows"]["margin"], 0, "k");
-  std::vector<double> seams;
-  for (int i = 0; i + 1 < layout.nx; ++i) seams.push_back(layout.windows[i].interior.x1);
-  std::vector<size_t> near, far;
-  for (size_t i = 0; i < out.size(); ++i) {
-    double dx = 1e9;
-    for (double s : seams) dx = std::min(dx, std::abs(out[i].x - s));
-    if (out[i].y < 0.3 || out[i].y > 2.7 || out[i].x < 0.3 || out[i].x > 7.7) continue;
-    (dx < 0.25 ? near : far).push_back(i);
+  for (int i = 0; i + 1 < layout.nx; ++i) strip.meeting.push_back(layout.windows[i].interior.x1);
+  return strip;
+}
+
+// Adds the stats of the strip's meeting lines to `seams` and of lines well inside the windows
+// (>= 0.5 from any meeting line, every 0.25) to `controls`.
+void strip_lines(const Strip& strip, std::vector<LineStats>& seams, std::vector<LineStats>& controls) {
+  const auto nn = nearest_neighbor_distances(strip.out, false);
+  double mean_nn = 0;
+  for (double d : nn) mean_nn += d;
+  mean_nn /= nn.size();
+  for (double x : strip.meeting) seams.push_back(line_stats(strip.out, nn, mean_nn, x, 3));
+  for (double x = 0.55; x < 7.5; x += 0.25) {
+    bool near = false;
+    for (double m : strip.meeting) near |= std::abs(x - m) < 0.5;
+    if (!near) controls.push_back(line_stats(strip.out, nn, mean_nn, x, 3));
   }
-  REQUIRE(near.size() > 50);
-  const double band = 2.4, near_area = seams.size() * 0.5 * band, far_area = 7.4 * band - near_area;
-  const double density_ratio = (near.size() / near_area) / (far.size() / far_area);
-  const auto nn = nearest_neighbor_distances(out, false);
-  double sn = 0, sf = 0;
-  for (size_t i : near) sn += nn[i];
-  for (size_t i : far) sf += nn[i];
-  const double mean_near = sn / near.size(), mean_far = sf / far.size();
-  double close_near = 0, close_far = 0;
-  for (size_t i : near) close_near += nn[i] < 0.3 * mean_far;
-  for (size_t i : far) close_far += nn[i] < 0.3 * mean_far;
-  close_near /= near.size();
-  close_far /= far.size();
-  INFO("near " << near.size() << " far " << far.size() << " density " << density_ratio << " mean nn " << mean_near << " / "
-               << mean_far << " close " << close_near << " / " << close_far);
-  CHECK(density_ratio > 0.85);
-  CHECK(density_ratio < 1.15);
-  CHECK(mean_near / mean_far > 0.9);
-  CHECK(mean_near / mean_far < 1.1);
-  CHECK(close_near <= close_far + 0.05);
+}
+
+// How far the seams' mean lies from the other lines' mean, in standard deviations of one of
+// the other lines (their spread measured on the same outputs): a seam that a reader could not
+// tell from any other line of the pattern stays within about one.
+struct Departure {
+  double density, spacing, close;
+};
+Departure departure(const std::vector<LineStats>& seams, const std::vector<LineStats>& controls) {
+  auto in_sd = [&](double LineStats::*f) {
+    double ms = 0, mc = 0, vc = 0;
+    for (const auto& s : seams) ms += s.*f;
+    for (const auto& c : controls) mc += c.*f;
+    ms /= seams.size();
+    mc /= controls.size();
+    for (const auto& c : controls) vc += (c.*f - mc) * (c.*f - mc);
+    return (ms - mc) / std::sqrt(vc / (controls.size() - 1));
+  };
+  return {in_sd(&LineStats::density), in_sd(&LineStats::spacing), in_sd(&LineStats::close)};
+}
+
+}  // namespace
+
+TEST_CASE("no seam: where windows meet, the pattern is as along any line inside the windows", "[optim][windows][isa]") {
+  // One class of 25 jittered-grid points per unit, an 8 x 3 strip in windows of 3 units with
+  // the automatic margin (3 sigma_max + the 7 x 7 network's reach): the interiors meet at
+  // several x. Decided over three seeds against the spread of the same statistics along
+  // lines inside the windows, on the same outputs: the seams' mean density, spacing and
+  // close-pair share each lie within 1.5 standard deviations of one line of the others.
+  // Measured on an AVX2 EPYC: -0.2, -0.3 and +0.8: the seams hold slightly more close pairs
+  // than the average line, within what lines vary by.
+  std::vector<Strip> strips;
+  for (uint64_t seed : {4, 5, 6}) strips.push_back(synthesize_strip(seed));
+  auto departure_of = [&](const std::vector<Strip>& outputs) {
+    std::vector<LineStats> seams, controls;
+    for (const auto& strip : outputs) strip_lines(strip, seams, controls);
+    REQUIRE(seams.size() >= 6);
+    REQUIRE(controls.size() >= 15);
+    return departure(seams, controls);
+  };
+  const Departure d = departure_of(strips);
+  INFO("seams' departure in standard deviations of a line: density " << d.density << ", spacing " << d.spacing << ", close pairs "
+                                                                       << d.close);
+  CHECK(std::abs(d.density) < 1.5);
+  CHECK(std::abs(d.spacing) < 1.5);
+  CHECK(std::abs(d.close) < 1.5);
+
+  SECTION("the statistics see a seam where there is one") {
+    // The same outputs with what a seam would look like: a gap one spacing (0.2) wide on each
+    // meeting line, or a pile (every point within half a spacing doubled a tenth of a spacing
+    // away).
+    auto with_seams = [&](bool gap) {
+      std::vector<Strip> seamed;
+      for (const auto& strip : strips) {
+        Strip t{PointSet{}, strip.meeting};
+        for (size_t i = 0; i < strip.out.size(); ++i) {
+          double dx = 1e9;
+          for (double m : strip.meeting) dx = std::min(dx, std::abs(strip.out[i].x - m));
+          if (gap && dx < 0.1) continue;
+          t.out.add(strip.out[i], 0);
+          if (!gap && dx < 0.1) t.out.add({strip.out[i].x + 0.02, strip.out[i].y}, 0);
+        }
+        t.out.set_domain(strip.out.domain());
+        seamed.push_back(t);
+      }
+      return seamed;
+    };
+    const Departure gap = departure_of(with_seams(true)), pile = departure_of(with_seams(false));
+    INFO("gap: density " << gap.density << "; pile: density " << pile.density << ", close pairs " << pile.close);
+    CHECK(gap.density < -1.5);
+    CHECK(pile.density > 1.5);
+    CHECK(pile.close > 1.5);
+  }
 }
 
 TEST_CASE("the window grid, the memory of an iteration, does not grow with the output", "[optim][windows]") {

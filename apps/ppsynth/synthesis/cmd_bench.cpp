@@ -22,9 +22,11 @@
 #include "core/atomic_file.hpp"
 #include "core/config/config.hpp"
 #include "models/gabor_feature_maps.hpp"
+#include "models/network_precision.hpp"
 #include "models/point_tensor.hpp"
 #include "optim/gabor_pipeline.hpp"
 #include "optim/initializer.hpp"
+#include "optim/run/machine_report.hpp"
 #include "optim/run/synthesize.hpp"
 
 namespace {
@@ -66,25 +68,6 @@ double net_flops(int in_channels, int channels, int ksize, int depth, int R) {
     conv(channels, channels, h);
   }
   return 2 * f;  // backward to the input costs as much as forward
-}
-
-// The throughput of the network's dominant operation, a 120 -> 120 7x7 convolution on an
-// R x R map, in one precision and memory layout: float32 as the default network lays it out,
-// bfloat16 channels-last as the bf16 network's fast path (the CPU's AVX512_BF16 units).
-struct ConvThroughput {
-  std::string path;
-  double gflops = 0, min_s = 0;
-};
-
-ConvThroughput conv_throughput(const std::string& path, torch::Dtype dtype, bool channels_last, int R, int reps) {
-  const auto layout = channels_last ? at::MemoryFormat::ChannelsLast : at::MemoryFormat::Contiguous;
-  auto w = torch::randn({120, 120, 7, 7}).to(dtype).contiguous(layout);
-  auto x = torch::randn({1, 120, R, R}).to(dtype).contiguous(layout);
-  Timing t = time_it(reps, [&] {
-    torch::NoGradGuard ng;
-    torch::conv2d(x, w, {}, 1, 3);
-  });
-  return {path, 2.0 * 120 * 120 * 49 * double(R) * R / t.min() / 1e9, t.min()};
 }
 
 struct Opts {
@@ -248,14 +231,18 @@ app::RunFn setup(CLI::App& app) {
     // --- the convolution floor ---------------------------------------------------------
     const int C = s.feature_net.value("channels", 120), ks = s.feature_net.value("kernel_size", 7),
               depth = s.feature_net.value("depth", 3);
-    const std::vector<ConvThroughput> paths = {conv_throughput("float32", torch::kFloat32, false, R, o->reps),
-                                               conv_throughput("bfloat16 channels-last", torch::kBFloat16, true, R, o->reps)};
+    const std::vector<ConvThroughput> paths = {conv_throughput_float32(R, o->reps), conv_throughput_bfloat16(R, o->reps)};
     const double flops = s.feature_net.value("type", "") == "random" ? net_flops(static_cast<int>(maps.size(1)), C, ks, depth, R) : 0;
-    const bool bf16 = s.feature_net.value("precision", "float32") == "bfloat16";
+    const bool bf16 = s.feature_net.value("type", "") == "random" &&
+                      resolve_network_precision(s.feature_net.value("precision", "float32"), "method.feature_net.precision").dtype ==
+                          torch::kBFloat16;
     const double conv_gflops = paths[bf16 ? 1 : 0].gflops;  // the floor of the path this config runs
     const double floor_s = flops / (conv_gflops * 1e9);
 
     // --- print ---------------------------------------------------------------------------
+    const MachineReport machine = machine_report(0, 0);  // the floors are this config's, below
+    std::printf("%s\n", machine.text().c_str());
+    out["machine"] = machine.to_json();
     std::printf("ppsynth bench: %s  (%zu -> %zu points, grid %d -> %d, k %d, %d threads)\n",
                 r["exemplar"].get<std::string>().c_str(), ex.size(), start.size(), s.sigma_res[bench_sigma], R, s.k, at::get_num_threads());
     std::printf("%-42s %10s %10s\n", "phase", "min [s]", "median [s]");

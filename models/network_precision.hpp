@@ -1,0 +1,32 @@
+#pragma once
+// The arithmetic of the random-filter network (method.feature_net.precision), chosen for the
+// processor at hand:
+//   "float32"   the paper's; every processor.
+//   "bfloat16"  oneDNN's bf16 convolutions: several times float32's rate on a CPU with bf16
+//               units (AVX512_BF16, AMX), but emulated elsewhere, where it is far slower
+//               (AVX2: about 0.01 x). It runs as asked, with a warning that gives the slowdown
+//               measured on this processor.
+//   "auto"      bfloat16 where the CPU has bf16 units that oneDNN may use (core/processor.hpp:
+//               the ISA caps count), float32 elsewhere. The same config and seed then give
+//               one output per processor class; the run records the choice and its reason.
+// The maps, losses and positions stay float32/float64 either way.
+#include <torch/torch.h>
+
+#include <string>
+
+namespace ppsynth {
+
+struct NetworkPrecision {
+  torch::Dtype dtype = torch::kFloat32;
+  std::string name = "float32";  // "float32" | "bfloat16": what runs
+  std::string reason;            // why, in a sentence (run.json, the log)
+};
+
+// `requested` as written in the config; errors name `key_path`.
+NetworkPrecision resolve_network_precision(const std::string& requested, const std::string& key_path);
+
+// Seconds of a bf16 channels-last convolution over the same in float32 on this processor,
+// measured once per process (well under a second): what the warning and `ppsynth doctor` report.
+double measured_bf16_slowdown();
+
+}  // namespace ppsynth
