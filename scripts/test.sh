@@ -5,7 +5,7 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$here/scripts/setup.sh"
 cd "$here"
-ctest --test-dir build --output-on-failure
+ctest --test-dir build --output-on-failure --parallel 2
 # The point-file readers and the config loader under libFuzzer (clang, ASan + UBSan, its own
 # build dir build-fuzz): the seed corpus replayed, then each target fuzzed briefly
 # (PPSYNTH_FUZZ_SECONDS per target, default 15; 0 = replay only).
