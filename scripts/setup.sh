@@ -26,6 +26,7 @@ PACKAGES=(
   # test_spatstat_*), its real data sets as exemplars (scripts/spatstat_export.R) and the
   # simulated processes that calibrate eval's verdict (scripts/verdict_calibration.sh)
   r-base-core r-cran-spatstat r-cran-spatstat.explore r-cran-spatstat.data r-cran-spatstat.random r-cran-spatstat.model
+  r-cran-randomfields     # the Gaussian fields of spatstat's log-Gaussian Cox simulations
 )
 
 need=()
