@@ -10,7 +10,8 @@
 #   scripts/verdict_calibration.sh DIR DRAWS [U=2] [FIRST=1] [EVAL FLAGS...]
 #   e.g. scripts/verdict_calibration.sh /tmp/verdict 200 2 201 --verdict-guard 0.1
 # Draws FIRST..FIRST+DRAWS-1 (scripts/verdict_simulate.R; another FIRST, fresh draws).
-# DIR receives the simulated files (made once: an existing DIR/U<u> is reused) and
+# DIR receives the simulated files (made once: an existing DIR/U<u> is reused, and must hold
+# those draws) and
 # results_U<u>.tsv (process, draw, output kind, row, p). Needs build/ppsynth and R with
 # spatstat (scripts/setup.sh). The outputs are in exemplar units: eval runs with --zoom 1.
 set -euo pipefail
@@ -32,8 +33,10 @@ results="$dir/results_U$u.tsv"
 : > "$results.tmp"
 for pdir in "$sim"/*/; do
   process=$(basename "$pdir")
-  for ex in "$pdir"d*_exemplar.txt; do
-    draw=$(basename "$ex" _exemplar.txt)
+  for d in $(seq "$first" $((first + draws - 1))); do
+    draw=$(printf 'd%03d' "$d")
+    ex="$pdir${draw}_exemplar.txt"
+    [[ -f $ex ]] || { echo "verdict_calibration: no $ex (DIR/U$u was made with other draws)" >&2; exit 1; }
     for kind in same csr ssi relabel; do
       out="$pdir${draw}_$kind.txt"
       [[ -f $out ]] || continue
