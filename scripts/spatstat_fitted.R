@@ -26,6 +26,7 @@ suppressPackageStartupMessages({
   library(spatstat.explore)
   library(spatstat.model)
 })
+source(file.path(dirname(normalizePath(sub("^--file=", "", grep("^--file=", commandArgs(FALSE), value = TRUE)[1]))), "spatstat_io.R"))
 
 args <- commandArgs(trailingOnly = TRUE)
 if (length(args) < 3) {
@@ -36,16 +37,10 @@ draws <- as.integer(args[3])
 U <- if (length(args) >= 4) as.numeric(args[4]) else 2
 model <- if (length(args) >= 5) args[5] else "auto"
 
-lines <- readLines(args[1])
-dom <- grep("^#[[:space:]]*domain", lines, value = TRUE)
-box <- if (length(dom)) as.numeric(strsplit(trimws(sub("^#[[:space:]]*domain", "", dom[1])), "[[:space:]]+")[[1]][1:4]) else c(0, 0, 1, 1)
-hdr <- grep("^#[[:space:]]*x[[:space:]]+y", lines, value = TRUE)
-cols <- if (length(hdr)) strsplit(trimws(sub("^#", "", hdr[1])), "[[:space:]]+")[[1]] else c("x", "y")
-tab <- read.table(text = lines[!grepl("^#", lines) & nzchar(trimws(lines))], col.names = cols)
-W <- owin(c(box[1], box[3]), c(box[2], box[4]))
-X <- ppp(tab$x, tab$y, window = W, check = FALSE)
-multitype <- "class" %in% cols
-if (multitype) X <- X %mark% factor(tab$class)
+X <- read_plain(args[1])
+W <- Window(X)
+multitype <- is.multitype(X)
+if (!multitype) X <- unmark(X)
 
 if (model == "auto") {
   model <- if (multitype) "multistrauss" else {
@@ -86,18 +81,6 @@ fit <- switch(model,
 cat(sprintf("%s: model %s\n", args[1], model))
 print(fit)
 
-write_pattern <- function(Y, path) {
-  B <- Window(Y)
-  out <- c("# ppsynth points", sprintf("# fitted model: %s, simulated by scripts/spatstat_fitted.R", model),
-           sprintf("# domain %.17g %.17g %.17g %.17g", B$xrange[1], B$yrange[1], B$xrange[2], B$yrange[2]))
-  if (is.multitype(Y)) {
-    out <- c(out, "# x y class", sprintf("%.17g %.17g %d", Y$x, Y$y, as.integer(marks(Y)) - 1L))
-  } else {
-    out <- c(out, "# x y", sprintf("%.17g %.17g", Y$x, Y$y))
-  }
-  writeLines(out, path)
-}
-
 # Gibbs models are simulated on the window grown by a margin and clipped: on the window alone
 # the points at its edge miss the neighbours beyond it, and crowd there (a free boundary),
 # where the exemplar is a window cut out of a larger pattern. Cluster models simulate their
@@ -109,5 +92,5 @@ for (d in seq_len(draws)) {
     simulate(fit, nsim = 1, w = grow.rectangle(big, margin), drop = TRUE, progress = FALSE)
   if (is.list(Y) && !is.ppp(Y)) Y <- Y[[1]]
   Y <- Y[big]
-  write_pattern(Y, sprintf("%s_d%03d.txt", args[2], d))
+  write_plain(Y, sprintf("%s_d%03d.txt", args[2], d), sprintf("fitted model: %s, simulated by scripts/spatstat_fitted.R", model))
 }

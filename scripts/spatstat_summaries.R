@@ -11,24 +11,18 @@
 #   NAME [I J] CORRECTION v_1 ... v_n
 # NAME: r, K, L, g (univariate); rcross, Kcross, Lcross, gcross (types I to J, every ordered
 # pair); rmark, markcorr; CORRECTION "iso", "trans" or "-" for r. Values %.17g, NaN as NaN.
-suppressPackageStartupMessages({
-  library(spatstat.geom)
-  library(spatstat.explore)
-})
+suppressPackageStartupMessages(library(spatstat.explore))
+source(file.path(dirname(normalizePath(sub("^--file=", "", grep("^--file=", commandArgs(FALSE), value = TRUE)[1]))), "spatstat_io.R"))
 
 args <- commandArgs(trailingOnly = TRUE)
 if (length(args) != 1) {
   cat("usage: Rscript scripts/spatstat_summaries.R FILE\n", file = stderr())
   quit(status = 2)
 }
-lines <- readLines(args[1])
-dom <- grep("^#[[:space:]]*domain", lines, value = TRUE)
-box <- if (length(dom)) as.numeric(strsplit(trimws(sub("^#[[:space:]]*domain", "", dom[1])), "[[:space:]]+")[[1]][1:4]) else c(0, 0, 1, 1)
-hdr <- grep("^#[[:space:]]*x[[:space:]]+y", lines, value = TRUE)
-cols <- if (length(hdr)) strsplit(trimws(sub("^#", "", hdr[1])), "[[:space:]]+")[[1]] else c("x", "y")
-tab <- read.table(text = lines[!grepl("^#", lines) & nzchar(trimws(lines))], col.names = cols)
-W <- owin(c(box[1], box[3]), c(box[2], box[4]))
-X <- ppp(tab$x, tab$y, window = W, check = FALSE)
+X <- read_plain(args[1])
+cols <- names(attr(X, "table"))
+tab <- attr(X, "table")
+X <- unmark(X)
 
 emit <- function(name, corr, v) cat(name, corr, sprintf("%.17g", v), "\n")
 

@@ -27,6 +27,7 @@ suppressPackageStartupMessages({
   library(spatstat.geom)
   library(spatstat.random)
 })
+source(file.path(dirname(normalizePath(sub("^--file=", "", grep("^--file=", commandArgs(FALSE), value = TRUE)[1]))), "spatstat_io.R"))
 
 args <- commandArgs(trailingOnly = TRUE)
 if (length(args) < 2) {
@@ -55,17 +56,6 @@ simulate <- function(process, W) {
     multitype = superimpose(`0` = rStrauss(100, 0.2, 0.06, W), `1` = rMatClust(10, 0.05, 6, win = W)))
 }
 
-write_pattern <- function(X, path) {
-  W <- Window(X)
-  lines <- c("# ppsynth points", sprintf("# domain %.17g %.17g %.17g %.17g", W$xrange[1], W$yrange[1], W$xrange[2], W$yrange[2]))
-  if (is.multitype(X)) {
-    lines <- c(lines, "# x y class", sprintf("%.17g %.17g %d", X$x, X$y, as.integer(marks(X)) - 1L))
-  } else {
-    lines <- c(lines, "# x y", sprintf("%.17g %.17g", X$x, X$y))
-  }
-  writeLines(lines, path)
-}
-
 # Uniform or Poisson-disk points with the counts of X per type, on X's window.
 same_counts <- function(X, generate) {
   W <- Window(X)
@@ -88,11 +78,11 @@ for (process in processes) {
     ex <- simulate(process, square(1))
     same <- simulate(process, square(U))
     stem <- file.path(dir, sprintf("d%03d", d))
-    write_pattern(ex, paste0(stem, "_exemplar.txt"))
-    write_pattern(same, paste0(stem, "_same.txt"))
-    write_pattern(same_counts(same, uniform), paste0(stem, "_csr.txt"))
-    write_pattern(same_counts(same, poisson_disk), paste0(stem, "_ssi.txt"))
-    if (is.multitype(same)) write_pattern(rlabel(same), paste0(stem, "_relabel.txt"))
+    write_plain(ex, paste0(stem, "_exemplar.txt"))
+    write_plain(same, paste0(stem, "_same.txt"))
+    write_plain(same_counts(same, uniform), paste0(stem, "_csr.txt"))
+    write_plain(same_counts(same, poisson_disk), paste0(stem, "_ssi.txt"))
+    if (is.multitype(same)) write_plain(rlabel(same), paste0(stem, "_relabel.txt"))
   }
   cat(process, ":", draws, "draws in", dir, "\n")
 }
