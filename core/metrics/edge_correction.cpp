@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ppsynth {
 
@@ -30,7 +31,11 @@ double isotropic_weight(const Domain& w, Vec2 c, double r) {
                          std::min(aR, std::atan2(dU, dR)) + std::min(aR, std::atan2(dD, dR)) +
                          std::min(aU, std::atan2(dL, dU)) + std::min(aU, std::atan2(dR, dU)) +
                          std::min(aD, std::atan2(dL, dD)) + std::min(aD, std::atan2(dR, dD));
-  const double inside = 1.0 - outside / (2.0 * M_PI);
+  // A point on a corner (on two edges): the two arcs above stop at the corner's direction,
+  // which is along the edges there; the quarter beyond the corner is added as spatstat does.
+  const double eps = std::numeric_limits<double>::epsilon();
+  const int on_edges = (dL < eps) + (dR < eps) + (dD < eps) + (dU < eps);
+  const double inside = 1.0 - (outside + (on_edges >= 2 ? M_PI / 2 : 0.0)) / (2.0 * M_PI);
   if (!(inside > 0)) return kMaxEdgeWeight;
   return std::clamp(1.0 / inside, 1.0, kMaxEdgeWeight);
 }

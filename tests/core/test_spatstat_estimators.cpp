@@ -109,6 +109,7 @@ TEST_CASE("edge weights: the isotropic weight is 1 inside, 2 on an edge, 4 in a 
   CHECK(isotropic_weight(w, {1, 0.5}, 0.3) == Approx(1.0));
   CHECK(isotropic_weight(w, {1, 0.0}, 0.3) == Approx(2.0));
   CHECK(isotropic_weight(w, {0, 0}, 0.3) == Approx(4.0));
+  CHECK(isotropic_weight(w, {1e-9, 0}, 0.3) == Approx(4.0));  // spatstat: 4 at and beside a corner
   // A circle reaching one edge at half its radius: the arc beyond it is 2 acos(1/2) = 120 degrees.
   CHECK(isotropic_weight(w, {1, 0.15}, 0.3) == Approx(1.0 / (1.0 - 1.0 / 3.0)));
   // Near a corner inside the circle: each edge's outer half arc, acos(d / r), plus the two

@@ -80,8 +80,13 @@ TEST_CASE("verdict: rows per class and pair, the same p for the same inputs, unt
   CHECK(v["rows"][1]["units"][0] == 4);
   CHECK(v["rows"][1]["units"][1] == 16);
   CHECK(verdict(ex, out, o) == v);
-  o.seed = 2;
-  CHECK(verdict(ex, out, o)["rows"][2]["p"] != v["rows"][2]["p"]);
+  // Other seeds draw other relabellings: p moves by its Monte Carlo error (a step is 1/200).
+  bool moved = false;
+  for (uint64_t seed = 2; seed <= 5; ++seed) {
+    o.seed = seed;
+    moved = moved || verdict(ex, out, o)["rows"][1]["p"] != v["rows"][1]["p"];
+  }
+  CHECK(moved);
 
   // An output no larger than one sub-window: nothing to compare.
   const PointSet tiny = uniform_points(20, 9, Domain{0, 0, 0.5, 0.5});
