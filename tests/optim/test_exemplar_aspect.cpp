@@ -81,12 +81,13 @@ TEST_CASE("a synthesis from a 1.6 x 1 exemplar keeps its aspect and its spacing 
   CHECK(sx == Approx(0.1).epsilon(1e-6));
   CHECK(sy == Approx(0.1).epsilon(1e-6));
 
-  // The Gabor method (quick settings) on the same exemplar: the same rectangle, the
-  // exemplar's density, no squeeze of the mean nearest-neighbour distance.
-  const nlohmann::json gabor = resolve_run_config({{"evaluate", false}}, {});
+  // The Gabor method (quick settings) on the same exemplar: u x u copies of its rectangle at
+  // the exemplar's density. u = 3: the quick grid's coarse maps reach about 1 exemplar unit,
+  // and a window must hold that margin on both sides and an interior.
+  const nlohmann::json gabor = resolve_run_config({{"upscale", 3}, {"evaluate", false}}, {});
   const SynthesisResult g = synthesize(ex, gabor, options);
-  CHECK(g.output.domain().width() == Approx(3.2));
-  CHECK(g.output.domain().height() == Approx(2.0));
+  CHECK(g.output.domain().width() == Approx(4.8));
+  CHECK(g.output.domain().height() == Approx(3.0));
   const double density_ratio = (static_cast<double>(g.output.size()) / g.output.domain().area()) /
                                (static_cast<double>(ex.size()) / ex.domain().area());
   CHECK(density_ratio == Approx(1.0).epsilon(0.1));
