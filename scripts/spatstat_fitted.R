@@ -7,8 +7,8 @@
 #   Rscript scripts/spatstat_fitted.R EXEMPLAR OUT_STEM DRAWS [U=2] [MODEL=auto]
 #
 # EXEMPLAR: a plain point file (scripts/spatstat_export.R writes them; a "class" column makes
-# it multitype). Writes OUT_STEM_d001.txt ... on [0, U W] x [0, U H] (exemplar units: eval
-# with --zoom 1), seeded by the draw number. MODEL:
+# it multitype). DRAWS: a count N (draws 1..N) or a range A:B. Writes OUT_STEM_dNNN.txt on
+# [0, U W] x [0, U H] (exemplar units: eval with --zoom 1), seeded by the draw number. MODEL:
 #   poisson        ppm(X ~ 1)                        (multitype: ~ marks)
 #   strauss        ppm(X ~ 1, StraussHard(r)): Strauss with a hard core (estimated by
 #                  spatstat from the closest pair), r by profile likelihood over 20 values
@@ -33,7 +33,10 @@ if (length(args) < 3) {
   cat("usage: Rscript scripts/spatstat_fitted.R EXEMPLAR OUT_STEM DRAWS [U] [MODEL]\n", file = stderr())
   quit(status = 2)
 }
-draws <- as.integer(args[3])
+draws <- if (grepl(":", args[3])) {
+  ab <- as.integer(strsplit(args[3], ":")[[1]])
+  seq(ab[1], ab[2])
+} else seq_len(as.integer(args[3]))
 U <- if (length(args) >= 4) as.numeric(args[4]) else 2
 model <- if (length(args) >= 5) args[5] else "auto"
 
@@ -86,7 +89,7 @@ print(fit)
 # where the exemplar is a window cut out of a larger pattern. Cluster models simulate their
 # parents beyond the window themselves.
 margin <- 0.25 * min(diff(W$xrange), diff(W$yrange))
-for (d in seq_len(draws)) {
+for (d in draws) {
   set.seed(d)
   Y <- if (inherits(fit, "kppm")) simulate(fit, nsim = 1, window = big, drop = TRUE) else
     simulate(fit, nsim = 1, w = grow.rectangle(big, margin), drop = TRUE, progress = FALSE)

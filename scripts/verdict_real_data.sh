@@ -49,11 +49,10 @@ touch "$results"
 for set in $sets; do
   ex="$dir/exemplars/$set.txt"
   # The fitted model's draws (seeds as draw numbers), in exemplar units: eval with --zoom 1.
-  max_seed=$(printf '%s\n' $seeds | sort -n | tail -1)
-  if [[ ! -f $dir/fitted/${set}_d$(printf '%03d' "$max_seed").txt ]]; then
-    Rscript scripts/spatstat_fitted.R "$ex" "$dir/fitted/$set" "$max_seed" 2 > "$dir/fitted/$set.log" 2>&1
-  fi
   for seed in $seeds; do
+    if [[ ! -f $dir/fitted/${set}_d$(printf '%03d' "$seed").txt ]]; then
+      Rscript scripts/spatstat_fitted.R "$ex" "$dir/fitted/$set" "$seed:$seed" 2 >> "$dir/fitted/$set.log" 2>&1
+    fi
     row "$set" fitted "$seed" "$ex" "$dir/fitted/${set}_d$(printf '%03d' "$seed").txt" --zoom 1 >> "$results"
   done
   for method in $methods; do
