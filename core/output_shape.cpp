@@ -1,5 +1,6 @@
 #include "core/output_shape.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -42,11 +43,17 @@ double OutputShape::expected_points(const PointSet& ex) const {
 
 std::string OutputShape::describe() const {
   if (!rectangle) return "u = " + std::to_string(upscale) + " (unit square, " + std::to_string(upscale * upscale) + " exemplars)";
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "%g x %g exemplar units, %s border", width, height,
-                exemplar_pad ? "context" : clean_border ? "clean" : "published");
+  char buf[240];
+  const char* border = exemplar_pad ? "context" : clean_border ? "clean" : "published";
+  if (from_upscale)
+    std::snprintf(buf, sizeof buf, "u = %d (%d x %d copies of the rectangular exemplar: %g x %g exemplar units, %s border)",
+                  upscale, upscale, upscale, width, height, border);
+  else
+    std::snprintf(buf, sizeof buf, "%g x %g exemplar units, %s border", width, height, border);
   return buf;
 }
+
+bool is_square(const Domain& d) { return std::abs(d.width() - d.height()) <= 1e-9 * std::max(d.width(), d.height()); }
 
 nlohmann::json output_defaults() {
   // null size and points: the paper's u x u output ("upscale").
@@ -59,11 +66,19 @@ OutputShape resolve_output_shape(const nlohmann::json& r, const PointSet& ex) {
   o.upscale = get_int(r, "upscale", "");
   const auto& j = r.at("output");
   const bool has_size = !j["size"].is_null(), has_points = !j["points"].is_null();
-  if (!has_size && !has_points) return o;
+  const Domain E = ex.domain();
+  if (!has_size && !has_points && is_square(E)) return o;
   if (has_size && has_points) throw config_error("output", "give \"size\" or \"points\", not both");
   o.rectangle = true;
-  const Domain E = ex.domain();
-  if (has_size) {
+  if (!has_size && !has_points) {
+    // A rectangular exemplar: the paper's unit square would pack u^2 exemplars' points into a
+    // square of u x u exemplar heights (a 1.6 x 1 exemplar's at 1.6 times its density, its
+    // pattern squeezed); u x u copies of its rectangle, in exemplar units, keep its shape and
+    // its scale.
+    o.from_upscale = true;
+    o.width = o.upscale * E.width();
+    o.height = o.upscale * E.height();
+  } else if (has_size) {
     const auto& s = j["size"];
     if (!s.is_array() || s.size() != 2 || !s[0].is_number() || !s[1].is_number())
       throw config_error("output.size", "expected [width, height] in exemplar units");

@@ -3,6 +3,10 @@
 //
 //   the paper's (no "output"):  the unit square holding u^2 times the exemplar's points;
 //                               the pattern is the exemplar's zoomed out by u ("upscale").
+//                               A rectangular exemplar (sides not equal) gets the rectangle
+//                               [0, u W] x [0, u H] in exemplar units instead, as if "size"
+//                               said so: the square would squeeze its pattern to the square's
+//                               aspect.
 //   {"size": [W, H]}:           the rectangle [0, W] x [0, H] in EXEMPLAR units: points keep
 //                               the exemplar's spacing; each class keeps its density.
 //   {"points": N}:              a square of the area that holds N points at the exemplar's
@@ -29,7 +33,8 @@ namespace ppsynth {
 
 struct OutputShape {
   int upscale = 2;             // the paper's u (used when !rectangle)
-  bool rectangle = false;      // true: "size" or "points" given (exemplar units)
+  bool rectangle = false;      // true: "size" or "points" given, or a rectangular exemplar (exemplar units)
+  bool from_upscale = false;   // the rectangle is u x u copies of a rectangular exemplar (no "output" given)
   double width = 0, height = 0;  // the output rectangle's size (exemplar units; rectangle only)
   bool clean_border = true;    // rectangle only: synthesise padded, keep the crop
   bool exemplar_pad = false;   // "context": the pad holds the tiled exemplar, frozen
@@ -54,6 +59,9 @@ struct OutputShape {
   // The config's shape in words ("u = 2 (unit square)", "4 x 1 exemplar units, clean border").
   std::string describe() const;
 };
+
+// Sides equal to 1e-9 of the longer.
+bool is_square(const Domain& d);
 
 // The run config's defaults for "output" (declared once, here).
 nlohmann::json output_defaults();

@@ -13,6 +13,7 @@
 #include "core/metrics/overlap.hpp"
 #include "core/metrics/patches.hpp"
 #include "core/metrics/periodogram.hpp"
+#include "core/metrics/second_order_report.hpp"
 #include "core/metrics/spectrum.hpp"
 #include "core/metrics/summary_stats.hpp"
 
@@ -154,6 +155,7 @@ void check_eval_options(const EvalOptions& opt) {
   if (opt.crops < 1 || opt.crops > kMaxCrops)
     throw InputError("crops (--crops) must be in 1.." + std::to_string(kMaxCrops) + " (got " +
                      std::to_string(opt.crops) + ")");
+  if (opt.verdict) check_verdict_options(opt.verdict_options);
   if (opt.spectrum && (opt.spectrum_frequency < 1 || opt.spectrum_frequency > kMaxPeriodogramFrequencies))
     throw InputError("spectrum_frequency must be in 1.." + std::to_string(kMaxPeriodogramFrequencies));
 }
@@ -235,6 +237,17 @@ json evaluate(const PointSet& exemplar, const PointSet& output, const EvalOption
     po.frequencies = opt.spectrum_frequency;
     r["spectrum"]["peak_ratio"] = {{"exemplar", num(spectrum_peak(periodogram(exemplar, po)).ratio)},
                                    {"output", num(spectrum_peak(periodogram(output, po)).ratio)}};
+  }
+  // In exemplar units, at the zoom the patches were cut at (given, or the densities').
+  if (opt.second_order) {
+    progress("K, L, g and mark correlations");
+    r["second_order"] = second_order_report(exemplar, output, plan.zoom, opt.include_curves);
+  }
+  if (opt.verdict) {
+    progress("verdict");
+    VerdictOptions v = opt.verdict_options;
+    v.zoom = plan.zoom;
+    r["verdict"] = verdict(exemplar, output, v);
   }
   r["options"] = {{"bins", opt.pcf.bins},
                   {"r_max_factor", opt.pcf.r_max_factor},
@@ -365,6 +378,29 @@ std::string format_evaluation(const json& r) {
       os << line;
     }
   }
+  if (r.contains("second_order")) {
+    os << "\nK, L, g (spatstat's estimators, translation correction, exemplar units; zoom "
+       << f(r["second_order"]["zoom"], "%.4g") << ")\n";
+    os << "                  sup |L_out - L_ex|   in mean spacings\n";
+    for (const auto& row : r["second_order"]["rows"]) {
+      const std::string kind = row["row"].get<std::string>();
+      const std::string name = kind == "all" ? "all classes"
+                               : kind == "class" ? "class " + std::to_string(row["class"].get<int>())
+                                                 : "pair " + std::to_string(row["ci"].get<int>()) + "-" +
+                                                       std::to_string(row["cj"].get<int>());
+      std::snprintf(line, sizeof line, "  %-16s %18s %19s\n", name.c_str(), f(row["l_sup"], "%.5f").c_str(),
+                    f(row["l_sup_spacings"], "%.4f").c_str());
+      os << line;
+    }
+    for (const auto& m : r["second_order"]["mark_correlation"]) {
+      if (m.contains("skipped"))
+        os << "  mark correlation of '" << m["attribute"].get<std::string>() << "': " << m["skipped"].get<std::string>() << "\n";
+      else
+        os << "  mark correlation of '" << m["attribute"].get<std::string>() << "': sup |k_mm difference| "
+           << f(m["sup"], "%.4f") << "\n";
+    }
+  }
+  if (r.contains("verdict")) os << "\n" << format_verdict(r["verdict"]);
   return os.str();
 }
 

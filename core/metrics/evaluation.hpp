@@ -40,6 +40,10 @@
 //   "spectrum": { "frequency", "exemplar", "output" } radially averaged power (optional),
 //              with "peak_ratio": { "exemplar", "output" } (periodogram.hpp: the strongest
 //              frequency over the median of its ring; tiled copies and lattices score high)
+//   "second_order": the field's K, L, g per row and the mark correlations, exemplar and
+//              output in exemplar units (second_order_report.hpp; unless second_order is false)
+//   "verdict": the two-sample test per row, "is the output a plausible realisation of the
+//              exemplar's process?" (verdict.hpp; unless verdict is false)
 //   "options": the PCF options used (and wasserstein_exact_pairs).
 // Wasserstein per row: "wasserstein_method" "exact" | "subsample". Beyond the exact limit
 // (EvalOptions::wasserstein_max_pairs, |exemplar| x |patch| per patch; wasserstein.hpp)
@@ -59,6 +63,7 @@
 
 #include "core/metrics/eval_protocol.hpp"
 #include "core/metrics/pcf.hpp"
+#include "core/metrics/verdict.hpp"
 #include "core/metrics/wasserstein.hpp"
 #include "core/point_set.hpp"
 
@@ -74,7 +79,10 @@ struct EvalOptions {
   PatchProtocol protocol = PatchProtocol::Auto;  // eval_protocol.hpp
   int crops = kDefaultCrops;                     // crops protocol: how many crops
   uint64_t crop_seed = kDefaultCropSeed;         // crops protocol: where they go
-  double zoom = 0;  // crops protocol: output units per exemplar unit (a run's OutputShape::zoom()); 0: from the densities
+  double zoom = 0;  // crops protocol, second order, verdict: output units per exemplar unit (a run's OutputShape::zoom()); 0: from the densities
+  bool second_order = true;  // K, L, g, mark correlation (second_order_report.hpp)
+  bool verdict = true;       // the two-sample test (verdict.hpp); its zoom is `zoom`'s
+  VerdictOptions verdict_options;
 };
 
 // Refuses options no evaluation can use (InputError naming the option and the command's

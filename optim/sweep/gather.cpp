@@ -89,6 +89,21 @@ std::vector<std::pair<std::string, double>> metric_values(const nlohmann::json& 
   for (const auto& c : m.value("classes", nlohmann::json::array())) patch("class " + c["class"].dump(), c);
   for (const auto& c : m.value("cross", nlohmann::json::array()))
     add("classes " + c["ci"].dump() + "-" + c["cj"].dump() + "/pcf_mse", c.value("pcf_mse", nlohmann::json()));
+  // spatstat's L (sup distance) and the verdict's p-value and pass (1/0: the mean over seeds
+  // is the pass rate), in the scopes above.
+  auto scope_of = [](const nlohmann::json& row) {
+    const std::string kind = row.value("row", std::string());
+    return kind == "class" ? "class " + row["class"].dump()
+           : kind == "pair" ? "classes " + row["ci"].dump() + "-" + row["cj"].dump()
+                            : std::string("all");
+  };
+  if (const auto so = m.find("second_order"); so != m.end())
+    for (const auto& row : so->value("rows", nlohmann::json::array())) add(scope_of(row) + "/l_sup", row.value("l_sup", nlohmann::json()));
+  if (const auto vd = m.find("verdict"); vd != m.end())
+    for (const auto& row : vd->value("rows", nlohmann::json::array())) {
+      add(scope_of(row) + "/verdict_p", row.value("p", nlohmann::json()));
+      if (row.value("pass", nlohmann::json()).is_boolean()) add(scope_of(row) + "/verdict_pass", row["pass"].get<bool>() ? 1.0 : 0.0);
+    }
   return v;
 }
 

@@ -3,8 +3,10 @@
 // output against its exemplar: PCF MSE, Wasserstein and Chamfer over patches of the output
 // (the paper's 4 quadrants, or N random exemplar-sized crops for rectangles and other sizes:
 // core/metrics/eval_protocol.hpp), all classes, per class, cross-class PCF, relative radius,
-// disk overlaps, border share. Human table by default; --json prints the full result (with
-// PCF curves).
+// disk overlaps, border share; spatstat's K, L, g and mark correlations in exemplar units
+// (core/metrics/second_order_report.hpp) and the verdict, a p-value per row for "is the output
+// a plausible realisation of the exemplar's process?" (core/metrics/verdict.hpp, docs/verdict.md).
+// Human table by default; --json prints the full result (with curves).
 // Sub-quadratic in the point count (k-d tree searches) except the exact Wasserstein, which
 // is exact up to --wasserstein-exact-limit pairs per quadrant and a labelled subsample
 // estimate beyond (core/metrics/wasserstein.hpp); inputs of 50,000+ points log progress.
@@ -22,7 +24,8 @@ struct Args {
   std::string exemplar, output, out_file, format = "auto", protocol = "auto";
   int crops = ppsynth::kDefaultCrops;
   uint64_t crop_seed = ppsynth::kDefaultCropSeed;
-  bool json = false, no_curves = false, spectrum = false, periodic = false;
+  bool json = false, no_curves = false, spectrum = false, periodic = false, no_verdict = false, no_second_order = false;
+  ppsynth::VerdictOptions verdict;
   int bins = 100;
   double r_max = 0, zoom = 0;
   size_t wasserstein_pairs = ppsynth::kWassersteinExactPairs;
@@ -54,6 +57,17 @@ ppsynth::app::RunFn setup(CLI::App& app) {
                  "crops protocol: output units per exemplar unit (0.5 for the paper's u = 2 square, 1 for a rectangle in "
                  "exemplar units; default 0: from the two densities, which rescales an output made at another density)")
       ->capture_default_str();
+  app.add_flag("--no-second-order", a->no_second_order, "leave out K, L, g and the mark correlations (spatstat's estimators)");
+  app.add_flag("--no-verdict", a->no_verdict, "leave out the verdict (the two-sample test per class and class pair)");
+  app.add_option("--verdict-split", a->verdict.split, "verdict: the exemplar cut into N x N sub-windows, 1..20")
+      ->capture_default_str();
+  app.add_option("--verdict-guard", a->verdict.guard,
+                 "verdict: share of a sub-window cell's side left out between sub-windows, 0..0.9")
+      ->capture_default_str();
+  app.add_option("--verdict-permutations", a->verdict.permutations, "verdict: random reassignments, 19..1000000")
+      ->capture_default_str();
+  app.add_option("--verdict-seed", a->verdict.seed, "verdict: seed of the reassignments")->capture_default_str();
+  app.add_option("--verdict-alpha", a->verdict.alpha, "verdict: a row passes when p >= alpha")->capture_default_str();
   return [a]() {
     ppsynth::EvalOptions opt;
     opt.protocol = ppsynth::parse_patch_protocol(a->protocol);
@@ -66,6 +80,9 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     opt.pcf.bins = a->bins;
     opt.pcf.r_max = a->r_max;
     opt.wasserstein_max_pairs = a->wasserstein_pairs;
+    opt.second_order = !a->no_second_order;
+    opt.verdict = !a->no_verdict;
+    opt.verdict_options = a->verdict;
     ppsynth::check_eval_options(opt);  // before reading: a bad option is reported first
     ppsynth::ReadOptions ro;
     ro.format = ppsynth::parse_format(a->format);

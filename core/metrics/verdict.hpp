@@ -1,0 +1,62 @@
+#pragma once
+// The verdict: "is this output a plausible realisation of the exemplar's process?", as a
+// two-sample test with a p-value for all points, per class and per class pair.
+//
+// Test: Hahn's (2012) studentized permutation test of equal K-functions, with sub-windows as
+// the replicates. Chosen over the alternatives because it needs no model of the process (a
+// parametric bootstrap needs one fitted to every exemplar, and tests that model rather than
+// the exemplar) and no simulations from it (a global envelope test needs them); it uses the
+// two patterns alone, and its studentization keeps it valid when the groups' variances differ.
+//
+//   1. Both patterns in exemplar units: the output's coordinates divided by the zoom (output
+//      units per exemplar unit; given, or from the densities, crops.hpp).
+//   2. Units: the exemplar's window cut into split x split cells; the output cut into as many
+//      cells of that size as fit (from its corner). Each cell is shrunk by guard / 2 of its
+//      side on every side (guard = the share of a cell's side left between two sub-windows),
+//      so that neighbouring sub-windows share less of a cluster or of a hard core's reach.
+//   3. Per sub-window, K with the translation correction (second_order.hpp) on r_values
+//      radii in (0, r_max], r_max = a quarter of the sub-window's shorter side (spatstat's
+//      rule); "all" takes every point, "class k" its points, "pair (i, j)" K_ij of i to j
+//      (symmetric under translation). A sub-window with fewer than 2 points of the class (1 of
+//      each type for a pair) has no K and is left out of that row, in both groups alike.
+//   4. T = sum_r (mean_1(r) - mean_2(r))^2 / (var_1(r) / n_1 + var_2(r) / n_2) * dr over the
+//      radii where the denominator is > 0 (Hahn's statistic, K-bar the plain means).
+//   5. p = (1 + #{T* >= T}) / (1 + permutations), T* over random reassignments of the
+//      sub-windows to groups of the same sizes (seeded: the same p for the same inputs).
+// A row needs at least 2 sub-windows in each group; else its p is null with the reason.
+// The calibration (independent realisations pass at the nominal rate) and the power of
+// these defaults are measured in docs/verdict.md.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/point_set.hpp"
+
+namespace ppsynth {
+
+struct VerdictOptions {
+  int split = 2;            // the exemplar in split x split sub-windows
+  double guard = 0.1;       // share of a cell's side left out between sub-windows, [0, 0.9]
+  int permutations = 1999;  // random reassignments
+  uint64_t seed = 1;
+  int r_values = 64;        // radii in (0, r_max]
+  double alpha = 0.05;      // "pass" means p >= alpha
+  double zoom = 0;          // output units per exemplar unit; 0: from the densities
+};
+
+// InputError naming the eval flag for options no test can use.
+void check_verdict_options(const VerdictOptions& opt);
+
+// { "test", "statistic", "split", "guard", "zoom", "sub_window": [w, h] (exemplar units),
+//   "r_max", "permutations", "seed", "alpha",
+//   "rows": [ { "row": "all" | "class" | "pair", "class" / "ci", "cj", "label"(s),
+//               "p" (null when untestable), "pass", "statistic", "units": [exemplar, output],
+//               "reason" (when untestable) } ] }
+nlohmann::json verdict(const PointSet& exemplar, const PointSet& output, const VerdictOptions& opt = {});
+
+// Lines for eval's table: one per row, "verdict  all classes   p = 0.412  pass (4 + 16 sub-windows)".
+std::string format_verdict(const nlohmann::json& v);
+
+}  // namespace ppsynth
