@@ -49,7 +49,7 @@ for p in python3 /usr/bin/python3; do
   if command -v "$p" > /dev/null && "$p" -c 'import torch' 2> /dev/null; then py="$p"; break; fi
 done
 [ -n "$py" ] || fail "no python3 with torch: the build takes the wheel's LibTorch (torch.utils.cmake_prefix_path)"
-say "$(uname -m), $(nproc) cores; $(cmake --version | head -1); ninja $(ninja --version 2> /dev/null || echo missing)"
+say "$(uname -m), $(nproc) cores; $(c++ --version | head -1); $(cmake --version | head -1); ninja $(ninja --version 2> /dev/null || echo missing)"
 say "torch: $("$py" -c 'import torch; print(torch.__version__, "CUDA", torch.version.cuda, "devices", torch.cuda.device_count() if torch.cuda.is_available() else 0)')"
 if command -v nvidia-smi > /dev/null; then
   say "GPU: $(nvidia-smi --query-gpu=name,memory.total,driver_version --format=csv,noheader | head -1)"

@@ -49,33 +49,31 @@ void check_against_kernel(GaborMapsPath other, const torch::Device& device, torc
   auto pts = uniform(n, 2, 1, dtype);
   auto w = uniform(n, 2, 2, dtype) + 0.1;
   auto jitter = (uniform(res * res, 2, 3, dtype) - 0.5) / (res + 1);
-  for (int A : {0, 1, 2})
-    for (bool spatial_only : {false, true})
-      for (bool periodic : {false, true})
-        for (int k : {6, n}) {
-          GaborMapsOptions o;
-          o.res = res;
-          o.upscale = 2;
-          o.k = k;
-          o.spatial_only = spatial_only;
-          o.periodic = periodic;
-          auto wa = A == 0 ? torch::Tensor() : w.narrow(1, 0, A);
-          GaborMapsOptions kernel = o, tested = o;
-          kernel.path = GaborMapsPath::cpu_kernel;
-          tested.path = other;
-          const int C = GaborFeatureMaps(o)->channels(A);
-          auto probe = uniform(C * res * res, 1, 4, dtype).view({1, C, res, res}) - 0.5;
-          for (const auto& j : {torch::Tensor(), jitter}) {
-            const auto a = evaluate(kernel, pts, wa, j, probe, 0.2, torch::kCPU);
-            const auto b = evaluate(tested, pts, wa, j, probe, 0.2, device);
-            INFO("A=" << A << " spatial_only=" << spatial_only << " periodic=" << periodic << " k=" << k
-                      << " jitter=" << j.defined() << " on " << device);
-            CHECK(b.maps.sizes() == a.maps.sizes());
-            CHECK(relative_difference(b.maps, a.maps) < tolerance);
-            CHECK(a.grad.abs().max().item<double>() > 1e-3);  // a gradient worth comparing
-            CHECK(relative_difference(b.grad, a.grad) < tolerance);
-          }
-        }
+  // Every combination as bits of `variant`: attributes (0, 1, 2), spatial only, periodic, k.
+  for (int variant = 0; variant < 3 * 8; ++variant) {
+    const int A = variant % 3;
+    const bool spatial_only = variant / 3 % 2, periodic = variant / 6 % 2;
+    const int k = variant / 12 ? n : 6;
+    GaborMapsOptions kernel{res, 2.0, k};
+    kernel.spatial_only = spatial_only;
+    kernel.periodic = periodic;
+    GaborMapsOptions tested = kernel;
+    kernel.path = GaborMapsPath::cpu_kernel;
+    tested.path = other;
+    auto wa = A == 0 ? torch::Tensor() : w.narrow(1, 0, A);
+    const int C = GaborFeatureMaps(kernel)->channels(A);
+    auto probe = uniform(C * res * res, 1, 4, dtype).view({1, C, res, res}) - 0.5;
+    for (const auto& j : {torch::Tensor(), jitter}) {
+      const auto a = evaluate(kernel, pts, wa, j, probe, 0.2, torch::kCPU);
+      const auto b = evaluate(tested, pts, wa, j, probe, 0.2, device);
+      INFO("A=" << A << " spatial_only=" << spatial_only << " periodic=" << periodic << " k=" << k
+                << " jitter=" << j.defined() << " on " << device);
+      CHECK(b.maps.sizes() == a.maps.sizes());
+      CHECK(relative_difference(b.maps, a.maps) < tolerance);
+      CHECK(a.grad.abs().max().item<double>() > 1e-3);  // a gradient worth comparing
+      CHECK(relative_difference(b.grad, a.grad) < tolerance);
+    }
+  }
 }
 
 bool cuda_here() {
