@@ -37,20 +37,20 @@ torch::Tensor cross_corr(const torch::Tensor& x, const torch::Tensor& k, const s
   auto X = torch::fft::rfft2(x, std::vector<int64_t>{Ph, Pw});
   auto K = torch::fft::rfft2(k, std::vector<int64_t>{Ph, Pw});
   auto r = torch::fft::irfft2(X * K.conj(), std::vector<int64_t>{Ph, Pw});
-  auto wrap = [](const std::vector<int64_t>& lags, int64_t P) {
-    std::vector<int64_t> idx;
-    for (auto a : lags) idx.push_back(((a % P) + P) % P);
-    return torch::tensor(idx, torch::kLong);
+  // The kept lags are consecutive, so their indices are made on the device (no host copy
+  // per evaluation): lag a sits at a mod P.
+  auto wrap = [&](const std::vector<int64_t>& lags, int64_t P) {
+    return torch::arange(lags.front(), lags.back() + 1, x.options().dtype(torch::kLong)).remainder(P);
   };
   return r.index_select(-2, wrap(la, Ph)).index_select(-1, wrap(lb, Pw));
 }
 
+// (H - |a|)(W - |b|) for the kept lags, made on the device of `opt` as cross_corr's indices.
 torch::Tensor overlap_norm(int64_t H, int64_t W, const std::vector<int64_t>& la, const std::vector<int64_t>& lb,
                            const torch::TensorOptions& opt) {
-  std::vector<double> nh, nw;
-  for (auto a : la) nh.push_back(static_cast<double>(H - std::abs(a)));
-  for (auto b : lb) nw.push_back(static_cast<double>(W - std::abs(b)));
-  auto th = torch::tensor(nh, torch::kFloat64), tw = torch::tensor(nw, torch::kFloat64);
+  const auto f64 = opt.dtype(torch::kFloat64);
+  auto th = H - torch::arange(la.front(), la.back() + 1, f64).abs();
+  auto tw = W - torch::arange(lb.front(), lb.back() + 1, f64).abs();
   return torch::outer(th, tw).to(opt.dtype());
 }
 

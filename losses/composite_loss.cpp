@@ -9,7 +9,7 @@ CompositeLoss::CompositeLoss(const json& specs, const std::string& key_path) {
     json resolved;
     auto loss = LossRegistry::instance().create(specs[i], kp, &resolved);
     const double w = get_number(resolved, "weight", kp);
-    terms_.push_back(Term{resolved["type"], w, std::move(loss)});
+    terms_.push_back(Term{resolved["type"], w, std::move(loss), {}});
     resolved_.push_back(resolved);
   }
 }
@@ -22,7 +22,7 @@ torch::Tensor CompositeLoss::forward(const Features& out) {
   torch::Tensor total;
   for (auto& t : terms_) {
     auto v = t.loss->forward(out);
-    t.last_value = v.item<double>();
+    t.last = v.detach();
     auto wv = v * t.weight;
     total = total.defined() ? total + wv : wv;
   }

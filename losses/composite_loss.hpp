@@ -20,7 +20,10 @@ class CompositeLoss {
     std::string type;
     double weight;
     std::unique_ptr<FeatureLoss> loss;
-    double last_value = 0;  // unweighted, from the last forward
+    // Unweighted, from the last forward; kept as a tensor so that a forward on a CUDA device
+    // does not wait for the device (read it when needed).
+    torch::Tensor last;
+    double last_value() const { return last.defined() ? last.item<double>() : 0.0; }
   };
   const std::vector<Term>& terms() const { return terms_; }
   const json& resolved() const { return resolved_; }  // specs with defaults filled in

@@ -21,7 +21,8 @@ class SlicedWassersteinLoss : public FeatureLoss {
     for (int l : layers_) {
       const auto& F = layer_of(ex, l, "sliced_wasserstein");
       const int64_t C = F.size(1);
-      auto d = at::normal(0.0, 1.0, {C, C}, gen).to(F.scalar_type());
+      // Drawn on the CPU from the seed (the same directions on every device), moved once per stage.
+      auto d = at::normal(0.0, 1.0, {C, C}, gen).to(F.device(), F.scalar_type());
       d = d / d.norm(2, 1, true);
       dirs_.push_back(d);
       targets_.push_back(project_sorted(F.detach(), d).detach());

@@ -3,9 +3,13 @@
 #include <ATen/Parallel.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <string>
 
+#include "core/error.hpp"
 #include "core/neighbors.hpp"
 #include "models/feature_grid.hpp"
+#include "models/gabor_maps_params.hpp"
 
 namespace ppsynth {
 
@@ -30,12 +34,6 @@ std::vector<GaborChannel> gabor_channels(int A, bool spatial_only) {
   }
   return ch;
 }
-
-namespace {
-
-constexpr double kTwoPi = 6.283185307179586;
-
-}  // namespace
 
 torch::Tensor grid_knn(const torch::Tensor& points, const torch::Tensor& grid, int k, bool periodic) {
   auto p = points.detach().to(torch::kFloat64).contiguous();
@@ -137,40 +135,6 @@ inline void eval_term(T dx, T dy, T inv2s2, const Phases<T>& P, int64_t i, const
     t.sin_t[f] = Sx * Cy + Cx * Sy;  // sin(a + b)
   }
 }
-
-// Filled from GaborMapsOptions by forward() and from the autograd context by backward(): no
-// defaults of its own (those are GaborMapsOptions').
-struct MapsParams {
-  double sigma = 0;        // output-grid sigma (already divided by u)
-  double frequency = 0;    // f = base_frequency u
-  int k = 0;
-  int divisor = 0;  // each grid position's sum over its k neighbours is divided by this
-  bool periodic = false;
-  std::vector<GaborChannel> channels;
-
-  // Round trip through the autograd context (IValues), so the graph owns its parameters.
-  void save(torch::autograd::AutogradContext* ctx) const {
-    std::vector<int64_t> codes;
-    for (auto& c : channels) codes.push_back((c.freq + 1) * 1000 + (c.weight + 1));
-    ctx->saved_data["sigma"] = sigma;
-    ctx->saved_data["frequency"] = frequency;
-    ctx->saved_data["k"] = static_cast<int64_t>(k);
-    ctx->saved_data["divisor"] = static_cast<int64_t>(divisor);
-    ctx->saved_data["periodic"] = periodic;
-    ctx->saved_data["channels"] = codes;
-  }
-  static MapsParams load(torch::autograd::AutogradContext* ctx) {
-    MapsParams mp;
-    mp.sigma = ctx->saved_data["sigma"].toDouble();
-    mp.frequency = ctx->saved_data["frequency"].toDouble();
-    mp.k = static_cast<int>(ctx->saved_data["k"].toInt());
-    mp.divisor = static_cast<int>(ctx->saved_data["divisor"].toInt());
-    mp.periodic = ctx->saved_data["periodic"].toBool();
-    for (int64_t code : ctx->saved_data["channels"].toIntVector())
-      mp.channels.push_back({static_cast<int>(code / 1000) - 1, static_cast<int>(code % 1000) - 1});
-    return mp;
-  }
-};
 
 template <typename T>
 void maps_forward(const torch::Tensor& P, const torch::Tensor& W, const torch::Tensor& grid,
@@ -298,6 +262,38 @@ class GaborMapsFunction : public torch::autograd::Function<GaborMapsFunction> {
 
 }  // namespace
 
+torch::Tensor gabor_maps_cpu_kernel(const torch::Tensor& points, const torch::Tensor& weights, const torch::Tensor& grid,
+                                    const torch::Tensor& idx, const MapsParams& params) {
+  TORCH_CHECK(points.device().is_cpu(), "Gabor maps: the CPU kernel takes CPU tensors, not ", points.device());
+  return GaborMapsFunction::apply(points, weights, grid, idx, params);
+}
+
+bool gabor_maps_tensor_ops_forced() {
+  static const bool forced = [] {
+    const char* env = std::getenv("PPSYNTH_GABOR_MAPS");
+    const std::string v = env ? env : "";
+    if (v.empty() || v == "auto") return false;
+    if (v == "tensor_ops") return true;
+    throw InputError("PPSYNTH_GABOR_MAPS='" + v + "': expected auto (the CPU kernel on the CPU) or tensor_ops");
+  }();
+  return forced;
+}
+
+GaborMapsPath gabor_maps_path(GaborMapsPath requested, const torch::Device& device) {
+  if (requested == GaborMapsPath::automatic)
+    return device.is_cpu() && !gabor_maps_tensor_ops_forced() ? GaborMapsPath::cpu_kernel : GaborMapsPath::tensor_ops;
+  TORCH_CHECK(requested != GaborMapsPath::cpu_kernel || device.is_cpu(), "Gabor maps: the CPU kernel cannot run on ", device);
+  return requested;
+}
+
+const char* gabor_maps_path_name(GaborMapsPath path) {
+  switch (path) {
+    case GaborMapsPath::cpu_kernel: return "cpu_kernel";
+    case GaborMapsPath::tensor_ops: return "tensor_ops";
+    default: return "automatic";
+  }
+}
+
 GaborFeatureMapsImpl::GaborFeatureMapsImpl(GaborMapsOptions options) : opt_(options) {
   TORCH_CHECK(opt_.res >= 2, "GaborFeatureMaps: res must be >= 2");
   TORCH_CHECK(opt_.k >= 1, "GaborFeatureMaps: k must be >= 1");
@@ -324,9 +320,13 @@ torch::Tensor GaborFeatureMapsImpl::forward(const torch::Tensor& points, const t
   mp->channels = gabor_channels(A, opt_.spatial_only);
   torch::Tensor grid = grid_.to(points.scalar_type());
   if (jitter.defined()) grid = grid + jitter.to(points.scalar_type());
-  auto idx = grid_knn(points, grid, mp->k, opt_.periodic);
   auto w = A > 0 ? weights : torch::empty({0, 0}, points.options());
-  auto out = GaborMapsFunction::apply(points, w, grid, idx, *mp);
+  torch::Tensor out;
+  if (gabor_maps_path(opt_.path, points.device()) == GaborMapsPath::cpu_kernel) {
+    out = gabor_maps_cpu_kernel(points, w, grid, grid_knn(points, grid, mp->k, opt_.periodic), *mp);
+  } else {
+    out = gabor_maps_tensor_ops(points, w, grid, grid_knn_tensor_ops(points, grid, mp->k, opt_.periodic), *mp);
+  }
   return out.view({1, static_cast<int64_t>(mp->channels.size()), opt_.res, opt_.res});
 }
 

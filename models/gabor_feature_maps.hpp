@@ -14,7 +14,15 @@
 // analytic backward, so no k x res^2 x C intermediates are stored (the published code keeps
 // several): memory is the output maps plus the res^2 x k neighbour indices.
 // Cost: k-NN O(res^2 (log N + k)); forward and backward O(res^2 k C), independent of N
-// beyond the search. Sigma is given in exemplar units and divided by u (the output is the
+// beyond the search.
+//
+// Two implementations of the same sum and backward (GaborMapsPath): a CPU kernel (threads
+// over grid positions, nanoflann's k-NN), and LibTorch operations that run where the tensors
+// are, a CUDA device included (gather the k neighbours, exp and cos on res^2 x k values per
+// channel, the backward scattered with index_add; the k-NN by brute force on that device,
+// res^2 x N distances in chunks). tests/models/test_gabor_maps_paths.cpp holds them equal on
+// the CPU. PPSYNTH_GABOR_MAPS=tensor_ops makes CPU tensors take the operations too, so the
+// whole test suite can run the arithmetic a CUDA run takes on a machine without one. Sigma is given in exemplar units and divided by u (the output is the
 // exemplar zoomed out by u). The k neighbours are searched in the plane (not on the torus),
 // as in the published code, unless `periodic`: then the domain is the unit torus, each grid
 // position sees the nearest image of every point and p - g is the minimum image. The
@@ -29,6 +37,10 @@
 
 namespace ppsynth {
 
+// Which implementation evaluates the maps: `automatic` takes the CPU kernel for CPU tensors
+// (unless PPSYNTH_GABOR_MAPS=tensor_ops) and the tensor operations for any other device.
+enum class GaborMapsPath { automatic, cpu_kernel, tensor_ops };
+
 struct GaborMapsOptions {
   int res = 128;           // grid positions per axis (the output grid is u * exemplar res)
   double upscale = 1.0;    // u
@@ -41,7 +53,14 @@ struct GaborMapsOptions {
   double base_frequency = 1.5;
   bool spatial_only = false;
   bool periodic = false;   // unit torus: nearest images, minimum-image offsets
+  GaborMapsPath path = GaborMapsPath::automatic;
 };
+
+// The implementation `requested` resolves to for tensors on `device` (an error for the CPU
+// kernel on another device); the environment variable is read once, and a value other than
+// auto or tensor_ops is an InputError naming it.
+GaborMapsPath gabor_maps_path(GaborMapsPath requested, const torch::Device& device);
+const char* gabor_maps_path_name(GaborMapsPath path);  // "cpu_kernel", "tensor_ops" (run.json)
 
 // One output channel: which frequency (-1 = spatial map) and which weight column (-1 = none).
 struct GaborChannel {
@@ -68,9 +87,12 @@ class GaborFeatureMapsImpl : public torch::nn::Module {
 };
 TORCH_MODULE(GaborFeatureMaps);
 
-// The k nearest points (plane or toroidal distance, nanoflann) of every grid position:
-// res^2 x k int64. Part of forward(); public for the benchmark.
+// The k nearest points (plane or toroidal distance) of every grid position, nearest first:
+// res^2 x k int64 on the points' device. grid_knn: nanoflann on the CPU (CPU tensors);
+// grid_knn_tensor_ops: brute force on the points' device. Part of forward(); public for the
+// benchmark and the tests.
 torch::Tensor grid_knn(const torch::Tensor& points, const torch::Tensor& grid, int k, bool periodic = false);
+torch::Tensor grid_knn_tensor_ops(const torch::Tensor& points, const torch::Tensor& grid, int k, bool periodic = false);
 
 // Reference evaluation of Eq. 5 with plain tensor ops (every point a neighbour when k >= N).
 // For tests only: O(res^2 N C) memory.

@@ -36,7 +36,7 @@ class FrozenConvFunction : public torch::autograd::Function<FrozenConvFunction> 
     } else {
       // Only the input's shape is read; its values are not needed for the input gradient.
       auto shape = torch::empty(ctx->saved_data["input_sizes"].toIntVector(), g.options().memory_format(kChannelsLast));
-      gi = std::get<0>(at::convolution_backward(g, shape, saved[0], c10::nullopt, {stride, stride}, {pad, pad}, {1, 1},
+      gi = std::get<0>(at::convolution_backward(g, shape, saved[0], at::OptionalIntArrayRef(), {stride, stride}, {pad, pad}, {1, 1},
                                                 false, {0, 0}, 1, {true, false, false}));
     }
     return {gi, torch::Tensor(), torch::Tensor(), torch::Tensor(), torch::Tensor(), torch::Tensor()};

@@ -11,7 +11,7 @@ void ClassOwnMapTerm::begin_run(const MapTermRun& run) {
   settings_ = run.settings;
   seed_ = run.seed;
   fresh_net_ = run.params["fresh_net_per_class"].get<bool>();
-  if (run.exemplar.num_classes() > 1) pipe_ = std::make_unique<GaborPipeline>(run.params, run.settings, run.seed);
+  if (run.exemplar.num_classes() > 1) pipe_ = std::make_unique<GaborPipeline>(run.params, run.settings, run.seed, run.device);
 }
 
 void ClassOwnMapTerm::begin_group(const Stage& stage, const PointSet& output) {
@@ -19,8 +19,9 @@ void ClassOwnMapTerm::begin_group(const Stage& stage, const PointSet& output) {
   if (fresh_net_) pipe_->redraw_network(seed_ + 7919ull * stage.group);  // as the joint pipeline's
   const size_t own = exemplar_->subset_class(stage.own_class).size();
   pipe_->set_neighbours(settings_.k_per_stage ? static_cast<int>(std::min<size_t>(settings_.k, own)) : settings_.k);
-  out_weights_ = settings_.attr_cols.empty() ? torch::Tensor()
-                                             : normalized_attributes(output.subset(stage.moving), settings_.attr_cols);
+  out_weights_ = settings_.attr_cols.empty()
+                     ? torch::Tensor()
+                     : normalized_attributes(output.subset(stage.moving), settings_.attr_cols).to(pipe_->device());
 }
 
 void ClassOwnMapTerm::begin_stage(const Stage& stage) {

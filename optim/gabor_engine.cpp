@@ -10,6 +10,7 @@
 
 #include "core/memory_budget.hpp"
 #include "core/metrics/border.hpp"
+#include "models/gabor_feature_maps.hpp"
 #include "models/point_tensor.hpp"
 #include "optim/initializer.hpp"
 #include "optim/random_tiles.hpp"
@@ -143,16 +144,17 @@ Features measured_part(const Features& f, const std::vector<double>& part) {
 }  // namespace
 
 GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const SynthesisContext& ctx)
-    : p_(params), exemplar_(exemplar), shape_(ctx.output), ctx_(ctx), jitter_rng_(ctx.seed ^ 0x9e3779b97f4a7c15ull) {
+    : p_(params), exemplar_(exemplar), shape_(ctx.output), ctx_(ctx), device_(ctx.device),
+      jitter_rng_(ctx.seed ^ 0x9e3779b97f4a7c15ull) {
   validate(exemplar, "exemplar");
   s_ = resolve_gabor_settings(p_, exemplar, shape_, ctx.quick);
   if (shape_.rectangle && !p_["terms"].empty())  // they assume the unit torus (optim/point_term.hpp)
     throw config_error("method.terms", "point terms work on the paper's u x u outputs only, not with \"output\"");
   if (shape_.rectangle && !p_["map_terms"].empty())
     throw config_error("method.map_terms", "map terms work on the paper's u x u outputs only, not with \"output\"");
-  pipe_ = std::make_unique<GaborPipeline>(p_, s_, ctx.seed);
+  pipe_ = std::make_unique<GaborPipeline>(p_, s_, ctx.seed, device_);
   map_terms_ = create_map_terms(p_["map_terms"]);
-  for (auto& t : map_terms_) t.term->begin_run(MapTermRun{p_, s_, exemplar, ctx.seed});
+  for (auto& t : map_terms_) t.term->begin_run(MapTermRun{p_, s_, exemplar, ctx.seed, device_});
   terms_ = create_point_terms(p_["terms"]);
   if (s_.relax_iterations > 0)
     relax_terms_ = create_weighted_terms<PointTerm>(
@@ -176,7 +178,7 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
   stats_ = {{"grid_res", s_.res}, {"output_grid_res", s_.out_res}, {"grid_res_per_sigma", s_.sigma_res},
             {"output_grid_res_per_sigma", s_.sigma_out_res}, {"k", s_.k}, {"sigmas", s_.sigmas},
             {"mean_nn_distance", s_.mean_nn_distance},
-            {"map_terms", json::object()}, {"terms", json::object()}};
+            {"map_terms", json::object()}, {"terms", json::object()}, {"runtime", runtime_record()}};
   if (shape_.rectangle) {
     const Domain c = shape_.canvas();
     stats_["output"] = shape_.describe();
@@ -229,6 +231,19 @@ PointSet GaborEngine::synthesised() const {
   PointSet p = out_.subset(idx);
   p.set_domain(shape_.moving_area());
   return p;
+}
+
+json GaborEngine::runtime_record() const {
+  const bool cuda = device_.is_cuda();
+  const std::string net = s_.feature_net.value("precision", "float32");
+  json r = {{"device", device_.str()},
+            // the network's arithmetic: bfloat16 as the net asks, else float32, on TF32 tensor cores where runtime.tf32 applies
+            {"precision", net != "float32" ? net : (cuda && ctx_.tf32 ? "tf32" : "float32")},
+            {"deterministic", cuda ? ctx_.deterministic : true}};
+  const std::string rasterizer = p_["rasterizer"].value("type", "");
+  if (rasterizer == "gabor" || rasterizer == "spatial")
+    r["gabor_maps"] = gabor_maps_path_name(gabor_maps_path(GaborMapsPath::automatic, device_));
+  return r;
 }
 
 json GaborEngine::phase_seconds() const {
@@ -285,15 +300,20 @@ void GaborEngine::enter_group(const Stage& stage) {
   }
   moving_idx_.assign(state_.group_moving.begin(), state_.group_moving.end());
   frozen_idx_.assign(state_.group_frozen.begin(), state_.group_frozen.end());
-  frozen_ = to_local(out_.subset(frozen_idx_));
-  out_weights_ = s_.attr_cols.empty() ? torch::Tensor() : map_weights(concat(frozen_idx_, moving_idx_), stage.target_classes);
-  if (fresh) state_.moving = to_local(out_.subset(moving_idx_));
+  // The group's tensors go to the device once, here (and back at the stage's end).
+  frozen_ = to_local(out_.subset(frozen_idx_)).to(device_);
+  out_weights_ = s_.attr_cols.empty() ? torch::Tensor()
+                                      : map_weights(concat(frozen_idx_, moving_idx_), stage.target_classes).to(device_);
+  // Fresh: from the output; resumed: the checkpoint's (read on the CPU).
+  state_.moving = (fresh ? to_local(out_.subset(moving_idx_)) : state_.moving).to(device_);
+  if (state_.stage_best.defined()) state_.stage_best = state_.stage_best.to(device_);
   state_.moving.set_requires_grad(true);
   if (!window_.torus) {
     const Domain& g = window_.grid;
     const auto& m = window_.movable;
-    lo_ = torch::tensor({{(m.x0 - g.x0) / g.width(), (m.y0 - g.y0) / g.height()}}, torch::kFloat64).to(state_.moving.scalar_type());
-    hi_ = torch::tensor({{(m.x1 - g.x0) / g.width(), (m.y1 - g.y0) / g.height()}}, torch::kFloat64).to(state_.moving.scalar_type());
+    const auto local = torch::TensorOptions().dtype(state_.moving.scalar_type()).device(device_);
+    lo_ = torch::tensor({{(m.x0 - g.x0) / g.width(), (m.y0 - g.y0) / g.height()}}, torch::kFloat64).to(local);
+    hi_ = torch::tensor({{(m.x1 - g.x0) / g.width(), (m.y1 - g.y0) / g.height()}}, torch::kFloat64).to(local);
   }
   measured_.clear();
   if (!window_.torus && s_.statistics_in_output) {
@@ -302,7 +322,7 @@ void GaborEngine::enter_group(const Stage& stage) {
     measured_ = {(o.x0 - g.x0) / g.width(), (o.y0 - g.y0) / g.height(), (o.x1 - g.x0) / g.width(), (o.y1 - g.y0) / g.height()};
   }
   for (auto* terms : {&terms_, &relax_terms_})
-    for (auto& t : *terms) t.term->begin_class(ClassStage{exemplar_, out_, moving_idx_, frozen_idx_, s_.upscale});
+    for (auto& t : *terms) t.term->begin_class(ClassStage{exemplar_, out_, moving_idx_, frozen_idx_, s_.upscale, device_});
   for (auto& t : map_terms_) t.term->begin_group(stage, out_);
 }
 
@@ -370,8 +390,8 @@ void GaborEngine::enter_stage(const Stage& stage) {
   if (stage.border_relax) {
     relax_parked_ = parked_over_uniform();
     // A class the relax leaves alone (method.border_relax.parked) keeps every point where it is.
-    relax_mask_ = relax_this_class() ? border_band()
-                                     : torch::zeros({static_cast<int64_t>(moving_idx_.size()), 1}, torch::kBool);
+    relax_mask_ = (relax_this_class() ? border_band() : torch::zeros({static_cast<int64_t>(moving_idx_.size()), 1}, torch::kBool))
+                      .to(device_);
   }
   json optimizer = p_["optimizer"];
   if (stage.border_relax && s_.relax_lr > 0) optimizer["lr"] = json::array({s_.relax_lr});
@@ -535,7 +555,7 @@ void GaborEngine::finish_stage(const Stage& stage) {
     // A rule that keeps the stage's best iterate: the stage ends there (the group's next
     // stage starts from it too, as `moving` is the tensor it goes on with).
     if (state_.stage_best.defined()) state_.moving.copy_(state_.stage_best);
-    auto w = confined(state_.moving).to(torch::kFloat64);
+    auto w = confined(state_.moving).to(torch::kCPU, torch::kFloat64);
     auto a = w.accessor<double, 2>();
     for (size_t i = 0; i < moving_idx_.size(); ++i) out_[moving_idx_[i]] = to_output(window_, a[i][0], a[i][1]);
   }
@@ -574,7 +594,7 @@ void GaborEngine::finish_stage(const Stage& stage) {
 PointSet GaborEngine::points_in_play() const {
   torch::NoGradGuard ng;
   const auto mv = confined(state_.moving);
-  const auto local = (frozen_.size(0) > 0 ? torch::cat({frozen_, mv}) : mv).to(torch::kFloat64);
+  const auto local = (frozen_.size(0) > 0 ? torch::cat({frozen_, mv}) : mv).to(torch::kCPU, torch::kFloat64);
   const auto a = local.accessor<double, 2>();
   const Domain& g = window_.grid;
   // A window's pattern is its grid's part of where points move: a frozen exemplar pad

@@ -66,6 +66,7 @@ class GaborEngine {
   void save_checkpoint();
   PointSet points_in_play() const;  // the stage's moving and frozen points on its domain
   json phase_seconds() const;       // phases_ by name (run.json's "phase_seconds")
+  json runtime_record() const;      // device, precision, determinism, maps path (run.json's "runtime")
   PointSet synthesised() const;     // out_ without a frozen exemplar pad, on the area where points move
   ProgressEvent event(const Stage& stage) const;
   int iteration_cap(const Stage& stage) const;  // the border relax's count, else method.max_iterations
@@ -81,6 +82,10 @@ class GaborEngine {
   OutputShape shape_;
   WindowLayout layout_;  // rectangles only
   const SynthesisContext& ctx_;
+  // Every tensor of the synthesis lives here (runtime.device); the output PointSet stays on the
+  // CPU, and positions cross at group and stage boundaries only (and when the stopping rule
+  // reads the pattern).
+  torch::Device device_;
   GaborSettings s_;
   std::unique_ptr<GaborPipeline> pipe_;
   std::vector<WeightedMapTerm> map_terms_;

@@ -262,8 +262,8 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   return s;
 }
 
-GaborPipeline::GaborPipeline(const json& p, const GaborSettings& s, uint64_t seed)
-    : p_(p), s_(s), seed_(seed), loss_(p["losses"], "method.losses"), res_(s.sigma_res.at(0)), out_res_(s.sigma_out_res.at(0)) {
+GaborPipeline::GaborPipeline(const json& p, const GaborSettings& s, uint64_t seed, torch::Device device)
+    : p_(p), s_(s), seed_(seed), device_(device), loss_(p["losses"], "method.losses"), res_(s.sigma_res.at(0)), out_res_(s.sigma_out_res.at(0)) {
   build_rasterizers();
   in_channels_ = ex_rast_->channels(static_cast<int>(s.attr_cols.size()));
   redraw_network(seed);
@@ -278,6 +278,8 @@ void GaborPipeline::build_rasterizers() {
     tile_args.divisor = tile_divisor_;
     tile_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", tile_args);
   }
+  for (auto* r : {&ex_rast_, &out_rast_, &tile_rast_})
+    if (*r) (*r)->to(device_);
 }
 
 void GaborPipeline::set_neighbours(int k) {
@@ -297,6 +299,7 @@ void GaborPipeline::set_grid(int sigma_index) {
 void GaborPipeline::redraw_network(uint64_t seed) {
   net_ = FeatureNetRegistry::instance().create(s_.feature_net, "method.feature_net", in_channels_, seed, &resolved_net_);
   resolved_net_.update(net_->choices());
+  net_->to(device_);  // drawn on the CPU from the seed: the same network on every device
 }
 
 void GaborPipeline::set_targets(const torch::Tensor& ex_points, const torch::Tensor& ex_weights, double sigma) {
@@ -307,7 +310,8 @@ void GaborPipeline::set_targets(const torch::Tensor& ex_points, const torch::Ten
     tile_divisor_ = divisor;
     build_rasterizers();
   }
-  auto f = net_->forward(ex_rast_->forward(ex_points, ex_weights, sigma, {}));
+  const auto weights = ex_weights.defined() ? ex_weights.to(device_) : ex_weights;
+  auto f = net_->forward(ex_rast_->forward(ex_points.to(device_), weights, sigma, {}));
   // Tiles are the exemplar's size: their features match the targets' one to one.
   loss_.set_target(f, LossContext{s_.measure_tiles() ? 1 : s_.upscale, seed_});
 }
@@ -320,7 +324,7 @@ torch::Tensor GaborPipeline::draw_jitter(std::mt19937_64& rng, bool tile) const 
   auto j = torch::empty({R * R, 2});
   float* ptr = j.data_ptr<float>();
   for (int64_t i = 0; i < j.numel(); ++i) ptr[i] = unif(rng) * amp;
-  return j;
+  return j.to(device_);
 }
 
 json GaborPipeline::resolved() const {

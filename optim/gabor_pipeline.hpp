@@ -78,9 +78,12 @@ GaborSettings resolve_gabor_settings(const json& params, const PointSet& exempla
 
 class GaborPipeline {
  public:
-  GaborPipeline(const json& params, const GaborSettings& s, uint64_t seed);
+  // Every module and tensor of the pipeline lives on `device` (runtime.device): the points
+  // and weights given to it must be there too; set_targets moves the exemplar's itself.
+  GaborPipeline(const json& params, const GaborSettings& s, uint64_t seed, torch::Device device = torch::kCPU);
 
-  // Exemplar features -> loss targets; once per sigma (and per class stage).
+  // Exemplar features -> loss targets; once per sigma (and per class stage). The exemplar's
+  // points and weights may be on the CPU: they are moved to the pipeline's device.
   void set_targets(const torch::Tensor& ex_points, const torch::Tensor& ex_weights, double sigma);
   // The three stages of one output evaluation.
   torch::Tensor output_maps(const torch::Tensor& points, const torch::Tensor& weights, double sigma,
@@ -92,7 +95,8 @@ class GaborPipeline {
   torch::Tensor loss(const Features& f) { return loss_.forward(f); }
   // Independent uniform offsets in [-1, 1] / (R + 1) per grid position and axis of the output
   // grid (R = out_res) or of a tile (R = res), or an undefined tensor when jitter is off or
-  // meaningless for the rasterizer.
+  // meaningless for the rasterizer. Drawn on the CPU from `rng` (the same offsets on every
+  // device, and the generator's state is what a checkpoint keeps), then moved to the device.
   torch::Tensor draw_jitter(std::mt19937_64& rng, bool tile = false) const;
   // A new random network (the published code draws one per class for attribute scenes).
   void redraw_network(uint64_t seed);
@@ -101,6 +105,7 @@ class GaborPipeline {
   // The grid of sigma stage `sigma_index` (GaborSettings::sigma_res; rebuilds if it changes).
   void set_grid(int sigma_index);
   int output_grid() const { return out_res_; }
+  const torch::Device& device() const { return device_; }
 
   const CompositeLoss& composite() const { return loss_; }
   json resolved() const;  // rasterizer, feature net and losses with every default filled in
@@ -109,6 +114,7 @@ class GaborPipeline {
   json p_;
   GaborSettings s_;
   uint64_t seed_;
+  torch::Device device_;
   // tile_rast_ (method.measure "tiles"): the exemplar's raster, dividing by the exemplar's
   // neighbour count (tile_divisor_) even where a tile holds fewer points.
   std::unique_ptr<Rasterizer> ex_rast_, out_rast_, tile_rast_;

@@ -30,6 +30,7 @@ struct MapTermRun {
   const GaborSettings& settings;
   const PointSet& exemplar;
   uint64_t seed;
+  torch::Device device = torch::kCPU;  // where the run's tensors live (runtime.device)
 };
 
 class MapTerm {

@@ -67,6 +67,13 @@ struct SynthesisContext {
   // Optional explicit initialisation (else the method's own initialiser runs).
   const PointSet* initialization = nullptr;
   bool quick = false;  // tiny grids and few iterations (tests, --quick)
+  // Where a method built on LibTorch keeps its tensors: "cpu" or "cuda:N", the config's
+  // runtime.device resolved and checked (optim/run/runtime.hpp); whether float32 products
+  // there run on TF32 tensor cores and whether CUDA picks deterministic algorithms (both
+  // applied process-wide already; the method records them). The baselines run on the CPU.
+  std::string device = "cpu";
+  bool tf32 = false;
+  bool deterministic = true;
   // Optional: the method records what it measured here (iterations and final loss per
   // stage, wall time per phase, resolved settings such as the grid and sigmas).
   nlohmann::json* stats = nullptr;

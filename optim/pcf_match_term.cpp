@@ -11,7 +11,7 @@
 namespace ppsynth {
 
 PcfMatchTerm::PcfMatchTerm(const PointSet& ex, const PointSet& out, const std::vector<size_t>& moving,
-                           const std::vector<size_t>& frozen, int upscale, bool cross) {
+                           const std::vector<size_t>& frozen, int upscale, bool cross, torch::Device device) {
   if (moving.empty()) return;
   const int cls = out.cls(moving.front());
   for (size_t i : moving)
@@ -32,9 +32,9 @@ PcfMatchTerm::PcfMatchTerm(const PointSet& ex, const PointSet& out, const std::v
     }
     if (r.empty()) return;
     Curve c;
-    c.frozen_rows = std::move(rows);
-    c.radii = torch::tensor(r);
-    c.target = torch::tensor(t);
+    c.frozen_rows = rows.defined() ? rows.to(device) : rows;
+    c.radii = torch::tensor(r).to(device);
+    c.target = torch::tensor(t).to(device);
     c.sigma = opt.sigma_factor * r_max_out;
     curves_.push_back(std::move(c));
   };
@@ -61,7 +61,7 @@ torch::Tensor torus_pcf(const torch::Tensor& a, const torch::Tensor& b, bool sam
   const int64_t n = a.size(0), m = b.size(0);
   double pairs = static_cast<double>(n) * m;
   if (same) {  // each unordered pair once, counted twice (ordered pairs as in the estimator)
-    auto iu = torch::triu_indices(n, n, 1);
+    auto iu = torch::triu_indices(n, n, 1, d.options().dtype(torch::kLong));  // made where d is
     d = d.index({iu[0], iu[1]});
     pairs = static_cast<double>(n) * (n - 1) / 2.0;
   } else {
@@ -98,7 +98,7 @@ class PcfMatchPointTerm : public PointTerm {
   // The registry has checked every key's type against the defaults below.
   explicit PcfMatchPointTerm(const nlohmann::json& p) : cross_(p["cross"].get<bool>()) {}
   void begin_class(const ClassStage& s) override {
-    term_ = std::make_unique<PcfMatchTerm>(s.exemplar, s.output, s.moving, s.frozen, s.upscale, cross_);
+    term_ = std::make_unique<PcfMatchTerm>(s.exemplar, s.output, s.moving, s.frozen, s.upscale, cross_, s.device);
     start_ = -1;
   }
   torch::Tensor evaluate(const torch::Tensor& moving, const torch::Tensor& frozen) override {

@@ -34,8 +34,9 @@ class PcfMatchTerm {
   // class of the moving points gives the auto-PCF target, every frozen class with at least
   // one exemplar point a cross target (when `cross`). Curves whose exemplar side has fewer
   // than two points (auto) or no points (cross) are skipped: their target says nothing.
+  // The curves are kept on `device`, where the positions will be.
   PcfMatchTerm(const PointSet& exemplar, const PointSet& output, const std::vector<size_t>& moving,
-               const std::vector<size_t>& frozen, int upscale, bool cross);
+               const std::vector<size_t>& frozen, int upscale, bool cross, torch::Device device = torch::kCPU);
   // moving: n x 2 wrapped positions (may require grad); frozen: m x 2 in `frozen`'s order.
   torch::Tensor operator()(const torch::Tensor& moving, const torch::Tensor& frozen) const;
   // The number of curves matched (0 = the term is a constant zero).

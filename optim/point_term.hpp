@@ -29,6 +29,7 @@ struct ClassStage {
   const std::vector<size_t>& moving;  // indices into `output`
   const std::vector<size_t>& frozen;
   int upscale;
+  torch::Device device = torch::kCPU;  // where evaluate() gets its positions (runtime.device)
 };
 
 class PointTerm {

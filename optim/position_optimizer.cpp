@@ -30,7 +30,8 @@ std::string save_optimizer(const torch::optim::Optimizer& o) {
 void load_optimizer(torch::optim::Optimizer& o, const std::string& bytes) {
   torch::serialize::InputArchive a;
   std::istringstream in(bytes);
-  a.load_from(in);
+  // The moments go where the positions are (a checkpoint is read on the CPU; runtime.device).
+  a.load_from(in, o.param_groups().at(0).params().at(0).device());
   o.load(a);
 }
 

@@ -27,7 +27,7 @@ std::vector<std::vector<double>> class_pair_min_distance(const PointSet& ps) {
 }
 
 SeparationTerm::SeparationTerm(const PointSet& ex, const PointSet& out, const std::vector<size_t>& moving,
-                               const std::vector<size_t>& frozen, int upscale, double fraction) {
+                               const std::vector<size_t>& frozen, int upscale, double fraction, torch::Device device) {
   const auto dmin = class_pair_min_distance(ex);
   const auto radius_col = out.attribute_index("radius");
   auto threshold = [&](size_t i, size_t j) {
@@ -44,6 +44,8 @@ SeparationTerm::SeparationTerm(const PointSet& ex, const PointSet& out, const st
     for (int64_t b = a + 1; b < n; ++b) tm[a][b] = threshold(moving[a], moving[b]);
     for (int64_t b = 0; b < m; ++b) tf[a][b] = threshold(moving[a], frozen[b]);
   }
+  t_moving_ = t_moving_.to(device);
+  t_frozen_ = t_frozen_.to(device);
 }
 
 namespace {
@@ -74,7 +76,7 @@ class SeparationPointTerm : public PointTerm {
     if (!(fraction_ > 0 && fraction_ <= 2)) throw config_error("method.terms.separation.fraction", "must be in (0, 2]");
   }
   void begin_class(const ClassStage& s) override {
-    term_ = std::make_unique<SeparationTerm>(s.exemplar, s.output, s.moving, s.frozen, s.upscale, fraction_);
+    term_ = std::make_unique<SeparationTerm>(s.exemplar, s.output, s.moving, s.frozen, s.upscale, fraction_, s.device);
   }
   torch::Tensor evaluate(const torch::Tensor& moving, const torch::Tensor& frozen) override {
     return (*term_)(moving, frozen);

@@ -27,9 +27,9 @@ namespace ppsynth {
 class SeparationTerm {
  public:
   // Thresholds for one class stage: `moving` and `frozen` index `output` (radii, if any, are
-  // the output's, i.e. already divided by u).
+  // the output's, i.e. already divided by u), kept on `device`, where the positions will be.
   SeparationTerm(const PointSet& exemplar, const PointSet& output, const std::vector<size_t>& moving,
-                 const std::vector<size_t>& frozen, int upscale, double fraction);
+                 const std::vector<size_t>& frozen, int upscale, double fraction, torch::Device device = torch::kCPU);
   // moving: n x 2 wrapped positions (may require grad); frozen: m x 2 (m may be 0).
   torch::Tensor operator()(const torch::Tensor& moving, const torch::Tensor& frozen) const;
 

@@ -40,10 +40,10 @@ std::string serialize_state(const SynthesisState& s) {
   for (const auto& p : s.positions) xy.insert(xy.end(), {p.x, p.y});
   a.write("positions", doubles(xy));
   a.write("has_moving", torch::tensor(int64_t{s.moving.defined() ? 1 : 0}));
-  if (s.moving.defined()) a.write("moving", s.moving.detach());
+  if (s.moving.defined()) a.write("moving", s.moving.detach().cpu());  // read back on the CPU, moved by the engine
   a.write("stage_losses", doubles(s.stage_losses));
   a.write("stage_watch", doubles(s.stage_watch));
-  if (s.stage_best.defined()) a.write("stage_best", s.stage_best.detach());
+  if (s.stage_best.defined()) a.write("stage_best", s.stage_best.detach().cpu());
   a.write("group_moving", longs(s.group_moving));
   a.write("group_frozen", longs(s.group_frozen));
   a.write("final_points", torch::from_blob(const_cast<uint8_t*>(s.final_points.data()),

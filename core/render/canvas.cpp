@@ -4,22 +4,11 @@
 #include <cairo-svg.h>
 
 #include <algorithm>
-#include <cctype>
-#include <filesystem>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 
 namespace ppsynth::render {
-
-ImageKind image_kind_for(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext == ".png") return ImageKind::Png;
-  if (ext == ".svg") return ImageKind::Svg;
-  if (ext == ".pdf") return ImageKind::Pdf;
-  throw file_error(path, 0, "unknown image extension '" + ext + "' (use .png, .svg or .pdf)");
-}
 
 namespace {
 
@@ -29,11 +18,6 @@ void check(cairo_status_t st, const std::string& path, const char* what) {
 }
 
 }  // namespace
-
-bool image_size_ok(double width, double height) {
-  return width > 0 && height > 0 && width <= kMaxImageSide && height <= kMaxImageSide &&
-         width * height <= kMaxImagePixels;
-}
 
 void render_to_file(const std::string& path, int width, int height,
                     const std::function<void(cairo_t*)>& draw) {

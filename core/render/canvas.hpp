@@ -9,21 +9,9 @@
 
 #include <cairo.h>
 
+#include "core/render/image_file.hpp"
+
 namespace ppsynth::render {
-
-enum class ImageKind { Png, Svg, Pdf };
-
-// Size limits of every figure: cairo's image surfaces stop at 32767 px a side, and an ARGB
-// raster of W x H px needs 4 W H bytes (kMaxImagePixels: 320 MB, what `ppsynth plot --size
-// 8000` needs). Vector files use the same limits so a figure looks the same in every format.
-inline constexpr int kMaxImageSide = 16384;
-inline constexpr double kMaxImagePixels = 80.0e6;
-// True when a width x height figure is within both limits.
-bool image_size_ok(double width, double height);
-
-// Extension (case-insensitive) -> kind. Unknown or missing extension => InputError naming
-// the path and the accepted extensions.
-ImageKind image_kind_for(const std::string& path);
 
 // Creates a width x height surface of the kind `path` asks for, fills it white, calls
 // `draw(cr)`, and writes the file atomically. Throws InputError if cairo reports an error

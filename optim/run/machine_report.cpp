@@ -15,16 +15,22 @@ namespace ppsynth {
 
 namespace {
 
-ConvThroughput conv_throughput(const std::string& path, torch::Dtype dtype, bool channels_last, int R, int reps) {
+ConvThroughput conv_throughput(const std::string& path, torch::Dtype dtype, bool channels_last, int R, int reps,
+                               const c10::Device& device) {
   torch::NoGradGuard ng;
+  auto wait = [&] {
+    if (device.is_cuda()) torch::cuda::synchronize(device.index() < 0 ? -1 : device.index());
+  };
   const auto layout = channels_last ? at::MemoryFormat::ChannelsLast : at::MemoryFormat::Contiguous;
-  auto w = torch::randn({120, 120, 7, 7}).to(dtype).contiguous(layout);
-  auto x = torch::randn({1, 120, R, R}).to(dtype).contiguous(layout);
+  auto w = torch::randn({120, 120, 7, 7}).to(device, dtype).contiguous(layout);
+  auto x = torch::randn({1, 120, R, R}).to(device, dtype).contiguous(layout);
   torch::conv2d(x, w, {}, 1, 3);  // warm-up: oneDNN builds its kernel on the first call
+  wait();
   double best = 1e30;
   for (int r = 0; r < std::max(1, reps); ++r) {
     const auto t0 = std::chrono::steady_clock::now();
     torch::conv2d(x, w, {}, 1, 3);
+    wait();
     best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
   return {path, 2.0 * 120 * 120 * 49 * double(R) * R / best / 1e9, best};
@@ -32,9 +38,11 @@ ConvThroughput conv_throughput(const std::string& path, torch::Dtype dtype, bool
 
 }  // namespace
 
-ConvThroughput conv_throughput_float32(int res, int reps) { return conv_throughput("float32", torch::kFloat32, false, res, reps); }
-ConvThroughput conv_throughput_bfloat16(int res, int reps) {
-  return conv_throughput("bfloat16 channels-last", torch::kBFloat16, true, res, reps);
+ConvThroughput conv_throughput_float32(int res, int reps, const c10::Device& device) {
+  return conv_throughput("float32", torch::kFloat32, false, res, reps, device);
+}
+ConvThroughput conv_throughput_bfloat16(int res, int reps, const c10::Device& device) {
+  return conv_throughput("bfloat16 channels-last", torch::kBFloat16, true, res, reps, device);
 }
 
 std::string loaded_blas() {

@@ -6,19 +6,20 @@
 #include <string>
 #include <vector>
 
+#include <c10/core/Device.h>
 #include <nlohmann/json.hpp>
 
 namespace ppsynth {
 
 // The throughput of the network's dominant operation, a 120 -> 120 7x7 convolution on an
 // R x R map: float32 as the default network lays it out, bfloat16 channels-last as the bf16
-// network's fast path.
+// network's fast path. On a CUDA device the time runs to the end of the queued work.
 struct ConvThroughput {
   std::string path;  // "float32" | "bfloat16 channels-last"
   double gflops = 0, min_s = 0;
 };
-ConvThroughput conv_throughput_float32(int res, int reps);
-ConvThroughput conv_throughput_bfloat16(int res, int reps);
+ConvThroughput conv_throughput_float32(int res, int reps, const c10::Device& device = c10::Device(c10::kCPU));
+ConvThroughput conv_throughput_bfloat16(int res, int reps, const c10::Device& device = c10::Device(c10::kCPU));
 
 struct PresetPrecision {
   std::string preset, precision, reason;

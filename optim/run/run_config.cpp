@@ -9,6 +9,7 @@
 #include "core/run_directory.hpp"
 #include "optim/method.hpp"
 #include "optim/run/presets.hpp"
+#include "optim/run/runtime.hpp"
 
 namespace ppsynth {
 
@@ -29,6 +30,7 @@ json run_defaults() {
       {"snapshots", true},       // plot the output after every stage (paper Fig. 4)
       {"evaluate", true},        // run the metrics on the output
       {"checkpoint_seconds", 60.0},  // wall time between checkpoints (and at every stage boundary)
+      {"runtime", runtime_defaults()},  // device, TF32, determinism (optim/run/runtime.hpp)
   };
 }
 
@@ -37,6 +39,7 @@ json resolve_run_config(json config, const std::vector<std::string>& overrides) 
   json r = apply_defaults(run_defaults(), apply_preset(config), "");
   if (!r["seed"].is_number_integer() || r["seed"].get<long long>() < 0) throw config_error("seed", "expected an integer >= 0");
   check_bounds(r, json{{"upscale", "int [1, 64]"}, {"checkpoint_seconds", "(0, inf)"}}, "");  // u: u^2 copies of the exemplar
+  check_runtime(r["runtime"]);
   json resolved_method;
   MethodRegistry::instance().create(r["method"], "method", &resolved_method);
   r["method"] = resolved_method;

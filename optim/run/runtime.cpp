@@ -8,6 +8,8 @@
 #include <malloc.h>
 #endif
 
+#include <ATen/Context.h>
+#include <torch/cuda.h>
 #include <torch/torch.h>
 
 #include "core/error.hpp"
@@ -45,7 +47,63 @@ int thread_count() {
   return static_cast<int>(v);
 }
 
+const char* kDeviceChoices = "expected \"cpu\", \"cuda\", \"cuda:N\" or \"auto\"";
+
+// runtime.device parsed: the CPU, a CUDA device (index), or the first CUDA device if any.
+struct DeviceRequest {
+  enum class Kind { cpu, cuda, automatic } kind = Kind::cpu;
+  int index = 0;
+};
+
+DeviceRequest parse_device(const nlohmann::json& v) {
+  if (!v.is_string()) throw config_error("runtime.device", std::string(kDeviceChoices) + ", got " + v.dump());
+  const std::string s = v.get<std::string>();
+  if (s == "cpu") return {DeviceRequest::Kind::cpu, 0};
+  if (s == "auto") return {DeviceRequest::Kind::automatic, 0};
+  if (s == "cuda") return {DeviceRequest::Kind::cuda, 0};
+  const std::string digits = s.rfind("cuda:", 0) == 0 ? s.substr(5) : "";
+  if (!digits.empty() && digits.size() <= 4 && digits.find_first_not_of("0123456789") == std::string::npos)
+    return {DeviceRequest::Kind::cuda, std::stoi(digits)};
+  throw config_error("runtime.device", std::string(kDeviceChoices) + ", got \"" + s + "\"");
+}
+
 }  // namespace
+
+nlohmann::json runtime_defaults() { return {{"device", "cpu"}, {"tf32", false}, {"deterministic", true}}; }
+
+void check_runtime(const nlohmann::json& runtime) { parse_device(runtime.at("device")); }
+
+DeviceSettings apply_device_settings(const nlohmann::json& runtime) {
+  const DeviceRequest request = parse_device(runtime.at("device"));
+  DeviceSettings s;
+  const bool cuda = torch::cuda::is_available();
+  if (request.kind == DeviceRequest::Kind::cpu || (request.kind == DeviceRequest::Kind::automatic && !cuda)) return s;
+  const std::string asked = "\"" + runtime["device"].get<std::string>() + "\"";
+  if (!cuda)
+    throw config_error("runtime.device", asked + " asks for a CUDA device, and this process sees none (a LibTorch built "
+                                         "without CUDA, as Debian's, or no GPU or driver); use \"cpu\" or \"auto\"");
+  const int64_t count = static_cast<int64_t>(torch::cuda::device_count());
+  if (request.index >= count)
+    throw config_error("runtime.device", asked + ": this process sees " + std::to_string(count) + " CUDA device" +
+                                             (count == 1 ? " (cuda:0)" : "s (cuda:0 to cuda:" + std::to_string(count - 1) + ")"));
+  s.device = "cuda:" + std::to_string(request.index);
+  s.tf32 = runtime.at("tf32").get<bool>();
+  s.deterministic = runtime.at("deterministic").get<bool>();
+  auto& context = at::globalContext();
+  // The legacy switches exist in every LibTorch from 1.13 on (2.9 and later print a notice
+  // that finer ones exist); one family only, as mixing them is refused.
+  context.setAllowTF32CuBLAS(s.tf32);
+  context.setAllowTF32CuDNN(s.tf32);  // LibTorch's default is on: IEEE float32 unless asked
+  context.setBenchmarkCuDNN(!s.deterministic);
+  context.setDeterministicCuDNN(s.deterministic);
+  // cuBLAS is deterministic with a fixed workspace, read when its first handle is made; a
+  // value the user set stays.
+  if (s.deterministic) setenv("CUBLAS_WORKSPACE_CONFIG", ":4096:8", 0);
+  // An operation without a deterministic CUDA algorithm warns (naming itself) instead of
+  // failing the run.
+  context.setDeterministicAlgorithms(s.deterministic, /*warn_only=*/true);
+  return s;
+}
 
 RuntimeSettings configure_runtime() {
   RuntimeSettings s;

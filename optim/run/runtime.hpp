@@ -8,6 +8,23 @@
 //              afresh, so every iteration page-faults them in again; ppsynth keeps freed memory
 //              on the heap instead (PPSYNTH_MALLOC=system keeps glibc's defaults).
 // Nothing happens at load time: linking the library changes neither.
+//
+// The device of a synthesis is the config's "runtime" object (runtime_defaults()), applied per
+// synthesis by apply_device_settings:
+//   device         "cpu" (the default), "cuda", "cuda:N", or "auto" (the first CUDA device
+//                  when this process sees one, else the CPU). Every tensor of the Gabor method
+//                  lives there; the baselines run on the CPU whatever it says.
+//   tf32           CUDA only: float32 convolutions and matrix products on TF32 tensor cores
+//                  (a 10-bit mantissa in the products; false keeps IEEE float32 there too).
+//   deterministic  CUDA only: cuDNN's deterministic algorithms without autotuning, and
+//                  LibTorch's deterministic scatter/index_add, so the same config and seed
+//                  give the same output (false: the fastest algorithms, which may differ in
+//                  the last bits from run to run). On the CPU every run is deterministic
+//                  given the thread count.
+#include <string>
+
+#include <nlohmann/json.hpp>
+
 namespace ppsynth {
 
 struct RuntimeSettings {
@@ -19,5 +36,22 @@ struct RuntimeSettings {
 // applies them and returns what was applied. Calling it again re-reads the thread count; the
 // allocator is set once per process.
 RuntimeSettings configure_runtime();
+
+struct DeviceSettings {
+  std::string device = "cpu";  // "cpu" or "cuda:N"
+  bool tf32 = false;           // applied (CUDA only)
+  bool deterministic = true;   // applied (CUDA only; the CPU always is)
+};
+
+// {"device": "cpu", "tf32": false, "deterministic": true}: the run config's "runtime".
+nlohmann::json runtime_defaults();
+// Checks a resolved "runtime" object's values (config_error naming runtime.device), without
+// asking which devices this process has: a config can be resolved on a machine that will not
+// run it.
+void check_runtime(const nlohmann::json& runtime);
+// Resolves "auto", refuses a CUDA device this process cannot use (InputError naming
+// runtime.device: a LibTorch without CUDA, or no such device), and sets the process-wide
+// CUDA flags (TF32, cuDNN's algorithm choice, deterministic algorithms) for the synthesis.
+DeviceSettings apply_device_settings(const nlohmann::json& runtime);
 
 }  // namespace ppsynth

@@ -4,6 +4,7 @@
 
 #include "core/metrics/evaluation.hpp"
 #include "optim/run/run_config.hpp"
+#include "optim/run/runtime.hpp"
 
 namespace ppsynth {
 
@@ -36,6 +37,11 @@ SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec,
   ctx.seed = spec["seed"].get<uint64_t>();
   ctx.output = resolve_output_shape(spec, exemplar);
   ctx.quick = options.quick;
+  // A config resolved before "runtime" existed (an older run directory's) runs on the CPU.
+  const DeviceSettings device = apply_device_settings(spec.value("runtime", runtime_defaults()));
+  ctx.device = device.device;
+  ctx.tf32 = device.tf32;
+  ctx.deterministic = device.deterministic;
   const auto from_file = options.initialization ? std::nullopt : load_initialization(spec);
   ctx.initialization = options.initialization ? options.initialization : from_file ? &*from_file : nullptr;
   InitialRecorder initial;

@@ -110,7 +110,7 @@ TEST_CASE("Composite loss from config: weights, defaults, errors naming the key"
   Features out = {rnd({1, 4, 8, 8}, 8), rnd({1, 4, 4, 4}, 9), rnd({1, 4, 2, 2}, 10)};
   loss.set_target(ex, LossContext{1, 1});
   auto total = loss.forward(out).item<double>();
-  CHECK(total == Approx(0.5 * loss.terms()[0].last_value + loss.terms()[1].last_value));
+  CHECK(total == Approx(0.5 * loss.terms()[0].last_value() + loss.terms()[1].last_value()));
   CHECK_THROWS_WITH(CompositeLoss(json::array({json{{"type", "gram"}, {"wieght", 1}}})), Catch::Contains("losses[0].wieght"));
   CHECK_THROWS_WITH(CompositeLoss(json::array({json{{"type", "correlation"}, {"gradient", "fast"}}})), Catch::Contains("gradient"));
   CHECK_THROWS_WITH(CompositeLoss(json::array({json{{"type", "nope"}}})), Catch::Contains("losses[0].type"));

@@ -17,7 +17,7 @@
 #include "core/formats/point_io.hpp"
 #include "core/log.hpp"
 #include "core/metrics/periodogram.hpp"
-#include "core/render/canvas.hpp"
+#include "core/render/image_file.hpp"
 #include "core/render/plot_spectrum.hpp"
 
 namespace {

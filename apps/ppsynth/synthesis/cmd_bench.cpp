@@ -27,6 +27,7 @@
 #include "optim/gabor_pipeline.hpp"
 #include "optim/initializer.hpp"
 #include "optim/run/machine_report.hpp"
+#include "optim/run/runtime.hpp"
 #include "optim/run/synthesize.hpp"
 
 namespace {
@@ -44,13 +45,20 @@ struct Timing {
   }
 };
 
+// Waits for the work queued on a CUDA device (runtime.device), so a phase is timed to its end.
+void wait_for_device() {
+  if (torch::cuda::is_available()) torch::cuda::synchronize();
+}
+
 template <class F>
 Timing time_it(int reps, F&& f) {
   f();  // warm-up
+  wait_for_device();
   Timing t;
   for (int r = 0; r < reps; ++r) {
     auto a = Clock::now();
     f();
+    wait_for_device();
     t.s.push_back(std::chrono::duration<double>(Clock::now() - a).count());
   }
   return t;
@@ -73,6 +81,7 @@ double net_flops(int in_channels, int channels, int ksize, int depth, int R) {
 struct Opts {
   std::string config, exemplar, json_out;
   std::vector<std::string> sets;
+  std::string device;
   int reps = 5;
   bool skip_setup = false;
 };
@@ -82,14 +91,17 @@ app::RunFn setup(CLI::App& app) {
   app.add_option("config", o->config, "experiment config (JSON)");
   app.add_option("--exemplar,-e", o->exemplar, "exemplar point file");
   app.add_option("--set", o->sets, "override a config key: key.path=value");
+  app.add_option("--device", o->device, "where it runs: cpu, cuda, cuda:N or auto (runtime.device)");
   app.add_option("--reps", o->reps, "repetitions per phase")->check(CLI::PositiveNumber);
   app.add_option("--json", o->json_out, "also write the figures as JSON");
   app.add_flag("--skip-setup", o->skip_setup, "do not time the set-up of every sigma");
   return [o]() {
     json c = o->config.empty() ? json::object() : load_config(o->config);
     if (!o->exemplar.empty()) c["exemplar"] = o->exemplar;
+    if (!o->device.empty()) c["runtime"]["device"] = o->device;
     auto r = resolve_run_config(c, o->sets);
     if (r["method"]["type"] != "gabor") throw InputError("bench: only the gabor method is benchmarked");
+    const torch::Device device(apply_device_settings(r["runtime"]).device);
     const json& p = r["method"];
     PointSet ex = load_exemplar(r);
     const int u = r["upscale"];
@@ -98,13 +110,13 @@ app::RunFn setup(CLI::App& app) {
     OutputShape shape;  // the paper's u x u output: the bench times its iteration
     shape.upscale = u;
     GaborSettings s = resolve_gabor_settings(p, ex, shape, false);
-    GaborPipeline pipe(p, s, seed);
+    GaborPipeline pipe(p, s, seed, device);
     auto init = InitializerRegistry::instance().create(p["init"], "method.init");
     PointSet start = init->initialize(ex.size() * u * u, 0, seed, Domain{});
-    auto ex_pts = positions_tensor(ex);
-    auto moving = positions_tensor(start).set_requires_grad(true);
+    auto ex_pts = positions_tensor(ex).to(device);
+    auto moving = positions_tensor(start).to(device).set_requires_grad(true);
     // Map weights (disks, multi-attribute scenes): the output carries the exemplar's values u^2 times.
-    const auto ex_w = s.attr_cols.empty() ? torch::Tensor() : normalized_attributes(ex, s.attr_cols);
+    const auto ex_w = s.attr_cols.empty() ? torch::Tensor() : normalized_attributes(ex, s.attr_cols).to(device);
     const auto out_w = ex_w.defined() ? ex_w.repeat({u * u, 1}) : torch::Tensor();
     // The finest sigma: every config's most expensive stage, on the grid every config shares
     // at its end (per-sigma grids make the coarser ones cheaper), and the stage the one-stage
@@ -114,7 +126,7 @@ app::RunFn setup(CLI::App& app) {
     const int R = s.sigma_out_res[bench_sigma];
     pipe.set_grid(bench_sigma);
     std::mt19937_64 rng(seed);
-    json out = {{"exemplar", r["exemplar"]}, {"points", ex.size()}, {"output_points", start.size()},
+    json out = {{"exemplar", r["exemplar"]}, {"device", device.str()}, {"points", ex.size()}, {"output_points", start.size()},
                 {"grid", s.sigma_res[bench_sigma]}, {"output_grid", R}, {"k", s.k}, {"threads", at::get_num_threads()}};
 
     // --- set-up: exemplar maps -> features -> targets, per sigma ----------------------
@@ -142,11 +154,14 @@ app::RunFn setup(CLI::App& app) {
     mo.upscale = u;
     mo.k = s.k;
     GaborFeatureMaps maps_mod(mo);
+    maps_mod->to(device);
     auto pts = wrap_unit(moving.detach());
     auto jit = pipe.draw_jitter(rng);
     auto grid = jit.defined() ? maps_mod->grid() + jit : maps_mod->grid();
     std::vector<std::pair<std::string, Timing>> phases;
-    phases.push_back({"neighbour search (k-NN)", time_it(o->reps, [&] { grid_knn(pts, grid, s.k); })});
+    phases.push_back({"neighbour search (k-NN)", time_it(o->reps, [&] {
+                        device.is_cpu() ? grid_knn(pts, grid, s.k) : grid_knn_tensor_ops(pts, grid, s.k);
+                      })});
     torch::Tensor maps;
     phases.push_back({"Gabor maps forward", time_it(o->reps, [&] {
                         torch::NoGradGuard ng;
@@ -231,7 +246,7 @@ app::RunFn setup(CLI::App& app) {
     // --- the convolution floor ---------------------------------------------------------
     const int C = s.feature_net.value("channels", 120), ks = s.feature_net.value("kernel_size", 7),
               depth = s.feature_net.value("depth", 3);
-    const std::vector<ConvThroughput> paths = {conv_throughput_float32(R, o->reps), conv_throughput_bfloat16(R, o->reps)};
+    const std::vector<ConvThroughput> paths = {conv_throughput_float32(R, o->reps, device), conv_throughput_bfloat16(R, o->reps, device)};
     const double flops = s.feature_net.value("type", "") == "random" ? net_flops(static_cast<int>(maps.size(1)), C, ks, depth, R) : 0;
     const bool bf16 = s.feature_net.value("type", "") == "random" &&
                       resolve_network_precision(s.feature_net.value("precision", "float32"), "method.feature_net.precision").dtype ==
@@ -243,8 +258,9 @@ app::RunFn setup(CLI::App& app) {
     const MachineReport machine = machine_report(0, 0);  // the floors are this config's, below
     std::printf("%s\n", machine.text().c_str());
     out["machine"] = machine.to_json();
-    std::printf("ppsynth bench: %s  (%zu -> %zu points, grid %d -> %d, k %d, %d threads)\n",
-                r["exemplar"].get<std::string>().c_str(), ex.size(), start.size(), s.sigma_res[bench_sigma], R, s.k, at::get_num_threads());
+    std::printf("ppsynth bench: %s  (%zu -> %zu points, grid %d -> %d, k %d, %d threads, %s)\n",
+                r["exemplar"].get<std::string>().c_str(), ex.size(), start.size(), s.sigma_res[bench_sigma], R, s.k, at::get_num_threads(),
+                device.str().c_str());
     std::printf("%-42s %10s %10s\n", "phase", "min [s]", "median [s]");
     json jp = json::array();
     for (auto& [name, t] : phases) {

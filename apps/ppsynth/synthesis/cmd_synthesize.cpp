@@ -21,7 +21,7 @@
 namespace {
 
 struct Opts {
-  std::string config, exemplar, out, method, init, format, resume, preset;
+  std::string config, exemplar, out, method, init, format, resume, preset, device;
   std::vector<std::string> sets;
   std::vector<double> size;
   long long seed = -1, points = -1;
@@ -41,6 +41,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_option("--seed", o->seed, "random seed");
   app.add_option("--preset", o->preset, "a named preset under the config's own keys: fast (`ppsynth config --kind preset`)");
   app.add_option("--init", o->init, "explicit initialisation point file");
+  app.add_option("--device", o->device, "where the synthesis runs: cpu (default), cuda, cuda:N or auto (runtime.device)");
   app.add_flag("--quick", o->quick, "tiny grid and few iterations (smoke test)");
   auto* size = app.add_option("--size", o->size, "output rectangle W H in exemplar units (clean borders, window by window)")
                    ->expected(2)
@@ -59,7 +60,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
       if (!o->resume.empty()) {
         if (!o->config.empty() || !o->exemplar.empty() || !o->out.empty() || !o->sets.empty() || o->force || o->seed >= 0 ||
             !o->method.empty() || !o->init.empty() || !o->format.empty() || o->quick || !o->size.empty() || o->points >= 0 ||
-            !o->preset.empty())
+            !o->preset.empty() || !o->device.empty())
           throw InputError("--resume takes the run directory alone: its config, seed and settings are the run's own");
         ppsynth::app::install_stop_handlers();
         std::cout << resume_synthesis(o->resume, req).dir << "\n";
@@ -74,6 +75,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     if (!o->size.empty()) c["output"]["size"] = o->size;
     if (o->points >= 0) c["output"]["points"] = o->points;
     if (!o->preset.empty()) c["preset"] = o->preset;
+    if (!o->device.empty()) c["runtime"]["device"] = o->device;
       auto resolved = resolve_run_config(c, o->sets);
       if (can_resume(resolved)) ppsynth::app::install_stop_handlers();  // others stop at once, as without handlers
       std::cout << run_synthesis(resolved, req).dir << "\n";

@@ -1,0 +1,181 @@
+#!/usr/bin/env bash
+# The device check (docs/performance.md, "On a GPU"). On a machine with a CUDA GPU, a torch
+# wheel, CMake and ninja, and no network (the device tool's: 16 cores, H100 or H200), it
+#   1. builds ppsynth against the wheel's LibTorch, with the header-only dependencies carried
+#      in .deps (scripts/carry_deps.sh) and without cairo (no figures);
+#   2. runs the device tests (ppsynth_tests "[device]": the tensor-operation Gabor maps against
+#      the CPU kernel, on the CPU and on CUDA; --device and run.json; a CUDA synthesis twice);
+#   3. checks that the same config and seed give the same bits twice on the device;
+#   4. benches `lines` on the device (ppsynth bench: per phase, per iteration) in float32 and TF32;
+#   5. runs `lines` at its default settings: seed 95 alone (the whole run's time), then seeds
+#      96-99 side by side while the time budget lasts (quality over seeds);
+#   6. prints a summary against the targets: <= 25 ms per iteration, <= 30 s per run, PCF MSE,
+#      Wasserstein and Chamfer within 1.1 x the CPU default's medians over seeds 95-99.
+# It fits in 8 minutes there: GPU_CHECK_SECONDS (default 460) bounds the whole script, so
+# the runs of step 5 take what the build and steps 2-4 leave (a run that would not end in
+# time is not started, one still running then is stopped; the summary says which ended). On a machine
+# without CUDA, GPU_CHECK_DEVICE=cpu runs every step on the CPU at --quick sizes (a dry run of
+# the script, its build and its tests; docs/performance.md says how it was run).
+#
+# Usage: scripts/gpu_check.sh [OUT_DIR]   (OUT_DIR: $OUT if set, else gpu_check/)
+#   GPU_CHECK_DEVICE   cuda (default) or cpu
+#   GPU_CHECK_SECONDS  the time budget of the whole script (default 460)
+#   GPU_CHECK_BUILD    the build folder (default build-gpu)
+# Into OUT_DIR (at most 8 files, as the device tool returns them): summary.txt, configure.log,
+# build.log, device_tests.log, bench_float32.json, bench_tf32.json, runs.json.
+set -uo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+out="${1:-${OUT:-$here/gpu_check}}"
+device="${GPU_CHECK_DEVICE:-cuda}"
+budget="${GPU_CHECK_SECONDS:-460}"
+build="${GPU_CHECK_BUILD:-$here/build-gpu}"
+work="$build/gpu_check_runs"  # run directories (many files): the summary copies what matters
+mkdir -p "$out"
+summary="$out/summary.txt"
+: > "$summary"
+t0=$(date +%s)
+say() { echo "[gpu_check $(( $(date +%s) - t0 )) s] $*" | tee -a "$summary"; }
+fail() { say "FAILED: $*"; exit 1; }
+
+case "$device" in
+  cuda) quick=""; reps=10 ;;
+  cpu) quick="--quick"; reps=1 ;;  # the dry run: every step, at sizes a CPU gets through
+  *) echo "gpu_check: GPU_CHECK_DEVICE='$device': expected cuda or cpu" >&2; exit 2 ;;
+esac
+
+# --- 0. the machine ----------------------------------------------------------------------
+py=""
+for p in python3 /usr/bin/python3; do
+  if command -v "$p" > /dev/null && "$p" -c 'import torch' 2> /dev/null; then py="$p"; break; fi
+done
+[ -n "$py" ] || fail "no python3 with torch: the build takes the wheel's LibTorch (torch.utils.cmake_prefix_path)"
+say "$(uname -m), $(nproc) cores; $(c++ --version | head -1); $(cmake --version | head -1); ninja $(ninja --version 2> /dev/null || echo missing)"
+say "torch: $("$py" -c 'import torch; print(torch.__version__, "CUDA", torch.version.cuda, "devices", torch.cuda.device_count() if torch.cuda.is_available() else 0)')"
+if command -v nvidia-smi > /dev/null; then
+  say "GPU: $(nvidia-smi --query-gpu=name,memory.total,driver_version --format=csv,noheader | head -1)"
+elif [ "$device" = cuda ]; then
+  fail "no nvidia-smi on a check of cuda (GPU_CHECK_DEVICE=cpu runs the dry run)"
+fi
+[ -f "$here/.deps/root/usr/include/nanoflann.hpp" ] ||
+  fail "no .deps/root: run scripts/carry_deps.sh on a Debian machine and carry .deps"
+export PPSYNTH_SHARED="$here/.deps/shared"  # the exemplars the configs name as shared:data/...
+
+# --- 1. build ------------------------------------------------------------------------------
+torch_prefix="$("$py" -c 'import torch; print(torch.utils.cmake_prefix_path)')"
+cuda_flags=()
+if command -v nvcc > /dev/null; then
+  # A CUDA LibTorch's CMake config enables the CUDA language; Hopper is sm_90.
+  cuda_flags=(-DCMAKE_CUDA_COMPILER="$(command -v nvcc)" -DCMAKE_CUDA_ARCHITECTURES=90)
+  export TORCH_CUDA_ARCH_LIST="${TORCH_CUDA_ARCH_LIST:-9.0}"
+fi
+say "configure: LibTorch from $torch_prefix, dependencies from .deps/root, no cairo"
+cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$torch_prefix" \
+  -DPPSYNTH_DEPS_DIR="$here/.deps/root" -DPPSYNTH_WITH_CAIRO=OFF -DPPSYNTH_PYTHON=OFF "${cuda_flags[@]}" \
+  > "$out/configure.log" 2>&1 || { tail -n 40 "$out/configure.log"; fail "configure (configure.log)"; }
+grep "ppsynth:" "$out/configure.log" | tee -a "$summary"
+say "build: ppsynth, ppsynth_tests ($(nproc) jobs)"
+cmake --build "$build" -j "$(nproc)" --target ppsynth ppsynth_tests > "$out/build.log" 2>&1 ||
+  { grep -m 20 -A 5 "error" "$out/build.log"; tail -n 20 "$out/build.log"; fail "build (build.log)"; }
+say "built"
+left() {  # seconds of the budget left, at least 1
+  local l=$(( budget - ($(date +%s) - t0) ))
+  echo $(( l > 1 ? l : 1 ))
+}
+
+# --- 2. device tests ---------------------------------------------------------------------
+"$build/ppsynth_tests" "[device]" > "$out/device_tests.log" 2>&1
+tests_rc=$?
+grep -E "^skipped|test cases|assertions" "$out/device_tests.log" | tee -a "$summary"
+[ $tests_rc -eq 0 ] || say "device tests FAILED (device_tests.log)"
+
+ppsynth() { "$build/ppsynth" "$@"; }
+lines="$here/configs/runs/lines.json"
+rm -rf "$work"
+mkdir -p "$work"
+
+# --- 3. same config, same seed: the same bits ------------------------------------------------
+for r in a b; do
+  ppsynth synthesize "$lines" --quick -q --device "$device" --set evaluate=false -o "$work/same_$r" > /dev/null ||
+    fail "synthesize --quick on $device"
+done
+if cmp -s "$work/same_a/output.txt" "$work/same_b/output.txt"; then
+  say "determinism: the same output twice (--quick, $device)"
+else
+  say "determinism FAILED: two --quick runs on $device differ"
+fi
+
+# --- 4. bench ------------------------------------------------------------------------------
+bench_sizes=()
+[ "$device" = cpu ] && bench_sizes=(--set method.grid.res=24 --set method.feature_net.channels=8)
+for prec in float32 tf32; do
+  tf32=false
+  [ "$prec" = tf32 ] && tf32=true
+  ppsynth bench "$lines" --device "$device" --reps "$reps" --skip-setup --set runtime.tf32=$tf32 "${bench_sizes[@]}" \
+    --json "$out/bench_$prec.json" > "$work/bench_$prec.txt" 2>&1 || { cat "$work/bench_$prec.txt"; fail "bench ($prec)"; }
+  say "bench, $prec:"
+  grep -E "^ppsynth bench|ONE|Gabor|network|loss|neighbour" "$work/bench_$prec.txt" | tee -a "$summary"
+done
+
+# --- 5. whole runs -------------------------------------------------------------------------
+run_seed() {  # seed, timeout in seconds
+  timeout "$2" "$build/ppsynth" synthesize "$lines" $quick -q --device "$device" --seed "$1" -o "$work/lines_s$1" \
+    > "$work/lines_s$1.log" 2>&1
+}
+say "lines, seed 95, default settings on $device"
+s95=$(date +%s)
+run_seed 95 "$(left)" || say "seed 95 did not finish (rc $?; its log: $(tail -n 3 "$work/lines_s95.log"))"
+took=$(( $(date +%s) - s95 ))
+say "seed 95: $took s"
+if [ "$(left)" -gt $(( took + 20 )) ]; then
+  say "seeds 96-99 side by side (at most $(left) s)"
+  stop_at=$(( $(left) > 20 ? $(left) - 10 : $(left) ))
+  for seed in 96 97 98 99; do PPSYNTH_THREADS=4 run_seed "$seed" "$stop_at" & done
+  wait
+else
+  say "seeds 96-99 skipped: $(left) s left of the budget"
+fi
+
+# --- 6. summary ----------------------------------------------------------------------------
+"$py" - "$work" "$out" "$device" << 'EOF' | tee -a "$summary"
+import json, os, statistics, sys
+work, out, device = sys.argv[1:4]
+# The CPU default's medians over seeds 95-99 (docs/performance.md, "Each knob on lines").
+cpu = {"pcf_mse": 0.0266, "wasserstein": 0.108, "chamfer": 0.192}
+runs = []
+for seed in range(95, 100):
+    d = os.path.join(work, f"lines_s{seed}")
+    try:
+        run = json.load(open(os.path.join(d, "run.json")))
+        metrics = json.load(open(os.path.join(d, "metrics.json")))["all"]
+    except (OSError, ValueError, KeyError):
+        continue
+    stats = run["method_stats"]
+    iterations = sum(s["iterations"] for s in stats["stages"])
+    runs.append({"seed": seed, "seconds": run["synthesis_seconds"], "total_seconds": run["total_seconds"],
+                 "iterations": iterations, "ms_per_iteration": 1e3 * run["synthesis_seconds"] / max(1, iterations),
+                 "runtime": stats.get("runtime"), **{k: metrics[k] for k in cpu}})
+json.dump(runs, open(os.path.join(out, "runs.json"), "w"), indent=2)
+for r in runs:
+    print(f"seed {r['seed']}: {r['seconds']:.1f} s synthesis ({r['total_seconds']:.1f} s with evaluation), "
+          f"{r['iterations']} iterations, {r['ms_per_iteration']:.1f} ms/iteration; PCF MSE {r['pcf_mse']:.4f}, "
+          f"Wasserstein {r['wasserstein']:.3f}, Chamfer {r['chamfer']:.3f}; {r['runtime']}")
+for prec in ("float32", "tf32"):
+    try:
+        b = json.load(open(os.path.join(out, f"bench_{prec}.json")))
+        print(f"bench {prec} on {b['device']}: iteration {1e3 * b['iteration_median_s']:.1f} ms (forward + backward), "
+              f"run iteration {1e3 * b['run_iteration_median_s']:.1f} ms (+ step + checkpoint) [target <= 25 ms]")
+    except (OSError, ValueError, KeyError):
+        print(f"bench {prec}: no result")
+if runs:
+    first = runs[0]
+    print(f"whole run (seed {first['seed']}): {first['seconds']:.1f} s [target <= 30 s]")
+    for k, ref in cpu.items():
+        m = statistics.median(r[k] for r in runs)
+        print(f"{k}: median {m:.4f} over {len(runs)} seed(s) = {m / ref:.2f} x the CPU default's {ref} [target <= 1.1 x]")
+else:
+    print("no finished run")
+if device == "cpu":
+    print("(dry run on the CPU at --quick sizes: the numbers say nothing of a GPU)")
+EOF
+say "done; files in $out"
+[ $tests_rc -eq 0 ] || exit 1
