@@ -153,6 +153,7 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   int num_sigmas = get_int(p, "num_sigmas", "method");
   s.max_iterations = get_int(p, "max_iterations", "method");
   s.feature_net = p["feature_net"];
+  const int full_res = s.res, full_num_sigmas = num_sigmas;  // the window margin's (below)
   if (quick) {
     s.res = std::min(s.res, get_int(p["quick"], "res", "method.quick"));
     s.max_iterations = std::min(s.max_iterations, get_int(p["quick"], "max_iterations", "method.quick"));
@@ -168,8 +169,12 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   s.attr_cols = map_attribute_columns(exemplar, p["map_attributes"]);
   s.jitter = p["jitter"].get<bool>();
   const bool per_sigma = get_bool(p["grid"], "per_sigma", "method.grid");
-  for (double sigma : s.sigmas)  // at most res; the finest sigma gets res itself
-    s.sigma_res.push_back(per_sigma ? std::max(8, static_cast<int>(std::ceil(s.res * s.sigmas.back() / sigma - 1e-9))) : s.res);
+  auto grid_per_sigma = [&](const std::vector<double>& sigmas, int res) {  // at most res; the finest sigma gets res itself
+    std::vector<int> r;
+    for (double sigma : sigmas) r.push_back(per_sigma ? std::max(8, static_cast<int>(std::ceil(res * sigmas.back() / sigma - 1e-9))) : res);
+    return r;
+  };
+  s.sigma_res = grid_per_sigma(s.sigmas, s.res);
   const json& measure = p["measure"];
   if (!measure.is_string() || (measure != "grid" && measure != "tiles" && measure != "rolled"))
     throw config_error("method.measure", "expected \"grid\", \"tiles\" or \"rolled\", got " + measure.dump());
@@ -223,10 +228,17 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
     for (int r : s.sigma_res) s.sigma_out_res.push_back(std::max(8, static_cast<int>(std::lround(side * r))));
     const json& m = p["window"]["margin"];
     if (m.is_null() || (m.is_string() && m.get<std::string>() == "auto")) {
-      // The maps' reach plus the network's receptive field, at the stage where they reach farthest.
+      // The maps' reach plus the network's receptive field, at the stage where they reach
+      // farthest -- of the full settings, also with --quick: its coarser grid reaches farther,
+      // and a smoke run must take every output the real run takes (its windows then see a
+      // little of their neighbours' edges, which a smoke run may).
       const int rf = get_int(p["window"], "receptive_field", "method.window");
-      for (size_t i = 0; i < s.sigmas.size(); ++i)
-        s.window_margin = std::max(s.window_margin, 3 * s.sigmas[i] + rf / static_cast<double>(s.sigma_res[i]));
+      const auto sigmas = quick ? sigma_schedule(s.mean_nn_distance, get_number(p, "c1", "method"), get_number(p, "c2", "method"),
+                                                 full_num_sigmas)
+                                : s.sigmas;
+      const auto res = quick ? grid_per_sigma(sigmas, full_res) : s.sigma_res;
+      for (size_t i = 0; i < sigmas.size(); ++i)
+        s.window_margin = std::max(s.window_margin, 3 * sigmas[i] + rf / static_cast<double>(res[i]));
     } else if (m.is_number() && m.get<double>() >= 0)
       s.window_margin = m.get<double>();
     else

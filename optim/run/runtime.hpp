@@ -20,4 +20,7 @@ struct RuntimeSettings {
 // allocator is set once per process.
 RuntimeSettings configure_runtime();
 
+// PPSYNTH_THREADS as a user set it (1..1024), 0 when unset; InputError when malformed.
+int threads_from_environment();
+
 }  // namespace ppsynth
