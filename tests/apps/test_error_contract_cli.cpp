@@ -7,6 +7,8 @@
 #include <fstream>
 
 #include "core/formats/text_table.hpp"
+
+#include <nlohmann/json.hpp>
 #include "tests/support/run_command.hpp"
 #include "tests/support/scratch_dir.hpp"
 
@@ -106,4 +108,30 @@ TEST_CASE("malformed JSON in a run directory is an input error naming the file",
     std::ofstream(path) << before;
   }
   CHECK(run_ppsynth("gather " + run).status == 0);
+  // The defect: a band list longer than its values made gather read past the values' end
+  // (valgrind: invalid read) and tabulate heap garbage as a metric.
+  auto metrics = nlohmann::json::parse(ppsynth::read_file_text(run + "/metrics.json"));
+  metrics["output"]["border_profile"]["band"] = std::vector<double>(1065, 0.01);
+  std::ofstream(run + "/metrics.json") << metrics.dump();
+  const auto past = run_ppsynth("gather " + run);
+  INFO(past.output);
+  CHECK(past.status == 2);
+  CHECK_THAT(past.output, Catch::Contains(run + "/metrics.json") && Catch::Contains("output.border_profile"));
+}
+
+TEST_CASE("number lists near 2^64 are refused at once", "[apps][errors]") {
+  auto d = ppsynth::test::scratch_dir("errors_number_lists");
+  // The defect: these saturated and looped forever, allocating until memory was gone (the
+  // limits keep an older binary from taking the machine with it).
+  for (const std::string stages : {"18446744073709551615", "18446744073709551614-18446744073709551615", "99999999999999999999"}) {
+    const auto r = run_ppsynth("gather " + d.string() + " --stage " + stages, "ulimit -v 3000000; timeout 60");
+    INFO(stages << ": " << r.output);
+    CHECK(r.status == 2);
+    CHECK_THAT(r.output, Catch::Contains("--stage[0]"));
+  }
+  std::ofstream(d / "spec.json") << "{\"name\": \"big\", \"runs\": [\"" << kLines << "\"], \"seeds\": \"18446744073709551615\"}";
+  const auto plan = run_ppsynth("sweep plan " + (d / "spec.json").string() + " -o " + (d / "sw").string(),
+                                "ulimit -v 3000000; timeout 60");
+  CHECK(plan.status == 2);
+  CHECK_THAT(plan.output, Catch::Contains("seeds[0]"));
 }

@@ -192,7 +192,7 @@ TEST_CASE("a stop during the initialisation or between windows is seen within a 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   INFO(c.output());
   CHECK(status == 143);
-  CHECK(seconds < 2);
+  CHECK(seconds < 10);  // within a second on an idle machine; the bound leaves room for a loaded one
   // It stopped before its first checkpoint: nothing is left, nothing blocks the next run.
   CHECK_THAT(c.output(), Catch::Contains("nothing was kept"));
   CHECK_FALSE(fs::exists(out));

@@ -42,6 +42,22 @@ struct StopAtFirstIteration : SynthesisObserver {
   void on_iteration(const ProgressEvent&) override { stop = true; }
 };
 
+// A run (resumed from `resume` when given) stopped at the end of its first iteration: it
+// throws SynthesisInterrupted, its checkpoint in `saved`.
+void stop_after_one_iteration(const PointSet& ex, const std::string* resume, std::vector<std::string>& saved) {
+  StopAtFirstIteration first;
+  auto method = MethodRegistry::instance().create(kQuickMethod, "method");
+  SynthesisContext ctx;
+  ctx.quick = true;
+  ctx.seed = 5;
+  ctx.checkpoint_seconds = 1e9;
+  ctx.save_checkpoint = [&](const std::string& bytes) { saved.push_back(bytes); };
+  ctx.resume_state = resume;
+  ctx.stop = &first.stop;
+  ctx.observers = {&first};
+  method->synthesize(ex, ctx);
+}
+
 
 }  // namespace
 
@@ -122,17 +138,8 @@ TEST_CASE("a stage that ends on its best iterate ends there, and resumes to the 
 TEST_CASE("the stop flag saves a checkpoint and throws; resuming from it finishes the run", "[optim][checkpoint]") {
   const PointSet ex = test::small_exemplar(2, false);
   const Run whole = synthesize(ex);
-  StopAtFirstIteration first;  // stop at the end of the first iteration
   Run stopped;
-  auto method = MethodRegistry::instance().create(kQuickMethod, "method");
-  SynthesisContext ctx;
-  ctx.quick = true;
-  ctx.seed = 5;
-  ctx.checkpoint_seconds = 1e9;
-  ctx.save_checkpoint = [&](const std::string& bytes) { stopped.checkpoints.push_back(bytes); };
-  ctx.stop = &first.stop;
-  ctx.observers = {&first};
-  CHECK_THROWS_AS(method->synthesize(ex, ctx), SynthesisInterrupted);
+  CHECK_THROWS_AS(stop_after_one_iteration(ex, nullptr, stopped.checkpoints), SynthesisInterrupted);
   REQUIRE(stopped.checkpoints.size() == 1);
   CHECK(deserialize_state(stopped.checkpoints[0], "t").iteration == 1);
   CHECK(same_bits(synthesize(ex, &stopped.checkpoints[0]).output, whole.output));
@@ -245,28 +252,15 @@ TEST_CASE("random bytes changed in a checkpoint (checksum mended) never crash a 
   const std::string& mid = whole.checkpoints[3];
   std::mt19937_64 rng(7);
   int refused = 0, resumed = 0;
-  // Each trial restores, runs an iteration at most, and stops.
-  auto resume_once = [&](const std::string& bytes) {
-    StopAtFirstIteration first;
-    auto method = MethodRegistry::instance().create(kQuickMethod, "method");
-    SynthesisContext ctx;
-    ctx.quick = true;
-    ctx.seed = 5;
-    ctx.checkpoint_seconds = 1e9;
-    ctx.save_checkpoint = [](const std::string&) {};
-    ctx.resume_state = &bytes;
-    ctx.stop = &first.stop;
-    ctx.observers = {&first};
-    method->synthesize(ex, ctx);
-  };
   for (int trial = 0; trial < 150; ++trial) {
     std::string bytes = mid;
     const size_t at = 19 + rng() % (bytes.size() - 27);  // past the magic, before the checksum
     bytes[at] = static_cast<char>(bytes[at] ^ (1 + rng() % 255));
     const uint64_t h = fnv1a64(bytes.data(), bytes.size() - 8);
     std::memcpy(&bytes[bytes.size() - 8], &h, 8);
-    try {
-      resume_once(bytes);
+    try {  // each trial restores, runs an iteration at most, and stops
+      std::vector<std::string> saved;
+      stop_after_one_iteration(ex, &bytes, saved);
       ++resumed;
     } catch (const InputError&) {
       ++refused;
