@@ -12,8 +12,10 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "core/atomic_file.hpp"
+#include "core/config/json_text.hpp"
 #include "core/error.hpp"
 
 namespace fs = std::filesystem;
@@ -63,15 +65,72 @@ bool run_dir_locked(const std::string& dir) {
   return locked;
 }
 
+nlohmann::json parse_run_dir_marker(const std::string& text, const std::string& source) {
+  const nlohmann::json m = parse_json_text(text, source, false);
+  auto refuse = [&](const std::string& key, const std::string& what) {
+    return file_error(source, 0, "key '" + key + "': " + what + " (a damaged marker)");
+  };
+  if (!m.is_object()) throw file_error(source, 0, "expected a JSON object (a damaged marker)");
+  if (!m.contains("kind") || !m["kind"].is_string() || !is_safe_name(m["kind"])) throw refuse("kind", "expected a plain name");
+  if (!m.contains("state") || (m["state"] != "running" && m["state"] != "complete"))
+    throw refuse("state", "expected \"running\" or \"complete\"");
+  auto whole = [&](const nlohmann::json& o, const char* k, const std::string& key) {
+    if (o.contains(k) && !(o[k].is_number_integer() && o[k].get<long long>() >= 0)) throw refuse(key, "expected a whole number");
+  };
+  for (const char* k : {"pid", "updated", "threads", "seed", "runs"}) whole(m, k, k);
+  if (m.contains("quick") && !m["quick"].is_boolean()) throw refuse("quick", "expected true or false");
+  if (m.contains("processor") && !m["processor"].is_string()) throw refuse("processor", "expected a string");
+  if (m.contains("progress")) {
+    const nlohmann::json& p = m["progress"];
+    if (!p.is_object()) throw refuse("progress", "expected an object");
+    for (const char* k : {"index", "count", "window", "windows", "checkpointed"}) whole(p, k, std::string("progress.") + k);
+    if (p.contains("stage") && !p["stage"].is_string()) throw refuse("progress.stage", "expected a string");
+  }
+  return m;
+}
+
+namespace {
+
+std::string read_marker_text(const std::string& dir) {
+  std::ifstream in(dir + "/" + kMarker, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
 nlohmann::json run_dir_marker(const std::string& dir) {
-  std::ifstream in(dir + "/" + kMarker);
-  if (!in) return nullptr;
+  const std::string path = dir + "/" + kMarker;
+  if (!std::ifstream(path)) return nullptr;
   try {
-    nlohmann::json j = nlohmann::json::parse(in);
-    return j.is_object() ? j : nlohmann::json(nullptr);
-  } catch (const std::exception&) {
+    return parse_run_dir_marker(read_marker_text(dir), path);
+  } catch (const InputError&) {
     return nullptr;
   }
+}
+
+std::string run_progress_text(const nlohmann::json& marker, long long now) {
+  if (!marker.is_object() || !marker.contains("progress") || !marker["progress"].is_object()) return "";
+  const nlohmann::json& p = marker["progress"];
+  auto number = [&](const char* k) {
+    return p.contains(k) && p[k].is_number_integer() ? std::to_string(p[k].get<long long>()) : std::string("?");
+  };
+  std::string text;
+  if (p.contains("index")) {
+    text = "stage " + number("index") + "/" + number("count");
+    if (p.contains("window")) text += ", window " + number("window") + "/" + number("windows");
+    if (p.contains("stage") && p["stage"].is_string() && !p["stage"].get<std::string>().empty())
+      text += " (" + p["stage"].get<std::string>() + ")";
+  }
+  if (const auto c = p.find("checkpointed"); c != p.end() && c->is_number_integer()) {
+    const long long ago = std::max(0LL, now - c->get<long long>());
+    const std::string when = ago < 120 ? std::to_string(ago) + " s ago"
+                             : ago < 7200 ? std::to_string(ago / 60) + " min ago"
+                                          : std::to_string(ago / 3600) + " h ago";
+    text += (text.empty() ? "" : ", ") + std::string("checkpoint ") + when;
+  }
+  return text;
 }
 
 RunDirState run_dir_state(const std::string& dir) {
@@ -128,7 +187,20 @@ RunDirectory RunDirectory::open(const std::string& path_in, const RunDirOptions&
   RunDirectory dir(path, fd, created, o.kind);  // from here the lock is ours; the destructor releases it
 
   const RunDirState state = run_dir_state(path);
+  if (state == RunDirState::Foreign && fs::exists(fs::path(path) / kMarker, ec)) {
+    std::string why = "unreadable";
+    try {
+      parse_run_dir_marker(read_marker_text(path), (fs::path(path) / kMarker).string());
+    } catch (const InputError& e) {
+      why = e.what();
+    }
+    throw InputError(what + ": its marker is damaged (" + why + "); ppsynth cannot tell what the directory holds, so it "
+                     "changes nothing there: name another directory, or mend or remove it yourself");
+  }
   if (o.resume) {
+    if (state == RunDirState::Unfinished && run_dir_marker(path).value("kind", o.kind) != o.kind)
+      throw InputError(what + ": --resume needs an unfinished " + o.kind + " of ppsynth; this is a " +
+                       run_dir_marker(path).value("kind", std::string()) + " of ppsynth");
     if (state != RunDirState::Unfinished) {
       if (created) dir.discard();
       throw InputError(what + ": --resume needs an unfinished " + o.kind + " of ppsynth; this is " +
@@ -145,13 +217,15 @@ RunDirectory RunDirectory::open(const std::string& path_in, const RunDirOptions&
       break;
     case RunDirState::Complete:
     case RunDirState::Unfinished: {
-      if (!o.force) {
-        const bool done = state == RunDirState::Complete;
-        const std::string kind = run_dir_marker(path).value("kind", o.kind);
+      const bool done = state == RunDirState::Complete;
+      const std::string kind = run_dir_marker(path).value("kind", o.kind);
+      if (kind != o.kind)  // --force replaces only what this kind of command made
+        throw InputError(what + ": holds " + (done ? "a finished " : "an unfinished ") + kind + " of ppsynth, not a " +
+                         o.kind + "; name another directory. Nothing was changed.");
+      if (!o.force)
         throw InputError(what + ": holds " + (done ? "a finished " : "an unfinished ") + kind + " of ppsynth; " +
                          (!done && kind == "run" ? "--resume continues it, " : "") +
                          "--force replaces it (its files are then deleted). Nothing was changed.");
-      }
       for (auto& e : fs::directory_iterator(path, ec)) {
         fs::remove_all(e.path(), ec);
         if (ec) throw InputError(what + ": --force: cannot remove " + explain(e.path().string(), ec));

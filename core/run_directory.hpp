@@ -12,8 +12,10 @@
 //   an empty directory                  -> used (it is not removed on failure)
 //   ppsynth's, complete or unfinished   -> refused, naming --force (and --resume for an
 //                                          unfinished run); with --force its entries are
-//                                          removed and it is used again; with --resume an
-//                                          unfinished one is used as it is
+//                                          removed and it is used again -- only when its
+//                                          marker names the same kind (a gather never
+//                                          replaces a run); with --resume an unfinished one
+//                                          is used as it is
 //   ppsynth's, another process writing  -> refused at once (an advisory lock on the directory,
 //                                          released by the kernel when that process dies)
 //   anything else (a file, a directory
@@ -45,8 +47,18 @@ RunDirState run_dir_state(const std::string& dir);
 // True while a process holds the directory open through RunDirectory (its advisory lock):
 // an unfinished run that is locked is running, one that is not was interrupted.
 bool run_dir_locked(const std::string& dir);
-// The marker's JSON, or null when there is none (or it is unreadable).
+// The marker's JSON, or null when there is none (or it is unreadable or damaged).
 nlohmann::json run_dir_marker(const std::string& dir);
+// A marker's text read from `source`, checked: an object whose "kind" is a plain name, "state"
+// "running" or "complete", and whose known keys ("pid", "updated", "progress", "quick",
+// "threads", "processor", "seed") have their types. InputError naming `source` and the key.
+nlohmann::json parse_run_dir_marker(const std::string& text, const std::string& source);
+
+// How far an unfinished run got, from its directory's marker, which a run keeps current: the
+// stage it began last and when it last saved a checkpoint, e.g. "stage 9/20 (class 3/4
+// (id 2), sigma 1/4), checkpoint 4 min ago". "" when the marker holds neither (a run that has
+// not begun its first stage). `now`: seconds since the epoch.
+std::string run_progress_text(const nlohmann::json& marker, long long now);
 
 struct RunDirOptions {
   std::string kind = "run";       // "run", "report": recorded in the marker, used in messages
@@ -65,6 +77,7 @@ class RunDirectory {
   ~RunDirectory();  // releases the lock; leaves the files as they are
 
   const std::string& path() const { return path_; }
+  bool created() const { return created_; }  // this process made the directory
   // Merges `info` into the marker (state still "running"): what a resume needs to know.
   void mark_running(const nlohmann::json& info) { write_marker("running", info); }
   // Merges `progress` into the marker's "progress" object: how far an unfinished run is

@@ -8,6 +8,7 @@
 
 #include <spdlog/fmt/fmt.h>
 
+#include "core/checkpoint_file.hpp"
 #include "core/memory_budget.hpp"
 #include "core/metrics/border.hpp"
 #include "models/gabor_feature_maps.hpp"
@@ -27,7 +28,8 @@ double since(std::chrono::steady_clock::time_point t) {
 // initialised on its own with its share of the points: the paper's best-candidate start
 // costs O(n^2) (m * i candidates for the i-th point), 4 minutes for 12,000 points, while
 // blocks keep it linear in the area. Only the start: block edges vanish in the synthesis.
-PointSet initialize_in_blocks(const Initializer& init, size_t n, int cls, uint64_t seed, const Domain& canvas) {
+PointSet initialize_in_blocks(const Initializer& init, size_t n, int cls, uint64_t seed, const Domain& canvas,
+                              const SynthesisContext& ctx) {
   const int bx = std::max(1, static_cast<int>(std::lround(canvas.width() / 2))),
             by = std::max(1, static_cast<int>(std::lround(canvas.height() / 2)));
   PointSet all(canvas);
@@ -39,6 +41,7 @@ PointSet initialize_in_blocks(const Initializer& init, size_t n, int cls, uint64
       const Domain d{canvas.x0 + canvas.width() * i / bx, canvas.y0 + canvas.height() * j / by,
                      canvas.x0 + canvas.width() * (i + 1) / bx, canvas.y0 + canvas.height() * (j + 1) / by};
       if (upto == placed) continue;
+      ctx.poll();
       const PointSet part = init.initialize(upto - placed, cls, seed + 7777777ull * b, d);
       for (size_t k = 0; k < part.size(); ++k) all.add(part[k]);
       placed = upto;
@@ -79,7 +82,7 @@ PointSet initial_output(const PointSet& ex, const SynthesisContext& ctx, const I
     } else if (!shape.rectangle) {
       start = init.initialize(n, c, ctx.seed + 1000003ull * (c + 1), canvas);
     } else {
-      start = initialize_in_blocks(init, n, c, ctx.seed + 1000003ull * (c + 1), area);
+      start = initialize_in_blocks(init, n, c, ctx.seed + 1000003ull * (c + 1), area, ctx);
     }
     for (size_t i = 0; i < n; ++i) {
       auto attrs = ex_c.attributes_of(i % ex_c.size());
@@ -162,6 +165,7 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
   rule_ = StoppingRuleRegistry::instance().create(p_["convergence"], "method.convergence");
   OptimizerRegistry::instance().entry(p_["optimizer"].value("type", ""), "method.optimizer.type");
   auto init = InitializerRegistry::instance().create(p_["init"], "method.init");
+  init->set_poll([&ctx] { ctx.poll(); });
   std::vector<std::vector<size_t>> out_index;
   out_ = initial_output(exemplar, ctx, *init, out_index);
   pad_begin_ = out_.size();
@@ -194,11 +198,12 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
 }
 
 void GaborEngine::restore(const std::string& bytes) {
-  state_ = deserialize_state(bytes, "checkpoint");
-  if (state_.positions.size() != out_.size() || state_.stage < 0 || state_.stage > static_cast<int>(plan_.size()) ||
-      (state_.moving.defined() && state_.moving.size(0) != static_cast<int64_t>(state_.group_moving.size())) ||
-      state_.final_points.size() != (shape_.rectangle ? out_.size() : 0))
-    throw InputError("the checkpoint does not belong to this synthesis (other exemplar, config or plan)");
+  const std::string& source = ctx_.resume_source;
+  state_ = deserialize_state(bytes, source);
+  if (!ctx_.checkpoint_key.is_null())
+    if (const std::string differs = checkpoint_key_difference(ctx_.checkpoint_key, state_.key); !differs.empty())
+      throw checkpoint_error(source, "made for another synthesis: " + differs);
+  check_restored(source);
   for (size_t i = 0; i < out_.size(); ++i) out_[i] = state_.positions[i];
   // The time and phases of the processes before this one (0 in checkpoints without them).
   const json& ph = state_.phase_seconds;
@@ -207,22 +212,80 @@ void GaborEngine::restore(const std::string& bytes) {
                    ph.value("loss_forward", 0.0), ph.value("backward", 0.0), ph.value("optimizer_step", 0.0)};
   std::istringstream rng(state_.rng);
   rng >> jitter_rng_;
-  if (!rng) throw InputError("checkpoint: unreadable generator state");
+  if (!rng) throw checkpoint_error(source, "an unreadable generator state");
   std::vector<ProgressEvent> earlier;
   for (const auto& r : state_.history) {
     ProgressEvent ev;
-    ev.stage = plan_.at(r.stage).label;
+    ev.stage = plan_[r.stage].label;
     ev.stage_index = r.stage;
     ev.stage_count = static_cast<int>(plan_.size());
     ev.iteration = r.iteration;
-    ev.max_iterations = iteration_cap(plan_.at(r.stage));
+    ev.max_iterations = iteration_cap(plan_[r.stage]);
     ev.loss = r.loss;
     ev.seconds = r.seconds;
-    ev.window = plan_.at(r.stage).window.index;
-    ev.windows = plan_.at(r.stage).window.count;
+    ev.window = plan_[r.stage].window.index;
+    ev.windows = plan_[r.stage].window.count;
     earlier.push_back(ev);
   }
   ctx_.resumed(earlier);
+}
+
+void GaborEngine::check_restored(const std::string& source) const {
+  auto refuse = [&](const std::string& what) {
+    return checkpoint_error(source, what + " (a damaged checkpoint, or one of another synthesis)");
+  };
+  const SynthesisState& s = state_;
+  const size_t n = out_.size();
+  const int stages = static_cast<int>(plan_.size());
+  if (s.positions.size() != n)
+    throw refuse("it holds " + std::to_string(s.positions.size()) + " points; this synthesis has " + std::to_string(n));
+  const Domain area = shape_.canvas();
+  const double slack = 1e-6 * std::max(area.width(), area.height());  // float positions mapped back
+  for (size_t i = 0; i < n; ++i)
+    if (!area.contains(s.positions[i], slack)) throw refuse("point " + std::to_string(i) + " lies outside the synthesis domain");
+  if (s.stage > stages) throw refuse("stage " + std::to_string(s.stage) + " of a plan of " + std::to_string(stages));
+  if (s.stages.size() != static_cast<size_t>(s.stage))
+    throw refuse(std::to_string(s.stages.size()) + " finished stages recorded at stage " + std::to_string(s.stage));
+  const int cap = s.stage < stages ? iteration_cap(plan_[s.stage]) : 0;
+  if (s.iteration > cap) throw refuse("iteration " + std::to_string(s.iteration) + " of a stage of " + std::to_string(cap));
+  if (s.stage_losses.size() != static_cast<size_t>(s.iteration))
+    throw refuse(std::to_string(s.stage_losses.size()) + " losses recorded at iteration " + std::to_string(s.iteration));
+  if (!(s.stage_scale == -1 || s.stage_scale >= 0)) throw refuse("a negative loss scale");
+  for (const auto& r : s.history)
+    if (r.stage > s.stage || r.stage >= stages || r.iteration >= iteration_cap(plan_[r.stage]))
+      throw refuse("a loss recorded at stage " + std::to_string(r.stage) + ", iteration " + std::to_string(r.iteration));
+  if (s.final_points.size() != (shape_.rectangle ? n : 0)) throw refuse("final flags for another number of points");
+  for (uint8_t f : s.final_points)
+    if (f > 1) throw refuse("a final flag that is neither 0 nor 1");
+  if (!s.moving.defined()) {
+    if (s.stage_best.defined() || !s.optimizer.empty()) throw refuse("an optimiser state or best iterate without positions");
+    return;
+  }
+  if (s.stage >= stages) throw refuse("moving positions after the last stage");
+  const Stage& stage = plan_[s.stage];
+  if (s.moving.size(0) != static_cast<int64_t>(s.group_moving.size()))
+    throw refuse(std::to_string(s.moving.size(0)) + " moving positions for " + std::to_string(s.group_moving.size()) + " moving points");
+  if (s.stage_best.defined() && s.stage_best.sizes() != s.moving.sizes()) throw refuse("a best iterate of another shape");
+  // The group's points: indices into the output, each once, of the stage's classes (its own
+  // class moves); the paper's plan names them itself.
+  std::vector<char> seen(n, 0);
+  auto check_points = [&](const std::vector<int64_t>& idx, bool moving) {
+    for (int64_t i : idx) {
+      if (i < 0 || static_cast<size_t>(i) >= n) throw refuse("point index " + std::to_string(i) + " of " + std::to_string(n));
+      if (seen[i]++) throw refuse("point " + std::to_string(i) + " twice in its group");
+      const int c = out_.cls(static_cast<size_t>(i));
+      const bool ok = moving && stage.own_class >= 0 ? c == stage.own_class
+                             : std::find(stage.target_classes.begin(), stage.target_classes.end(), c) != stage.target_classes.end();
+      if (!ok) throw refuse("point " + std::to_string(i) + " (class " + std::to_string(c) + ") is not of " + stage.label);
+    }
+  };
+  check_points(s.group_moving, true);
+  check_points(s.group_frozen, false);
+  auto same = [](const std::vector<int64_t>& a, const std::vector<size_t>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](int64_t x, size_t y) { return static_cast<size_t>(x) == y; });
+  };
+  if (stage.window.torus && (!same(s.group_moving, stage.moving) || !same(s.group_frozen, stage.frozen)))
+    throw refuse("points other than those of " + stage.label);
 }
 
 PointSet GaborEngine::synthesised() const {
@@ -258,6 +321,7 @@ PointSet GaborEngine::run() {
   if (ctx_.resume_state) restore(*ctx_.resume_state);
   last_checkpoint_ = Clock::now();
   for (; state_.stage < static_cast<int>(plan_.size());) {
+    ctx_.poll();  // a stop between stages (a window's set-up, its empty stages) goes back to the last checkpoint
     const Stage& stage = plan_[state_.stage];
     if (stage.group != group_) enter_group(stage);
     if (moving_idx_.empty()) {  // a window without points of this class left to move
@@ -332,6 +396,7 @@ void GaborEngine::choose_window_points(const Stage& stage) {
   state_.group_moving.clear();
   state_.group_frozen.clear();
   for (size_t i = 0; i < out_.size(); ++i) {
+    if (i % 65536 == 0) ctx_.poll();
     const int c = out_.cls(i);
     if (c < 0 || c >= static_cast<int>(in_play.size()) || !in_play[c]) continue;
     if (c == stage.own_class && !state_.final_points[i] && inside(window_.movable, out_[i]))
@@ -396,7 +461,7 @@ void GaborEngine::enter_stage(const Stage& stage) {
   json optimizer = p_["optimizer"];
   if (stage.border_relax && s_.relax_lr > 0) optimizer["lr"] = json::array({s_.relax_lr});
   optimizer_ = OptimizerRegistry::instance().create(optimizer, "method.optimizer", state_.moving, stage.sigma_index);
-  if (!state_.optimizer.empty()) optimizer_->load_state(state_.optimizer);  // resumed inside the stage
+  if (!state_.optimizer.empty()) optimizer_->load_state(state_.optimizer, ctx_.resume_source);  // resumed inside the stage
   stage_start_ = Clock::now();
   // Resumed inside the stage: its clock goes on from the last iteration recorded before.
   if (state_.iteration > 0 && !state_.history.empty() && state_.history.back().stage == state_.stage)
@@ -616,7 +681,8 @@ void GaborEngine::save_checkpoint() {
   last_checkpoint_ = Clock::now();
   if (!ctx_.save_checkpoint) return;
   state_.positions = out_.positions();
-  state_.optimizer = optimizer_ ? optimizer_->save_state() : std::string();
+  state_.optimizer = optimizer_ ? optimizer_->save_state() : OptimizerState();
+  state_.key = ctx_.checkpoint_key.is_null() ? json::object() : ctx_.checkpoint_key;
   std::ostringstream rng;
   rng << jitter_rng_;
   state_.rng = rng.str();

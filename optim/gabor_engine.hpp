@@ -51,6 +51,9 @@ class GaborEngine {
   };
 
   void restore(const std::string& bytes);
+  // Every index, count and flag of the restored state against the plan and the output;
+  // InputError naming `source` otherwise.
+  void check_restored(const std::string& source) const;
   void enter_group(const Stage& stage);   // networks, neighbours, point terms of a new group
   void choose_window_points(const Stage& stage);  // a window group's moving and frozen points
   torch::Tensor confined(const torch::Tensor& moving) const;  // wrapped (torus) or kept in the window

@@ -9,6 +9,7 @@
 #include "models/feature_grid.hpp"
 #include "models/gabor_feature_maps.hpp"
 #include "optim/sigma_schedule.hpp"
+#include "optim/window_plan.hpp"
 
 namespace ppsynth {
 
@@ -153,6 +154,7 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   int num_sigmas = get_int(p, "num_sigmas", "method");
   s.max_iterations = get_int(p, "max_iterations", "method");
   s.feature_net = p["feature_net"];
+  const int full_res = s.res, full_num_sigmas = num_sigmas;  // the window margin's (below)
   if (quick) {
     s.res = std::min(s.res, get_int(p["quick"], "res", "method.quick"));
     s.max_iterations = std::min(s.max_iterations, get_int(p["quick"], "max_iterations", "method.quick"));
@@ -168,8 +170,12 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   s.attr_cols = map_attribute_columns(exemplar, p["map_attributes"]);
   s.jitter = p["jitter"].get<bool>();
   const bool per_sigma = get_bool(p["grid"], "per_sigma", "method.grid");
-  for (double sigma : s.sigmas)  // at most res; the finest sigma gets res itself
-    s.sigma_res.push_back(per_sigma ? std::max(8, static_cast<int>(std::ceil(s.res * s.sigmas.back() / sigma - 1e-9))) : s.res);
+  auto grid_per_sigma = [&](const std::vector<double>& sigmas, int res) {  // at most res; the finest sigma gets res itself
+    std::vector<int> r;
+    for (double sigma : sigmas) r.push_back(per_sigma ? std::max(8, static_cast<int>(std::ceil(res * sigmas.back() / sigma - 1e-9))) : res);
+    return r;
+  };
+  s.sigma_res = grid_per_sigma(s.sigmas, s.res);
   const json& measure = p["measure"];
   if (!measure.is_string() || (measure != "grid" && measure != "tiles" && measure != "rolled"))
     throw config_error("method.measure", "expected \"grid\", \"tiles\" or \"rolled\", got " + measure.dump());
@@ -225,8 +231,20 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
     if (m.is_null() || (m.is_string() && m.get<std::string>() == "auto")) {
       // The maps' reach plus the network's receptive field, at the stage where they reach farthest.
       const int rf = get_int(p["window"], "receptive_field", "method.window");
-      for (size_t i = 0; i < s.sigmas.size(); ++i)
-        s.window_margin = std::max(s.window_margin, 3 * s.sigmas[i] + rf / static_cast<double>(s.sigma_res[i]));
+      auto reach = [&](const std::vector<double>& sigmas, const std::vector<int>& res) {
+        double r = 0;
+        for (size_t i = 0; i < sigmas.size(); ++i) r = std::max(r, 3 * sigmas[i] + rf / static_cast<double>(res[i]));
+        return r;
+      };
+      s.window_margin = reach(s.sigmas, s.sigma_res);
+      // --quick's coarser grid reaches farther than the full settings' (lines: 1.14 against
+      // 0.60 exemplar units); where its margin leaves the windows no interior, the full
+      // settings' is taken, so that a smoke run takes every output the real run takes.
+      if (quick && !windows_fit(c, side, s.window_margin)) {
+        const auto sigmas = sigma_schedule(s.mean_nn_distance, get_number(p, "c1", "method"), get_number(p, "c2", "method"),
+                                           full_num_sigmas);
+        s.window_margin = std::min(s.window_margin, reach(sigmas, grid_per_sigma(sigmas, full_res)));
+      }
     } else if (m.is_number() && m.get<double>() >= 0)
       s.window_margin = m.get<double>();
     else

@@ -4,6 +4,7 @@
 // (supplement: random initialisation works too), "file" (a given point file, e.g. the
 // published code's own initialisation in shared/data/reference, to reproduce its runs).
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "core/point_set.hpp"
@@ -17,6 +18,12 @@ class Initializer {
   // n positions for class `cls` (0-based, in the exemplar's class numbering) on `domain`
   // (the paper's unit square, or a canvas in exemplar units; margins are fractions of it).
   virtual PointSet initialize(size_t n, int cls, uint64_t seed, const Domain& domain) const = 0;
+  // Called often while it works (a run's stop check, SynthesisContext::poll; it may throw to
+  // stop): the paper's best-candidate start costs O(n^2) and runs for minutes on large outputs.
+  void set_poll(std::function<void()> poll) { poll_ = std::move(poll); }
+
+ protected:
+  std::function<void()> poll_;
 };
 
 using InitializerRegistry = Registry<Initializer>;

@@ -22,7 +22,9 @@ class BestCandidateInit : public Initializer {
  public:
   explicit BestCandidateInit(BestCandidateOptions o) : o_(o) {}
   PointSet initialize(size_t n, int, uint64_t seed, const Domain& d) const override {
-    return best_candidate_points(n, seed, d, o_);
+    BestCandidateOptions o = o_;
+    o.poll = poll_;
+    return best_candidate_points(n, seed, d, o);
   }
 
  private:

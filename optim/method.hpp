@@ -6,6 +6,7 @@
 //
 // This header is torch-free on purpose: baselines in optim/baselines/ build without LibTorch.
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -55,6 +56,17 @@ class SynthesisObserver {
   // A resumed run: the iterations run before the checkpoint, in order (their on_iteration
   // events, replayed once), then the run continues with on_iteration as usual.
   virtual void on_resume(const std::vector<ProgressEvent>& earlier) {}
+  // During long work between iterations (initialisation, a window's set-up), several times a
+  // second: a front end's chance to see a stop of its own (Python's Ctrl-C) and set the stop
+  // flag it handed the run.
+  virtual void on_poll() {}
+};
+
+// Thrown by a method that stopped on SynthesisContext::stop (after saving a checkpoint when
+// it had the state for one).
+class SynthesisInterrupted : public std::runtime_error {
+ public:
+  SynthesisInterrupted() : std::runtime_error("interrupted; the last checkpoint holds the state") {}
 };
 
 // Everything a method gets besides its own parameters.
@@ -87,20 +99,32 @@ struct SynthesisContext {
   std::function<void(const std::string& state)> save_checkpoint;
   double checkpoint_seconds = 60;
   const std::string* resume_state = nullptr;
+  std::string resume_source = "checkpoint";  // names resume_state in errors (its file)
+  // Which synthesis the checkpoints belong to (core/checkpoint_file.hpp's key: resolved
+  // config, seed, exemplar, quick, method version): written into every checkpoint and compared
+  // with resume_state's. Null: neither (a method tested on its own).
+  nlohmann::json checkpoint_key;
   const std::atomic<bool>* stop = nullptr;
 
   bool stop_requested() const { return stop && stop->load(); }
+  // Long work between iterations calls this often (cheap: it looks at the clock); at most
+  // every 0.1 s it asks the observers (on_poll) and throws SynthesisInterrupted once `stop` is
+  // set, so a stop is seen within a second wherever the method is.
+  void poll() const {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_poll_ < std::chrono::milliseconds(100)) return;
+    last_poll_ = now;
+    for (auto* o : observers) o->on_poll();
+    if (stop_requested()) throw SynthesisInterrupted();
+  }
   void start(const PointSet& p) const { for (auto* o : observers) o->on_start(p); }
   void stage_begin(const ProgressEvent& e) const { for (auto* o : observers) o->on_stage_begin(e); }
   void iteration(const ProgressEvent& e) const { for (auto* o : observers) o->on_iteration(e); }
   void resumed(const std::vector<ProgressEvent>& earlier) const { for (auto* o : observers) o->on_resume(earlier); }
   void stage_end(const ProgressEvent& e, const PointSet& p) const { for (auto* o : observers) o->on_stage_end(e, p); }
-};
 
-// Thrown by a method that stopped on SynthesisContext::stop after saving a checkpoint.
-class SynthesisInterrupted : public std::runtime_error {
- public:
-  SynthesisInterrupted() : std::runtime_error("interrupted; the last checkpoint holds the state") {}
+ private:
+  mutable std::chrono::steady_clock::time_point last_poll_{};
 };
 
 class SynthesisMethod {
@@ -111,6 +135,9 @@ class SynthesisMethod {
   // True when the method honours the checkpoint fields of SynthesisContext. The others run
   // to the end in one go and cannot be resumed (the run layer says so).
   virtual bool can_resume() const { return false; }
+  // Part of a checkpoint's key: bump it when a change of the method makes a run continued from
+  // an earlier build's checkpoint differ from one never interrupted (another trajectory).
+  virtual int version() const { return 1; }
 };
 
 // {"type": "gabor" | "roveri2015" | "pcf2017" | ..., params...}

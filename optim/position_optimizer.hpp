@@ -6,21 +6,28 @@
 #include <torch/torch.h>
 
 #include <functional>
+#include <map>
 #include <string>
 
 #include "core/registry.hpp"
 
 namespace ppsynth {
 
+// An optimiser's state as named tensors (moments, step counts, history), as a checkpoint
+// holds it (optim/synthesis_state.hpp); empty before the first step.
+using OptimizerState = std::map<std::string, torch::Tensor>;
+
 class PositionOptimizer {
  public:
   virtual ~PositionOptimizer() = default;
   // closure: zero grads are handled here; it returns the loss after backward().
   virtual double step(const std::function<torch::Tensor()>& closure) = 0;
-  // The optimiser's state (moments, step counts, history) as bytes, and back: checkpoints
-  // restore it so a resumed stage takes the very steps it would have taken.
-  virtual std::string save_state() const = 0;
-  virtual void load_state(const std::string& bytes) = 0;
+  // The optimiser's state, and back: checkpoints restore it so a resumed stage takes the very
+  // steps it would have taken. load_state checks every tensor against the parameters (shape,
+  // type, finite, in range) and throws InputError naming `source` for a state that is not
+  // this optimiser's.
+  virtual OptimizerState save_state() const = 0;
+  virtual void load_state(const OptimizerState& state, const std::string& source) = 0;
 };
 
 // Created per stage with the parameter tensor and the stage (sigma) index, so a learning-rate

@@ -10,7 +10,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/checkpoint_file.hpp"
+
 #include "core/point_set.hpp"
+#include "optim/position_optimizer.hpp"
 
 namespace ppsynth {
 
@@ -30,7 +33,7 @@ struct SynthesisState {
   // position, so a resumed run must not choose again), and the points no window moves again.
   std::vector<int64_t> group_moving, group_frozen;
   std::vector<uint8_t> final_points;  // windows only (empty otherwise)
-  std::string optimizer;             // the optimiser's serialised state ("" at a stage start)
+  OptimizerState optimizer;          // the optimiser's state (empty at a stage start)
   std::string rng;                   // the jitter generator (std::mt19937_64, text form)
   std::vector<double> stage_losses;  // losses of `stage` so far (the convergence window)
   std::vector<double> stage_watch;   // the stopping rule's record of `stage` (optim/stopping_rule.hpp)
@@ -39,11 +42,20 @@ struct SynthesisState {
   std::vector<LossRecord> history;   // every iteration of every stage so far
   nlohmann::json stages = nlohmann::json::array();  // one summary per finished stage
   nlohmann::json phase_seconds = nlohmann::json::object();
+  // Which synthesis the state continues (core/checkpoint_file.hpp's key; SynthesisContext).
+  nlohmann::json key = nlohmann::json::object();
 };
 
-// Bytes <-> state (a torch archive: tensors bit for bit, the rest as JSON). `source` names
-// the file in errors.
+// Bytes <-> state: a checkpoint file (core/checkpoint_file.hpp: tensors bit for bit, a
+// checksum over everything). Reading checks the file, and the type and shape of every array
+// (InputError naming `source` and the array); the engine restoring it checks the values
+// against its plan (indices in range, optim/gabor_engine.cpp).
 std::string serialize_state(const SynthesisState& state);
 SynthesisState deserialize_state(const std::string& bytes, const std::string& source);
+
+// A tensor as a checkpoint array and back (float32, float64, int64 and uint8, any shape), bit
+// for bit.
+CheckpointArray tensor_array(const torch::Tensor& t);
+torch::Tensor array_tensor(const CheckpointArray& a);
 
 }  // namespace ppsynth

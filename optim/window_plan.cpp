@@ -31,15 +31,20 @@ AxisWindows along_axis(double c0, double c1, double side, double margin) {
 
 }  // namespace
 
+bool windows_fit(const Domain& canvas, double max_side, double margin) {
+  const double side = std::min({max_side, canvas.width(), canvas.height()});
+  // One window over the whole canvas has no neighbour to protect: any margin will do.
+  const bool one_window = canvas.width() <= side * (1 + 1e-12) && canvas.height() <= side * (1 + 1e-12);
+  return one_window || side > 2 * margin * 1.25;
+}
+
 WindowLayout window_layout(const Domain& canvas, const Domain& moving_area, double max_side, double margin, double reach, const std::string& key) {
   WindowLayout w;
   w.canvas = canvas;
   w.side = std::min({max_side, canvas.width(), canvas.height()});
   w.margin = margin;
   w.reach = reach;
-  // One window over the whole canvas has no neighbour to protect: any margin will do.
-  const bool one_window = canvas.width() <= w.side * (1 + 1e-12) && canvas.height() <= w.side * (1 + 1e-12);
-  if (!one_window && !(w.side > 2 * margin * 1.25))
+  if (!windows_fit(canvas, max_side, margin))
     throw config_error(key, "a window of " + std::to_string(w.side) + " exemplar units cannot hold two margins of " +
                                 std::to_string(margin) + " and an interior (the maps' reach and the network's receptive " +
                                 "field); use larger windows or a larger output");

@@ -41,6 +41,8 @@ struct WindowLayout {
 // Throws InputError naming `key` when the side cannot hold two margins (and more than one
 // window is needed).
 WindowLayout window_layout(const Domain& canvas, const Domain& moving_area, double max_side, double margin, double reach, const std::string& key);
+// True when window_layout takes windows of `max_side` with `margin` on `canvas`.
+bool windows_fit(const Domain& canvas, double max_side, double margin);
 
 // The stages of every window: the paper's class / sigma stages (class_sigma_plan's labels,
 // with "window i/n, " before them), one group per window and class.

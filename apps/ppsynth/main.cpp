@@ -1,6 +1,12 @@
 // `ppsynth`: the command-line front of the framework. Subcommands register themselves
 // (apps/ppsynth/analysis/*.cpp, apps/ppsynth/synthesis/*.cpp); this file only parses the
-// global flags, dispatches, and turns errors into messages and exit codes.
+// global flags, dispatches, and turns errors into messages and exit codes -- one code per
+// class, as kExitStatus says (`ppsynth --help` prints it):
+//   0 done; 2 a usage error (the parser's, an unknown command or option, a value out of
+//   range) or an input error (InputError: a file, key or line named; a path; memory);
+//   130 / 143 stopped by SIGINT / SIGTERM; 3 an internal error (a bug); 1 `sweep run`: some
+//   of its runs failed (their logs say why).
+// Messages are one line: never a C++ backtrace or an exception's internal name.
 #include <filesystem>
 #include <iostream>
 #include <new>
@@ -8,9 +14,12 @@
 
 #include "apps/ppsynth/command.hpp"
 #include "core/error.hpp"
+#include "core/plain_message.hpp"
 #include "core/log.hpp"
 #include "core/revision.hpp"
 #ifdef PPSYNTH_WITH_TORCH
+#include <c10/util/Exception.h>
+
 #include "optim/run/runtime.hpp"
 #endif
 
@@ -28,11 +37,29 @@ bool register_command(const std::string& name, const std::string& description, S
 
 }  // namespace ppsynth::app
 
+namespace {
+
+const char* kExitStatus =
+    "Exit status: 0 done; 2 a usage or input error (the message names the option, file, key or line; "
+    "nothing is half-written); 130 / 143 stopped by SIGINT / SIGTERM (a command that checkpoints says where "
+    "its checkpoint is); 3 an internal error (a bug of ppsynth: please report it); 1 `sweep run`: some of its "
+    "runs failed (each run's log says why).";
+
+// The command named on the line (the first word that is not a global flag), or "".
+std::string named_command(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (argv[i][0] != '-') return argv[i];
+  return "";
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace ppsynth;
   CLI::App cli{"ppsynth: by-example point-pattern synthesis and analysis (revision " +
                std::string(revision()) + ")"};
   cli.require_subcommand(1);
+  cli.footer(kExitStatus);
   int verbose = 0, quiet = 0;
   cli.add_flag("-v,--verbose", verbose, "more log output (repeat for trace)");
   cli.add_flag("-q,--quiet", quiet, "less log output (repeat for errors only)");
@@ -48,10 +75,22 @@ int main(int argc, char** argv) {
     runs[name] = entry.setup(*sub);
     subs[name] = sub;
   }
+  // An unknown command: CLI11 would say that a subcommand is required.
+  if (const std::string named = named_command(argc, argv); !named.empty() && !app::commands().count(named)) {
+    std::string known;
+    for (const auto& [name, entry] : app::commands()) known += (known.empty() ? "" : ", ") + name;
+    std::cerr << "ppsynth: unknown command '" << named << "'; the commands are " << known << " (ppsynth --help)\n";
+    return 2;
+  }
   try {
     cli.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
+  } catch (const CLI::Success& e) {  // --help, --version
     return cli.exit(e);
+  } catch (const CLI::ParseError& e) {  // a usage error: exit 2 like every other refused input
+    const std::string named = named_command(argc, argv);
+    std::cerr << "ppsynth" << (named.empty() ? "" : " " + named) << ": " << plain_message(e.what()) << " (ppsynth "
+              << (named.empty() ? "" : named + " ") << "--help)\n";
+    return 2;
   }
   configure_logging(verbose - quiet);
   for (auto& [name, sub] : subs) {
@@ -70,8 +109,15 @@ int main(int argc, char** argv) {
     } catch (const std::bad_alloc&) {  // sizes are checked up front (core/memory_budget.hpp); this is what slips through
       std::cerr << "ppsynth " << name << ": ran out of memory; reduce the point count, grid resolution or upscaling\n";
       return 2;
+#ifdef PPSYNTH_WITH_TORCH
+    } catch (const c10::Error& e) {  // LibTorch's: its message without the C++ backtrace
+      std::cerr << "ppsynth " << name << ": internal error (a bug of ppsynth; please report it): "
+                << plain_message(e.what_without_backtrace()) << "\n";
+      return 3;
+#endif
     } catch (const std::exception& e) {
-      std::cerr << "ppsynth " << name << ": internal error: " << e.what() << "\n";
+      std::cerr << "ppsynth " << name << ": internal error (a bug of ppsynth; please report it): " << plain_message(e.what())
+                << "\n";
       return 3;
     }
   }

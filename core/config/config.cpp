@@ -222,36 +222,54 @@ bool get_bool(const json& j, const std::string& key, const std::string& key_path
   return j[key].get<bool>();
 }
 
-std::vector<uint64_t> parse_number_list(const json& value, const std::string& key, const std::string& noun) {
+std::vector<uint64_t> parse_number_list(const json& value, const std::string& key, const std::string& noun, uint64_t max) {
+  constexpr uint64_t kMaxRange = 100000;
+  constexpr size_t kMaxCount = 1000000;
   std::vector<uint64_t> out;
   std::set<uint64_t> seen;
-  auto add = [&](uint64_t s) {
-    if (seen.insert(s).second) out.push_back(s);
-  };
   const json list = value.is_array() ? value : json::array({value});
   for (size_t i = 0; i < list.size(); ++i) {
     const auto& s = list[i];
     const std::string kp = key + "[" + std::to_string(i) + "]";
+    const auto bad = [&](const std::string& why) {
+      return config_error(kp, why + ": expected a " + noun + " from 0 to " + std::to_string(max) + ", a range \"first-last\" (at most " +
+                                  std::to_string(kMaxRange) + " " + noun + "s) or a list of both separated by commas (\"95,97-98\")");
+    };
+    const auto add = [&](uint64_t v) {
+      if (seen.insert(v).second) out.push_back(v);
+      if (out.size() > kMaxCount) throw config_error(key, "more than " + std::to_string(kMaxCount) + " " + noun + "s");
+    };
+    // Digits only, at most `max`; saturation (strtoull, sscanf) would turn 2^64 and beyond into a bound.
+    const auto number = [&](const std::string& text, const std::string& part) {
+      if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
+        throw bad("'" + part.substr(0, 40) + "' is not a whole number or a range of them");
+      uint64_t v = 0;
+      for (char c : text) {
+        const uint64_t d = static_cast<uint64_t>(c - '0');
+        if (d > max || v > (max - d) / 10) throw bad(text.substr(0, 40) + " is past " + std::to_string(max));
+        v = v * 10 + d;
+      }
+      return v;
+    };
     if (s.is_number_unsigned() || (s.is_number_integer() && s.get<long long>() >= 0)) {
+      if (s.get<uint64_t>() > max) throw bad(s.dump() + " is past " + std::to_string(max));
       add(s.get<uint64_t>());
       continue;
     }
-    const auto bad = [&] {
-      return config_error(kp, "expected a " + noun + " >= 0, a range \"first-last\" (at most 100000 " + noun +
-                              "s) or a list of both separated by commas (\"95,97-98\")");
-    };
-    if (!s.is_string()) throw bad();
+    if (!s.is_string()) throw bad(s.dump().substr(0, 40));
     const std::string text = s.get<std::string>();
-    for (size_t a = 0, comma; a <= text.size(); a = comma + 1) {  // "95,97-98": each part a seed or a range
+    for (size_t a = 0, comma; a <= text.size(); a = comma + 1) {  // "95,97-98": each part a number or a range
       comma = std::min(text.find(',', a), text.size());
       const std::string part = text.substr(a, comma - a);
-      unsigned long long first = 0, last = 0;
-      char tail = 0;
-      const int n = std::sscanf(part.c_str(), "%llu-%llu%c", &first, &last, &tail);
-      if (n == 1 && part.find_first_not_of("0123456789") == std::string::npos) last = first;
-      else if (n != 2 || part.find_first_not_of("0123456789-") != std::string::npos) throw bad();
-      if (last < first || last - first > 100000) throw bad();
-      for (auto v = first; v <= last; ++v) add(v);
+      const size_t dash = part.find('-');
+      const uint64_t first = number(part.substr(0, dash), part);
+      const uint64_t last = dash == std::string::npos ? first : number(part.substr(dash + 1), part);
+      if (last < first) throw bad("the range " + part + " runs backwards");
+      if (last - first >= kMaxRange) throw bad("the range " + part + " spans more than " + std::to_string(kMaxRange) + " " + noun + "s");
+      for (uint64_t v = first;; ++v) {  // ends at `last` without stepping past it (last may be UINT64_MAX)
+        add(v);
+        if (v == last) break;
+      }
     }
   }
   if (out.empty()) throw config_error(key, "no " + noun + "s");

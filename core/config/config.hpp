@@ -43,9 +43,11 @@ int get_int(const json& j, const std::string& key, const std::string& key_path);
 std::string get_string(const json& j, const std::string& key, const std::string& key_path);
 bool get_bool(const json& j, const std::string& key, const std::string& key_path);
 
-// A list of whole numbers >= 0 (a sweep's seeds, gather's stages): 95, "95", "96-99",
-// "95,97-98", [95, "97-98"] -> in order, without repeats. Errors name `key` (and the element)
-// and call each number a `noun` ("seed").
-std::vector<uint64_t> parse_number_list(const json& value, const std::string& key, const std::string& noun);
+// A list of whole numbers in [0, max] (a sweep's seeds, gather's stages): 95, "95", "96-99",
+// "95,97-98", [95, "97-98"] -> in order, without repeats; a range spans at most 100000
+// numbers, the list at most 1000000. Digits only (no sign, no space, no exponent); a number
+// past `max` is refused, never saturated. Errors name `key` (and the element) and call each
+// number a `noun` ("seed").
+std::vector<uint64_t> parse_number_list(const json& value, const std::string& key, const std::string& noun, uint64_t max);
 
 }  // namespace ppsynth

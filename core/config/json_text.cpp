@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "core/error.hpp"
+#include "core/plain_message.hpp"
 
 namespace ppsynth {
 
@@ -14,15 +15,6 @@ bool number_char(char c) { return (c >= '0' && c <= '9') || c == '.' || c == 'e'
 
 std::string shortened(const std::string& token) {
   return token.size() <= 40 ? token : token.substr(0, 20) + "..." + token.substr(token.size() - 10);
-}
-
-// nlohmann's what() starts with "[json.exception.parse_error.101] ": the rest is the message.
-std::string without_exception_tag(const std::string& what) {
-  if (what.rfind("[json.exception.", 0) == 0) {
-    const auto e = what.find("] ");
-    if (e != std::string::npos) return what.substr(e + 2);
-  }
-  return what;
 }
 
 }  // namespace
@@ -79,9 +71,9 @@ nlohmann::json parse_json_text(std::string text, const std::string& source, bool
     return nlohmann::json::parse(text, nullptr, true, allow_comments);
   } catch (const nlohmann::json::parse_error& e) {
     throw file_error(source, line_of_offset(text, e.byte > 0 ? e.byte - 1 : 0),
-                     "invalid JSON: " + without_exception_tag(e.what()));
+                     "invalid JSON: " + plain_message(e.what()));
   } catch (const nlohmann::json::exception& e) {  // out_of_range 406 and the like
-    throw file_error(source, 0, "invalid JSON: " + without_exception_tag(e.what()));
+    throw file_error(source, 0, "invalid JSON: " + plain_message(e.what()));
   }
 }
 

@@ -20,6 +20,7 @@ PointSet best_candidate_points(size_t n, uint64_t seed, Domain d, const BestCand
   ps.reserve(n);
   const double diag = std::hypot(d.width(), d.height());
   gen_detail::DynamicGrid grid(d, std::sqrt(d.area() / std::max<size_t>(n, 1)), /*periodic=*/true);
+  size_t since_poll = 0;
   for (size_t count = 0; count < n; ++count) {
     const size_t candidates = std::max<size_t>(1, static_cast<size_t>(std::ceil(opt.m * count)));
     Vec2 best = gen_detail::uniform_in(rng, window);
@@ -28,6 +29,7 @@ PointSet best_candidate_points(size_t n, uint64_t seed, Domain d, const BestCand
       // Search radius that usually contains a neighbour; doubled when it does not.
       const double start = 2 * std::sqrt(d.area() / count);
       for (size_t c = 0; c < candidates; ++c) {
+        if (opt.poll && ++since_poll >= 4096) since_poll = 0, opt.poll();
         Vec2 q = c == 0 ? best : gen_detail::uniform_in(rng, window);
         double lim = start, dn;
         while ((dn = grid.nearest_within(q, lim)) >= lim && lim < diag) lim *= 2;

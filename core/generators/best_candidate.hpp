@@ -7,6 +7,7 @@
 // default). margin = 0 gives the classic toroidal best-candidate pattern.
 // Registered as "best_candidate" {m, margin}.
 #include <cstdint>
+#include <functional>
 
 #include "core/point_set.hpp"
 
@@ -15,6 +16,9 @@ namespace ppsynth {
 struct BestCandidateOptions {
   double m = 10;        // candidates per accepted point
   double margin = 0.01;  // candidates drawn in [x0+margin*W, x1-margin*W] x (same in y)
+  // Called every few thousand candidates when set (a caller's stop check, which may throw):
+  // the cost grows with n^2, minutes for large n.
+  std::function<void()> poll;
 };
 
 PointSet best_candidate_points(size_t n, uint64_t seed, Domain d = {},

@@ -1,5 +1,7 @@
 #include "optim/run/run_config.hpp"
 
+#include <algorithm>
+
 #include "core/config/config.hpp"
 #include "core/config/defaults_catalog.hpp"
 #include "core/config/param_bounds.hpp"
@@ -7,6 +9,7 @@
 #include "core/formats/point_io.hpp"
 #include "core/output_shape.hpp"
 #include "core/run_directory.hpp"
+#include "core/run_json.hpp"
 #include "optim/method.hpp"
 #include "optim/run/presets.hpp"
 #include "optim/run/runtime.hpp"
@@ -37,7 +40,7 @@ json run_defaults() {
 json resolve_run_config(json config, const std::vector<std::string>& overrides) {
   for (auto& o : overrides) set_override(config, o);
   json r = apply_defaults(run_defaults(), apply_preset(config), "");
-  if (!r["seed"].is_number_integer() || r["seed"].get<long long>() < 0) throw config_error("seed", "expected an integer >= 0");
+  if (!is_seed(r["seed"])) throw config_error("seed", "expected a whole number from 0 to 2^63 - 1, got " + r["seed"].dump());
   check_bounds(r, json{{"upscale", "int [1, 64]"}, {"checkpoint_seconds", "(0, inf)"}}, "");  // u: u^2 copies of the exemplar
   check_runtime(r["runtime"]);
   json resolved_method;
@@ -49,16 +52,39 @@ json resolve_run_config(json config, const std::vector<std::string>& overrides) 
   return r;
 }
 
+json read_resolved_run_config(const std::string& path) {
+  const json c = read_run_config(path);
+  json r;
+  try {
+    r = resolve_run_config(c, {});
+  } catch (const InputError& e) {
+    throw file_error(path, 0, e.what());
+  }
+  if (r != c) {
+    const json a = c.flatten(), b = r.flatten();
+    std::string key;
+    for (auto it = b.begin(); it != b.end() && key.empty(); ++it)
+      if (!a.contains(it.key()) || a[it.key()] != it.value()) key = it.key();
+    for (auto it = a.begin(); it != a.end() && key.empty(); ++it)
+      if (!b.contains(it.key())) key = it.key();
+    std::replace(key.begin(), key.end(), '/', '.');
+    throw file_error(path, 0, "key '" + key.substr(key.empty() ? 0 : 1) +
+                                  "' is not as the run resolved it (the file was edited since the run began)");
+  }
+  return r;
+}
+
 PointSet load_exemplar(const json& r) {
-  if (r["exemplar"].get<std::string>().empty()) throw config_error("exemplar", "no exemplar file given");
+  const std::string file = get_string(r, "exemplar", "");
+  if (file.empty()) throw config_error("exemplar", "no exemplar file given");
   ReadOptions o;
-  o.format = parse_format(r["format"].get<std::string>());
-  const std::string sc = r["scaling"];
+  o.format = parse_format(get_string(r, "format", ""));
+  const std::string sc = get_string(r, "scaling", "");
   if (sc == "per-axis") o.scaling = AxisScaling::PerAxisMinMax;
   else if (sc == "uniform") o.scaling = AxisScaling::Uniform;
   else throw config_error("scaling", "expected \"per-axis\" or \"uniform\"");
-  PointSet ps = read_points(r["exemplar"].get<std::string>(), o);
-  if (r["merge_classes"].get<bool>()) {
+  PointSet ps = read_points(file, o);
+  if (get_bool(r, "merge_classes", "")) {
     for (size_t i = 0; i < ps.size(); ++i) ps.set_cls(i, 0);
     ps.set_class_labels({});
   }

@@ -21,6 +21,12 @@ json run_defaults();
 // the method's parameters merged with its registered defaults.
 json resolve_run_config(json config, const std::vector<std::string>& overrides);
 
+// A run directory's config.json as a resume takes it: a resolved config, which resolving again
+// leaves as it is (core/run_json.hpp's checks, then every key's as resolve_run_config has it).
+// A hand edit that resolve_run_config refuses, or one it would change, is an InputError naming
+// the file and the key.
+json read_resolved_run_config(const std::string& path);
+
 // Loads the exemplar a resolved config names ("shared:" paths allowed); a config used only
 // in memory (synthesize() with an exemplar at hand) needs none.
 PointSet load_exemplar(const json& resolved);

@@ -95,16 +95,6 @@ nlohmann::json synthesis_key(nlohmann::json c) {
   return c;
 }
 
-nlohmann::json read_run_json(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw file_error(path, 0, "missing (not a finished run directory?)");
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw file_error(path, 0, std::string("not valid JSON: ") + e.what());
-  }
-}
-
 std::string run_name(const nlohmann::json& r) {
   const std::string name = r["name"];
   return name.empty() ? fs::path(resolve_data_path(r["exemplar"])).stem().string() : name;
@@ -161,10 +151,10 @@ PointSet run_exemplar(const std::string& dir, const nlohmann::json& config) {
 RunOutcome load_run(const std::string& dir) {
   RunOutcome o;
   o.dir = dir;
-  o.config = read_run_json(dir + "/config.json");
-  const nlohmann::json run = read_run_json(dir + "/run.json");
-  o.stats = run.value("method_stats", nlohmann::json::object());
-  o.seconds = run.value("total_seconds", 0.0);
+  o.config = read_run_config(dir + "/config.json");
+  const RunRecord run = read_run_record(dir + "/run.json");
+  o.stats = run.method_stats;
+  o.seconds = run.total_seconds;
   o.exemplar = run_exemplar(dir, o.config);
   o.output = read_points(dir + "/output.txt");
   if (fs::exists(dir + "/init.txt")) o.initialization = read_points(dir + "/init.txt");
@@ -179,9 +169,8 @@ std::string find_matching_run(const nlohmann::json& resolved, bool quick, const 
   auto matches = [&](const fs::path& d) {
     if (run_dir_state(d.string()) != RunDirState::Complete) return false;  // only finished runs of ppsynth
     try {
-      const nlohmann::json config = read_run_json((d / "config.json").string());
-      return same_synthesis(config, resolved) &&
-             read_run_json((d / "run.json").string()).value("quick", !quick) == quick &&
+      const nlohmann::json config = read_run_config((d / "config.json").string());
+      return same_synthesis(config, resolved) && read_run_record((d / "run.json").string()).quick == quick &&
              same_points(run_exemplar(d.string(), config), wanted);
     } catch (const InputError&) {
       return false;  // a damaged directory is simply not a match

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/point_set.hpp"
+#include "core/run_json.hpp"
 #include "optim/run/run_observers.hpp"
 
 namespace ppsynth {
@@ -32,7 +33,8 @@ void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const
 
 // Reads a finished run directory back (config.json, run.json, output.txt, init.txt; the
 // exemplar from its exemplar.txt copy, or the config's file for runs made before the copy).
-// Throws InputError naming the file when something is missing.
+// Throws InputError naming the file (and key) when something is missing or malformed
+// (core/run_json.hpp).
 RunOutcome load_run(const std::string& dir);
 
 // The exemplar a run synthesised from: its exemplar.txt copy (written when it finishes), else
@@ -68,8 +70,5 @@ std::string run_name(const nlohmann::json& resolved);
 // marker) that differs from this process, as a phrase ("4 threads (this process 1)"); "" when
 // nothing differs. Either difference changes the trajectory from its last bits on.
 std::string made_differently(const nlohmann::json& recorded);
-
-// A JSON file of a run directory; InputError naming it when missing or malformed.
-nlohmann::json read_run_json(const std::string& path);
 
 }  // namespace ppsynth

@@ -8,12 +8,15 @@
 #include <filesystem>
 
 #include "core/atomic_file.hpp"
+#include "core/checkpoint_file.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/formats/text_table.hpp"
 #include "core/output_shape.hpp"
 #include "core/processor.hpp"
 #include "core/run_directory.hpp"
+#include "core/run_json.hpp"
+#include "core/shell_quote.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/run/run_observers.hpp"
 #include "optim/run/synthesize.hpp"
@@ -67,6 +70,7 @@ RunOutcome execute(RunOutcome o, RunDirectory& dir, const std::string& name, con
     dir.mark_progress({{"checkpointed", unix_now()}});
   };
   options.resume_state = resume_state;
+  options.resume_source = o.dir + "/" + kCheckpoint;
   options.stop = req.stop;
   const OutputShape shape = resolve_output_shape(r, o.exemplar);
   spdlog::info("[{}] {} points, {} classes -> {:.0f} points, {} ({}), seed {}", name, o.exemplar.size(), o.exemplar.num_classes(),
@@ -81,7 +85,9 @@ RunOutcome execute(RunOutcome o, RunDirectory& dir, const std::string& name, con
     write_run_outputs(o, name, req.quick, losses, res.seconds, t0);
     dir.mark_complete({{"seed", r["seed"]}});
   } catch (const SynthesisInterrupted&) {
-    throw RunInterrupted(o.dir);  // the checkpoint stays for --resume
+    if (checkpointed) throw RunInterrupted(o.dir);  // the checkpoint stays for --resume
+    dir.discard();  // stopped before its first checkpoint: nothing to resume, nothing kept
+    throw RunInterrupted("");
   } catch (...) {
     if (!checkpointed) dir.discard();  // nothing to resume from: leave nothing behind
     throw;
@@ -98,6 +104,7 @@ RunOutcome run_synthesis(const nlohmann::json& r, const RunRequest& req) {
   RunOutcome o;
   o.config = r;
   o.exemplar = load_exemplar(r);  // bad input fails here, before anything is created
+  check_synthesis_size(r, o.exemplar);
   const std::string name = run_name(r);
   if (req.dir.empty() && !is_safe_name(name))
     throw InputError("the run name '" + name + "' (the exemplar's file name) is not a plain name; give the run directory with -o");
@@ -116,49 +123,61 @@ RunOutcome run_synthesis(const nlohmann::json& r, const RunRequest& req) {
   return execute(std::move(o), dir, name, req, nullptr);
 }
 
-std::string run_progress_text(const nlohmann::json& marker, long long now) {
-  if (!marker.is_object() || !marker.contains("progress") || !marker["progress"].is_object()) return "";
-  const nlohmann::json& p = marker["progress"];
-  std::string text;
-  if (p.contains("index")) {
-    text = "stage " + std::to_string(p.value("index", 0)) + "/" + std::to_string(p.value("count", 0));
-    if (p.contains("window"))
-      text += ", window " + std::to_string(p.value("window", 0)) + "/" + std::to_string(p.value("windows", 0));
-    if (const std::string label = p.value("stage", ""); !label.empty()) text += " (" + label + ")";
-  }
-  if (const auto c = p.find("checkpointed"); c != p.end() && c->is_number_integer()) {
-    const long long ago = std::max(0LL, now - c->get<long long>());
-    const std::string when = ago < 120 ? std::to_string(ago) + " s ago"
-                             : ago < 7200 ? std::to_string(ago / 60) + " min ago"
-                                          : std::to_string(ago / 3600) + " h ago";
-    text += (text.empty() ? "" : ", ") + std::string("checkpoint ") + when;
-  }
-  return text;
+namespace {
+
+// What to do when a run cannot continue from its checkpoint.
+std::string afresh_hint(const std::string& dir) {
+  return "; `ppsynth synthesize --resume " + shell_quoted(dir) + " --force` starts the run afresh from its config.json";
 }
 
+// --resume DIR --force: the run in DIR again from the start, from its config.json (checked as
+// any config) and its quick setting; the directory's files are replaced.
+RunOutcome restart(const std::string& path, const RunRequest& req) {
+  const std::string dir = normalize_output_dir(path, "--resume");
+  const RunDirState state = run_dir_state(dir);
+  if ((state != RunDirState::Unfinished && state != RunDirState::Complete) || run_dir_marker(dir).value("kind", "") != "run")
+    throw InputError("--resume " + dir + " --force: not a run directory of ppsynth; nothing to start afresh");
+  RunRequest r = req;
+  r.dir = dir;
+  r.quick = run_dir_marker(dir).value("quick", false);
+  return run_synthesis(resolve_run_config(read_run_config(dir + "/config.json"), {}), r);
+}
+
+}  // namespace
+
 RunOutcome resume_synthesis(const std::string& path, const RunRequest& req) {
+  if (req.force) return restart(path, req);
   RunDirOptions dir_options;
   dir_options.resume = true;
   dir_options.option = "--resume";
   RunDirectory dir = RunDirectory::open(path, dir_options);
   const nlohmann::json marker = run_dir_marker(dir.path());
   RunOutcome o;
-  o.config = read_run_json(dir.path() + "/config.json");
-  o.exemplar = load_exemplar(o.config);
+  o.config = read_resolved_run_config(dir.path() + "/config.json");
   const std::string checkpoint = dir.path() + "/" + kCheckpoint;
   if (!fs::exists(checkpoint))
     throw InputError("--resume " + dir.path() + ": no checkpoint (the run stopped before its first one, or its method (" +
-                     o.config["method"].value("type", "?") + ") cannot resume); start it again with --force");
+                     o.config["method"]["type"].get<std::string>() + ") cannot resume)" + afresh_hint(dir.path()));
+  o.exemplar = load_exemplar(o.config);
   const std::string bytes = read_file_text(checkpoint);
+  RunRequest r = req;
+  r.quick = marker.value("quick", false);
+  try {  // refused before anything runs or prints
+    check_checkpoint(bytes, checkpoint, checkpoint_key(o.config, o.exemplar, r.quick));
+  } catch (const CheckpointError& e) {
+    throw CheckpointError(e.what() + afresh_hint(dir.path()));
+  }
   // A SLURM requeue may land on another node: the resumed run is then not the uninterrupted one.
   if (const std::string differences = made_differently(marker); !differences.empty())
     spdlog::warn("--resume {}: the run started with {}: the result may differ from an uninterrupted run's "
                  "(the same thread count is PPSYNTH_THREADS={})",
                  dir.path(), differences, marker.value("threads", nlohmann::json()).dump());
-  RunRequest r = req;
-  r.quick = marker.value("quick", false);
   const std::string name = run_name(o.config);
-  return execute(std::move(o), dir, name, r, &bytes);
+  try {
+    return execute(std::move(o), dir, name, r, &bytes);
+  } catch (const CheckpointError& e) {
+    throw CheckpointError(e.what() + afresh_hint(dir.path()));
+  }
 }
 
 }  // namespace ppsynth

@@ -31,11 +31,13 @@ struct RunRequest {
   std::vector<SynthesisObserver*> observers;
 };
 
-// Thrown when request.stop stopped a run: its checkpoint is in `dir`, for resume_synthesis.
+// Thrown when request.stop stopped a run: its checkpoint is in `dir`, for resume_synthesis;
+// `dir` is "" when it stopped before its first checkpoint (its directory is then removed).
 class RunInterrupted : public std::runtime_error {
  public:
   explicit RunInterrupted(std::string d)
-      : std::runtime_error("interrupted; the checkpoint is in " + d), dir(std::move(d)) {}
+      : std::runtime_error(d.empty() ? "interrupted before the first checkpoint" : "interrupted; the checkpoint is in " + d),
+        dir(std::move(d)) {}
   std::string dir;
 };
 
@@ -44,15 +46,12 @@ class RunInterrupted : public std::runtime_error {
 // `checkpoint_seconds`; it is removed when the run completes.
 RunOutcome run_synthesis(const nlohmann::json& resolved, const RunRequest& request);
 
-// How far an unfinished run got, from its directory's marker (run_dir_marker), which a run
-// keeps current: the stage it began last and when it last saved a checkpoint, e.g.
-// "stage 9/20 (class 3/4 (id 2), sigma 1/4), checkpoint 4 min ago". "" when the marker holds
-// neither (a run that has not begun its first stage). `now`: seconds since the epoch.
-std::string run_progress_text(const nlohmann::json& marker, long long now);
-
 // Continues the unfinished run in `dir` from its checkpoint (request.dir and quick are taken
 // from the directory). The outputs equal those of the run never interrupted (same thread
-// count; wall times aside).
+// count; wall times aside). A checkpoint that does not belong to the directory's config.json
+// (edited, copied from another run, damaged) is a CheckpointError saying what differs.
+// With request.force the run starts afresh from its config.json instead (the same checks as a
+// new run; the directory's files are replaced).
 RunOutcome resume_synthesis(const std::string& dir, const RunRequest& request);
 
 }  // namespace ppsynth

@@ -37,15 +37,19 @@ bool keep_freed_memory() {
 #endif
 }
 
-int thread_count() {
+}  // namespace
+
+int threads_from_environment() {
   const char* env = std::getenv("PPSYNTH_THREADS");
-  if (!env) return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  if (!env) return 0;
   char* end = nullptr;
   const long v = std::strtol(env, &end, 10);
   if (end == env || *end != '\0' || v < 1 || v > 1024)
     throw InputError(std::string("PPSYNTH_THREADS='") + env + "': expected a whole number from 1 to 1024");
   return static_cast<int>(v);
 }
+
+namespace {
 
 const char* kDeviceChoices = "expected \"cpu\", \"cuda\", \"cuda:N\" or \"auto\"";
 
@@ -107,7 +111,8 @@ DeviceSettings apply_device_settings(const nlohmann::json& runtime) {
 
 RuntimeSettings configure_runtime() {
   RuntimeSettings s;
-  s.threads = thread_count();
+  s.threads = threads_from_environment();
+  if (s.threads == 0) s.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   torch::set_num_threads(s.threads);
   s.keeps_freed_memory = keep_freed_memory();
   return s;

@@ -1,7 +1,12 @@
 #include "optim/run/synthesize.hpp"
 
 #include <chrono>
+#include <cstdio>
 
+#include "core/checkpoint_file.hpp"
+#include "core/content_hash.hpp"
+#include "core/formats/point_io.hpp"
+#include "core/memory_budget.hpp"
 #include "core/metrics/evaluation.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/run/runtime.hpp"
@@ -30,8 +35,62 @@ bool can_resume(const nlohmann::json& spec) {
   return MethodRegistry::instance().create(spec["method"], "method")->can_resume();
 }
 
+void check_synthesis_size(const nlohmann::json& spec, const PointSet& exemplar) {
+  const OutputShape shape = resolve_output_shape(spec, exemplar);
+  const std::string key = spec["output"]["size"].is_null() ? "output.points" : "output.size";
+  const Domain E = exemplar.domain(), out = shape.domain();
+  char size[96];
+  std::snprintf(size, sizeof size, "%g x %g exemplar units", shape.width, shape.height);
+  if (shape.rectangle) {
+    const double expected = static_cast<double>(exemplar.size()) * out.area() / E.area();
+    if (expected < 1) {
+      char what[160];
+      std::snprintf(what, sizeof what, "%s hold about %.2g points at the exemplar's density; an output needs at least one",
+                    size, expected);
+      throw config_error(key, what);
+    }
+    constexpr double kFit = 1 - 1e-9;  // crops as large as the output up to rounding fit (core/metrics/crops.cpp)
+    if (spec["evaluate"].get<bool>() && (shape.width < E.width() * kFit || shape.height < E.height() * kFit)) {
+      char what[320];
+      std::snprintf(what, sizeof what,
+                    "%s is smaller than the exemplar (%g x %g) on a side, and the run's evaluation measures "
+                    "exemplar-sized crops of the output: give at least %g x %g, or --set evaluate=false",
+                    size, E.width(), E.height(), E.width(), E.height());
+      throw config_error(key, what);
+    }
+  }
+  // What every point costs while the synthesis holds it: its position, class and attributes in
+  // the output and the canvas, the tensors of the positions, the copies a checkpoint
+  // serialises, and the initialisation's search grid.
+  constexpr double kBytesPerPoint = 256;
+  double points = 0;
+  for (size_t n : shape.class_counts(exemplar, shape.canvas())) points += static_cast<double>(n);
+  const double per_point = kBytesPerPoint + 16.0 * exemplar.num_attributes();
+  char what[160];
+  std::snprintf(what, sizeof what, "an output of %.3g points (%s)", points,
+                shape.rectangle ? (key + " " + size).c_str() : ("upscale " + std::to_string(shape.upscale)).c_str());
+  check_memory(points * per_point, what);
+}
+
+nlohmann::json checkpoint_key(const nlohmann::json& spec, const PointSet& exemplar, bool quick) {
+  return {{"method", spec["method"]["type"]},
+          {"method_version", MethodRegistry::instance().create(spec["method"], "method")->version()},
+          {"seed", spec["seed"]},
+          {"quick", quick},
+          {"exemplar", content_hash(format_points(exemplar, Format::Plain))},
+          {"config_hash", content_hash(spec.dump())},
+          {"config", spec}};
+}
+
+void check_checkpoint(const std::string& bytes, const std::string& source, const nlohmann::json& key) {
+  const CheckpointFile f = decode_checkpoint(bytes, source);
+  if (const std::string differs = checkpoint_key_difference(key, f.key); !differs.empty())
+    throw checkpoint_error(source, "made for another synthesis: " + differs);
+}
+
 SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec, const SynthesisOptions& options) {
   using Clock = std::chrono::steady_clock;
+  check_synthesis_size(spec, exemplar);
   auto method = MethodRegistry::instance().create(spec["method"], "method");
   SynthesisContext ctx;
   ctx.seed = spec["seed"].get<uint64_t>();
@@ -53,7 +112,10 @@ SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec,
     ctx.save_checkpoint = options.save_checkpoint;
     ctx.checkpoint_seconds = spec["checkpoint_seconds"].get<double>();
     ctx.resume_state = options.resume_state;
+    ctx.resume_source = options.resume_source;
+    ctx.checkpoint_key = checkpoint_key(spec, exemplar, options.quick);
     ctx.stop = options.stop;
+    if (options.resume_state) check_checkpoint(*options.resume_state, options.resume_source, ctx.checkpoint_key);
   } else if (options.resume_state) {
     throw InputError("the method " + spec["method"].value("type", std::string("?")) + " cannot resume a checkpoint");
   }
@@ -64,6 +126,9 @@ SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec,
               (r.stats.is_object() ? r.stats.value("seconds_before_resume", 0.0) : 0.0);
   r.initialization = std::move(initial.initial);
   r.stages = stage_results(r.stats);
+  if (r.output.empty())  // a rectangle of a point or two whose points all parked outside it
+    throw config_error(spec["output"]["size"].is_null() ? "output.points" : "output.size",
+                       "the synthesis left no point inside the output (" + ctx.output.describe() + "); give a larger output");
   if (spec["evaluate"].get<bool>()) {
     EvalOptions eo;
     eo.zoom = ctx.output.zoom();  // crops at the scale the output was made at, whatever its density

@@ -45,8 +45,12 @@ struct SynthesisOptions {
   // save_checkpoint at every stage boundary and every spec "checkpoint_seconds"; with
   // resume_state (bytes of an earlier save of the same spec, seed and exemplar) it continues
   // from there; when *stop turns true it saves and throws SynthesisInterrupted.
+  // Checkpoints carry the key of their synthesis (checkpoint_key); a resume_state of another
+  // synthesis, or a damaged one, is a CheckpointError (core/checkpoint_file.hpp) naming
+  // `resume_source`, before any work.
   std::function<void(const std::string& state)> save_checkpoint;
   const std::string* resume_state = nullptr;
+  std::string resume_source = "checkpoint";
   const std::atomic<bool>* stop = nullptr;
 };
 
@@ -56,5 +60,21 @@ SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec,
 
 // True when the spec's method checkpoints (and so honours SynthesisOptions::stop).
 bool can_resume(const nlohmann::json& spec);
+
+// Refuses, before any work, an output that cannot be made: one that would hold no point (a
+// rectangle smaller than one point's share at the exemplar's density), one whose evaluation
+// cannot run (spec "evaluate" on a rectangle narrower or lower than the exemplar: the
+// evaluation measures exemplar-sized crops), one whose points would not fit in memory
+// (core/memory_budget.hpp). Errors name the key (output.size, output.points, evaluate).
+void check_synthesis_size(const nlohmann::json& spec, const PointSet& exemplar);
+
+// What a checkpoint of `spec` run on `exemplar` carries to prove where it belongs
+// (core/checkpoint_file.hpp): the method and its version, the seed, the quick setting, a
+// content hash of the exemplar's points, and the resolved config with its hash.
+nlohmann::json checkpoint_key(const nlohmann::json& spec, const PointSet& exemplar, bool quick);
+
+// Refuses (CheckpointError naming `source`) a checkpoint that is damaged or of another
+// synthesis than `key`'s, saying what differs. Cheap: the arrays are checked, not restored.
+void check_checkpoint(const std::string& bytes, const std::string& source, const nlohmann::json& key);
 
 }  // namespace ppsynth

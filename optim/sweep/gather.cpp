@@ -13,11 +13,14 @@
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/metrics/evaluation.hpp"
+#include "core/metrics/metric_values.hpp"
 #include "core/metrics/summary_stats.hpp"
 #include "core/output_shape.hpp"
 #include "core/render/plot_strips.hpp"
 #include "core/report/html_report.hpp"
+#include "core/content_hash.hpp"
 #include "core/run_directory.hpp"
+#include "core/run_json.hpp"
 #include "optim/run/run_store.hpp"
 #include "optim/sweep/sweep_plan.hpp"
 
@@ -62,67 +65,30 @@ std::string evaluation_text(const GatherOptions& g) {
                     : std::string("each run's metrics.json");
 }
 
-// The numbers of one evaluation (metrics.json), as "<scope>/<metric>".
-std::vector<std::pair<std::string, double>> metric_values(const nlohmann::json& m) {
-  std::vector<std::pair<std::string, double>> v;
-  auto add = [&](const std::string& key, const nlohmann::json& x) {
-    if (x.is_number()) v.push_back({key, x.get<double>()});
-  };
-  auto patch = [&](const std::string& scope, const nlohmann::json& p) {
-    add(scope + "/pcf_mse", p.value("pcf_mse", nlohmann::json()));
-    add(scope + "/wasserstein", p.value("wasserstein", nlohmann::json()));
-    add(scope + "/wasserstein_estimate", p.value("wasserstein_estimate", nlohmann::json()));
-    add(scope + "/chamfer", p.value("chamfer", nlohmann::json()));
-  };
-  if (m.contains("all")) patch("all", m["all"]);
-  if (m.contains("output")) {
-    add("all/relative_radius", m["output"].value("relative_radius", nlohmann::json()));
-    add("all/border_fraction", m["output"].value("border_fraction", nlohmann::json()));
-    // The border's density over uniform's, band by band ("border_density_0.5%"; border.hpp).
-    if (const auto p = m["output"].find("border_profile"); p != m["output"].end())
-      for (size_t i = 0; i < (*p)["band"].size(); ++i) {
-        char name[48];
-        std::snprintf(name, sizeof name, "all/border_density_%g%%", 100 * (*p)["band"][i].get<double>());
-        add(name, (*p)["over_uniform"][i]);
-      }
-  }
-  for (const auto& c : m.value("classes", nlohmann::json::array())) patch("class " + c["class"].dump(), c);
-  for (const auto& c : m.value("cross", nlohmann::json::array()))
-    add("classes " + c["ci"].dump() + "-" + c["cj"].dump() + "/pcf_mse", c.value("pcf_mse", nlohmann::json()));
-  // spatstat's L (sup distance) and the verdict's p-value and pass (1/0: the mean over seeds
-  // is the pass rate), in the scopes above.
-  auto scope_of = [](const nlohmann::json& row) {
-    const std::string kind = row.value("row", std::string());
-    return kind == "class" ? "class " + row["class"].dump()
-           : kind == "pair" ? "classes " + row["ci"].dump() + "-" + row["cj"].dump()
-                            : std::string("all");
-  };
-  if (const auto so = m.find("second_order"); so != m.end())
-    for (const auto& row : so->value("rows", nlohmann::json::array())) add(scope_of(row) + "/l_sup", row.value("l_sup", nlohmann::json()));
-  if (const auto vd = m.find("verdict"); vd != m.end())
-    for (const auto& row : vd->value("rows", nlohmann::json::array())) {
-      add(scope_of(row) + "/verdict_p", row.value("p", nlohmann::json()));
-      if (row.value("pass", nlohmann::json()).is_boolean()) add(scope_of(row) + "/verdict_pass", row["pass"].get<bool>() ? 1.0 : 0.0);
-    }
-  return v;
-}
-
 // What a run recorded of itself (seed, quick, processor): its run.json once it has finished,
-// else its directory's marker (written when it started).
-nlohmann::json recorded(const std::string& dir) {
-  return fs::exists(dir + "/run.json") ? read_run_json(dir + "/run.json") : run_dir_marker(dir);
+// else its directory's marker (written when it started; run_dir_marker checks its types).
+RunRecord recorded(const std::string& dir, const nlohmann::json& config) {
+  if (fs::exists(dir + "/run.json")) return read_run_record(dir + "/run.json");
+  const nlohmann::json m = run_dir_marker(dir);
+  RunRecord r;
+  r.seed = config["seed"].get<uint64_t>();
+  if (m.is_object()) {
+    r.quick = m.value("quick", false);
+    r.processor = m.value("processor", std::string());
+  }
+  return r;
 }
 
 // What decides a run's group (run_store's group_key, as a sweep's plan computes it).
 nlohmann::json run_group_key(const std::string& dir, const nlohmann::json& config) {
-  return group_key(config, recorded(dir).value("quick", false));
+  return group_key(config, recorded(dir, config).quick);
 }
 
 // The group of a run directory made outside a sweep.
 Found loose_run(const std::string& dir, bool finished) {
-  const nlohmann::json config = read_run_json(dir + "/config.json");
+  const nlohmann::json config = read_run_config(dir + "/config.json");
   const nlohmann::json key = run_group_key(dir, config);
-  return {dir, json_id(key), run_name(config) + " (" + config["method"].value("type", std::string("?")) + ")", key, finished};
+  return {dir, json_id(key), run_name(config) + " (" + config["method"]["type"].get<std::string>() + ")", key, finished};
 }
 
 // Groups of one label but other settings (runs made outside a sweep with `--set upscale=3`;
@@ -173,7 +139,7 @@ void discover(const std::string& dir, std::vector<Found>& found, std::vector<std
       const RunDirState state = run_dir_state(d);
       if (state != RunDirState::Complete) unfinished.push_back(d);
       if (state == RunDirState::Complete || (state == RunDirState::Unfinished && fs::exists(d + "/config.json")))
-        found.push_back({d, row.group, row.group_label, run_group_key(d, read_run_json(d + "/config.json")),
+        found.push_back({d, row.group, row.group_label, run_group_key(d, read_run_config(d + "/config.json")),
                          state == RunDirState::Complete});
     }
     return;
@@ -289,7 +255,7 @@ void gather_stage(const std::vector<Found>& found, int stage, const GatherOption
       if (f.finished) r.unfinished.push_back(f.dir + " (" + what + ": no snapshots/" + name + ")");
       continue;  // an unfinished run is listed as such already
     }
-    const json config = read_run_json(f.dir + "/config.json");
+    const json config = read_run_config(f.dir + "/config.json");
     const PointSet exemplar = run_exemplar(f.dir, config);
     const PointSet points = read_points(file);
     const Domain want = run_output_shape(config, exemplar).domain(), got = points.domain();
@@ -301,10 +267,10 @@ void gather_stage(const std::vector<Found>& found, int stage, const GatherOption
     }
     const std::string n = std::to_string(stage);
     GatheredRun run{f.dir, f.group + "@stage" + n, f.group_label + " @ stage " + n, 0, {}, {}, stage};
-    run.values = metric_values(evaluate(exemplar, points, eval_options(options, config, exemplar)));
-    const json info = recorded(f.dir);
-    run.seed = info.value("seed", config.value("seed", uint64_t{0}));
-    run.processor = info.value("processor", std::string());
+    run.values = metric_values(evaluate(exemplar, points, eval_options(options, config, exemplar)), file);
+    const RunRecord info = recorded(f.dir, config);
+    run.seed = info.seed;
+    run.processor = info.processor;
     r.runs.push_back(std::move(run));
     ++gathered;
   }
@@ -326,6 +292,7 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
   if (!(options.bound > 0)) throw InputError("--bound: expected a number > 0");
   GatherResult r;
   r.options = options;
+  r.inputs = dirs;
   std::vector<Found> found;
   for (const auto& d : dirs) {
     if (!fs::is_directory(d)) throw InputError(d + ": not a directory");
@@ -340,17 +307,17 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
     GatheredRun run{f.dir, f.group, f.group_label, 0, {}, {}};
     if (options.protocol) {  // measured again, the same way for every run
       const RunOutcome o = load_run(f.dir);
-      run.values = metric_values(evaluate(o.exemplar, o.output, eval_options(options, o.config, o.exemplar)));
-    } else if (fs::exists(f.dir + "/metrics.json")) {
-      run.values = metric_values(read_run_json(f.dir + "/metrics.json"));
+      run.values = metric_values(evaluate(o.exemplar, o.output, eval_options(options, o.config, o.exemplar)), f.dir);
+    } else if (const std::string metrics = f.dir + "/metrics.json"; fs::exists(metrics)) {
+      run.values = metric_values(read_run_json(metrics), metrics);
     } else {
       r.unfinished.push_back(f.dir + " (no metrics.json: evaluate was off; --protocol measures it)");
       continue;
     }
-    const nlohmann::json info = read_run_json(f.dir + "/run.json");
-    run.seed = info.value("seed", uint64_t{0});
-    run.processor = info.value("processor", std::string());
-    run.values.push_back({"run/seconds", info.value("total_seconds", 0.0)});
+    const RunRecord info = read_run_record(f.dir + "/run.json");
+    run.seed = info.seed;
+    run.processor = info.processor;
+    run.values.push_back({"run/seconds", info.total_seconds});
     r.runs.push_back(std::move(run));
   }
   for (const int stage : options.stages) gather_stage(found, stage, options, r);
@@ -385,7 +352,7 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
   std::set<std::string> exemplars;
   for (const auto& g : group_order) {
     const auto first = std::find_if(r.runs.begin(), r.runs.end(), [&](const GatheredRun& x) { return x.group == g; });
-    exemplar_of[g] = fs::path(read_run_json(first->dir + "/config.json").value("exemplar", std::string())).stem().string();
+    exemplar_of[g] = fs::path(read_run_config(first->dir + "/config.json")["exemplar"].get<std::string>()).stem().string();
     exemplars.insert(exemplar_of[g]);
   }
   std::map<std::string, std::string> reference_file;  // exemplar stem -> file
@@ -413,7 +380,8 @@ GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptio
     if (const auto file = reference_file.find(exemplar_of[g]); file != reference_file.end()) {
       const auto first = std::find_if(r.runs.begin(), r.runs.end(), [&](const GatheredRun& x) { return x.group == g; });
       const PointSet exemplar = load_run(first->dir).exemplar;
-      for (const auto& [k, v] : metric_values(evaluate(exemplar, read_points(file->second), eval_options(options)))) ref[k] = v;
+      for (const auto& [k, v] : metric_values(evaluate(exemplar, read_points(file->second), eval_options(options)), file->second))
+        ref[k] = v;
     }
     for (auto& s : by_group[g]) {
       const Summary sum = summarize(s.values);
@@ -673,6 +641,21 @@ std::string format_gather(const GatherResult& r) {
 }
 
 void write_gather(const GatherResult& r, const std::string& out, bool force) {
+  // Never into what it read: a gather's directory that holds, or lies inside, one of its inputs
+  // would delete runs when replaced (--force) or be gathered by the next gather.
+  const fs::path target = fs::weakly_canonical(fs::absolute(out));
+  for (const auto& in : r.inputs) {
+    const fs::path input = fs::weakly_canonical(fs::absolute(in));
+    auto inside = [](const fs::path& a, const fs::path& b) {  // a is b or lies inside it
+      auto ai = a.begin(), bi = b.begin();
+      for (; bi != b.end(); ++ai, ++bi)
+        if (ai == a.end() || *ai != *bi) return false;
+      return true;
+    };
+    if (inside(target, input) || inside(input, target))
+      throw InputError("-o " + out + ": " + (inside(target, input) ? "is, or lies inside, the input " : "holds the input ") + in +
+                       "; a gather's tables go to a directory of their own. Nothing was changed.");
+  }
   RunDirOptions o;
   o.kind = "gather";
   o.force = force;

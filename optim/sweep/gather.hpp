@@ -94,12 +94,15 @@ struct GatherResult {
   // processor (their seconds do not compare, and a seed rerun elsewhere is another sample).
   std::vector<std::string> notes;
   GatherOptions options;
+  std::vector<std::string> inputs;  // the directories gathered (write_gather never writes into one)
 };
 
 GatherResult gather_runs(const std::vector<std::string>& dirs, const GatherOptions& options);
 
 // gather.csv, gather.md, gather.json, per_seed.csv, index.html (+ plots/) into `out`, opened
-// as a ppsynth directory (new or empty, or an earlier gather's with force).
+// as a ppsynth directory (new or empty, or an earlier gather's with force: never a run or a
+// report, core/run_directory.hpp). `out` is never one of result.inputs, inside one, or a
+// directory holding one.
 void write_gather(const GatherResult& result, const std::string& out, bool force);
 
 // The table printed by the command: each group's whole label, then a line per scope and metric;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
@@ -19,7 +20,9 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "core/run_directory.hpp"
 #include "core/shell_quote.hpp"
+#include "optim/run/runtime.hpp"
 #include "optim/sweep/sweep_runs.hpp"
 
 extern char** environ;
@@ -39,8 +42,36 @@ std::vector<std::string> task_environment(int threads) {
   return env;
 }
 
-pid_t spawn_task(const LocalExecution& how, const std::string& sweep_dir, size_t index, const std::string& log,
-                 const std::vector<std::string>& env) {
+// Threads per task: --threads, else the user's PPSYNTH_THREADS, else the cores split between
+// the tasks.
+int task_threads(const LocalExecution& how) {
+  if (how.threads > 0) return how.threads;
+  if (const int user = threads_from_environment(); user > 0) return user;
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return std::max(1, cores / how.jobs);
+}
+
+// A value as an error message shows it: on one line, control characters escaped.
+std::string shown(const std::string& value) {
+  std::string s;
+  for (char c : value.substr(0, 128)) {
+    if (c == '\n') s += "\\n";
+    else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) s += "\\x" + std::to_string(static_cast<unsigned char>(c));
+    else s += c;
+  }
+  return "'" + s + "'";
+}
+
+// Names SLURM takes in #SBATCH lines that no shell or sbatch reads as anything else.
+void check_slurm_name(const std::string& option, const std::string& value) {
+  if (value.size() > 128 || !std::all_of(value.begin(), value.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+      }))
+    throw InputError(option + " " + shown(value) + ": expected a name of letters, digits, '_', '-' and '.'");
+}
+
+pid_t spawn_task(const LocalExecution& how, const std::string& sweep_dir, const std::string& row_id, const std::string& manifest,
+                 const std::string& log, const std::vector<std::string>& env) {
   posix_spawn_file_actions_t files;
   posix_spawn_file_actions_init(&files);
   posix_spawn_file_actions_addopen(&files, 1, log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
@@ -49,8 +80,7 @@ pid_t spawn_task(const LocalExecution& how, const std::string& sweep_dir, size_t
   posix_spawnattr_init(&attr);
   posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);  // its own group: Ctrl-C reaches only us
   posix_spawnattr_setpgroup(&attr, 0);
-  const std::string idx = std::to_string(index);
-  std::vector<std::string> args = {how.binary, "sweep", "task", sweep_dir, "--index", idx};
+  std::vector<std::string> args = {how.binary, "sweep", "task", sweep_dir, "--row", row_id, "--manifest", manifest};
   std::vector<char*> argv, envp;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -68,10 +98,11 @@ pid_t spawn_task(const LocalExecution& how, const std::string& sweep_dir, size_t
 }  // namespace
 
 ExecutionSummary execute_local(const std::string& sweep_dir, const LocalExecution& how, const std::atomic<bool>* stop) {
+  if (how.jobs < 1 || how.jobs > 1024) throw InputError("-j " + std::to_string(how.jobs) + ": expected 1 to 1024 tasks at once");
   const SweepManifest m = load_sweep(sweep_dir);
-  if (how.jobs < 1) throw InputError("-j: expected at least 1 task at once");
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const int threads = how.threads > 0 ? how.threads : std::max(1, cores / how.jobs);
+  const SweepLock lock(sweep_dir, "run it");
+  const std::string manifest = sweep_manifest_hash(m);
+  const int threads = task_threads(how);
   const auto env = task_environment(threads);
   ExecutionSummary sum;
   std::deque<size_t> queue;
@@ -96,7 +127,7 @@ ExecutionSummary execute_local(const std::string& sweep_dir, const LocalExecutio
       const size_t i = queue.front();
       queue.pop_front();
       const std::string log = (fs::path(sweep_dir) / "logs" / (m.rows[i].id + ".log")).string();
-      running[spawn_task(how, sweep_dir, i, log, env)] = {i, std::chrono::steady_clock::now()};
+      running[spawn_task(how, sweep_dir, m.rows[i].id, manifest, log, env)] = {i, std::chrono::steady_clock::now()};
     }
     if (running.empty()) break;
     int status = 0;
@@ -138,6 +169,17 @@ std::string compress_indices(const std::vector<size_t>& v) {
 }
 
 std::string slurm_script(const std::string& sweep_dir, const SweepManifest& m, const SlurmExecution& how) {
+  if (!how.partition.empty()) check_slurm_name("--partition", how.partition);
+  if (!how.account.empty()) check_slurm_name("--account", how.account);
+  for (const auto& o : how.sbatch_options)
+    if (o.empty() || !std::all_of(o.begin(), o.end(), [](char c) { return c >= 0x20 && c != 0x7f; }))
+      throw InputError("--sbatch-option " + shown(o) + ": one printable option per line (no newline or control character)");
+  if (how.cpus) check_sweep_resource("--cpus", how.cpus);
+  if (how.memory_mb) check_sweep_resource("--mem-mb (memory)", how.memory_mb);
+  if (how.time_minutes) check_sweep_resource("--time-minutes", how.time_minutes);
+  if (how.max_parallel < 0 || how.max_parallel > 100000)
+    throw InputError("--max-parallel " + std::to_string(how.max_parallel) + ": expected 1 to 100000");
+  if (!is_safe_name(m.name)) throw InputError("sweep name '" + m.name + "': not a plain name");  // load_sweep checked it
   std::vector<size_t> todo;
   for (const auto& s : sweep_status(sweep_dir, m))
     if (s.state != RowState::Done) todo.push_back(static_cast<size_t>(s.row - m.rows.data()));
@@ -149,7 +191,7 @@ std::string slurm_script(const std::string& sweep_dir, const SweepManifest& m, c
   const int mem = how.memory_mb > 0 ? how.memory_mb : m.resources.memory_mb;
   const int minutes = how.time_minutes > 0 ? how.time_minutes : m.resources.time_minutes;
   std::string s = "#!/bin/bash\n";
-  s += "# ppsynth sweep " + m.name + ": one run of " + dir + "/manifest.json per array task (array index = row).\n";
+  s += "# ppsynth sweep " + m.name + ": one run of " + dir + "/manifest.json per array task (the index picks its id below).\n";
   s += "# Written by `ppsynth sweep run --slurm`. A task that runs again (requeue, resubmission) resumes its\n";
   s += "# checkpoint; a finished run is skipped. `ppsynth sweep status " + dir + "` lists the runs.\n";
   s += "#SBATCH --job-name=ppsynth-" + m.name + "\n";
@@ -165,12 +207,15 @@ std::string slurm_script(const std::string& sweep_dir, const SweepManifest& m, c
   s += "#SBATCH --signal=B:TERM@120\n";
   if (!how.partition.empty()) s += "#SBATCH --partition=" + how.partition + "\n";
   if (!how.account.empty()) s += "#SBATCH --account=" + how.account + "\n";
-  for (const auto& o : how.sbatch_options) {
-    if (o.find('\n') != std::string::npos) throw InputError("--sbatch-option: one option per line, no newlines");
-    s += "#SBATCH " + o + "\n";
-  }
-  s += "export PPSYNTH_THREADS=\"${SLURM_CPUS_PER_TASK:-" + std::to_string(cpus) + "}\"\n";
-  s += "exec " + shell_quoted(how.binary) + " sweep task " + shell_quoted(dir) + " --index \"$SLURM_ARRAY_TASK_ID\"\n";
+  for (const auto& o : how.sbatch_options) s += "#SBATCH " + o + "\n";
+  s += "export PPSYNTH_THREADS=\"${PPSYNTH_THREADS:-${SLURM_CPUS_PER_TASK:-" + std::to_string(cpus) + "}}\"\n";
+  // The array index picks a row's id (12 hex digits, checked): a plan changed after the
+  // submission never makes a task run another row (sweep_runs.hpp).
+  s += "rows=(";
+  for (size_t i = 0; i < m.rows.size(); ++i) s += (i ? " " : "") + m.rows[i].id;
+  s += ")\n";
+  s += "exec " + shell_quoted(how.binary) + " sweep task " + shell_quoted(dir) + " --row \"${rows[$SLURM_ARRAY_TASK_ID]}\" --manifest " +
+       sweep_manifest_hash(m) + "\n";
   return s;
 }
 

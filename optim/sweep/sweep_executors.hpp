@@ -1,13 +1,18 @@
 #pragma once
-// Where the runs of a sweep execute. Both executors run `ppsynth sweep task DIR --index I` for
-// each row that is not done (optim/sweep/sweep_runs.hpp), so a task that runs again resumes
-// its checkpoint and a finished run is never repeated:
-//   local  N task processes at once on this machine, the cores split between them
-//          (PPSYNTH_THREADS per task), each in its own process group so that Ctrl-C reaches
-//          only the executor, which stops every task with SIGTERM (each checkpoints).
-//   slurm  an sbatch job-array script (array index = manifest row) written into the sweep
-//          directory and submitted; --requeue and a SIGTERM ahead of the time limit let a
-//          preempted or timed-out task checkpoint and resume when it runs again.
+// Where the runs of a sweep execute. Both executors run `ppsynth sweep task DIR --row ID
+// --manifest HASH` for each row that is not done (optim/sweep/sweep_runs.hpp), so a task that
+// runs again resumes its checkpoint, a finished run is never repeated, and a plan changed
+// since never makes a task run another row:
+//   local  N task processes at once on this machine, holding the sweep's lock (SweepLock: a
+//          second executor or a re-plan is refused meanwhile), the cores split between them
+//          (PPSYNTH_THREADS per task, unless the user set it), each in its own process group
+//          so that Ctrl-C reaches only the executor, which stops every task with SIGTERM (each
+//          checkpoints).
+//   slurm  an sbatch job-array script written into the sweep directory and submitted: the
+//          array index picks the row's id from a list in the script; --requeue and a SIGTERM
+//          ahead of the time limit let a preempted or timed-out task checkpoint and resume
+//          when it runs again. Built only from checked values (the manifest, as
+//          core/sweep_manifest.hpp reads it; partition and account names; resources in range).
 #include <atomic>
 #include <string>
 #include <vector>
@@ -19,7 +24,7 @@ namespace ppsynth {
 struct LocalExecution {
   std::string binary;   // the ppsynth executable that runs `sweep task`
   int jobs = 1;         // tasks at once
-  int threads = 0;      // per task; 0 = the machine's cores / jobs (at least 1)
+  int threads = 0;      // per task; 0 = PPSYNTH_THREADS when set, else the machine's cores / jobs (at least 1)
 };
 
 struct ExecutionSummary {
@@ -32,9 +37,9 @@ ExecutionSummary execute_local(const std::string& sweep_dir, const LocalExecutio
 
 struct SlurmExecution {
   std::string binary;                    // absolute path of ppsynth on the cluster's nodes
-  std::string partition, account;        // passed through when not empty
-  std::vector<std::string> sbatch_options;  // extra "#SBATCH" options, e.g. "--qos=long"
-  int cpus = 0, memory_mb = 0, time_minutes = 0;  // 0 = the spec's resources
+  std::string partition, account;        // when not empty: letters, digits, '_', '-' and '.'
+  std::vector<std::string> sbatch_options;  // extra "#SBATCH" options, e.g. "--qos=long" (printable, one line each)
+  int cpus = 0, memory_mb = 0, time_minutes = 0;  // 0 = the spec's resources; else in their range
   int max_parallel = 0;                  // array throttle (%N); 0 = none
 };
 

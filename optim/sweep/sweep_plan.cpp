@@ -5,13 +5,16 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <set>
 
 #include "core/atomic_file.hpp"
 #include "core/config/config.hpp"
+#include "core/content_hash.hpp"
 #include "core/error.hpp"
 #include "core/formats/text_table.hpp"
 #include "core/paths.hpp"
@@ -27,7 +30,6 @@ namespace ppsynth {
 namespace {
 
 const char* kManifest = "manifest.json";
-const char* kKind = "ppsynth-sweep";
 
 nlohmann::json spec_defaults() {
   return {{"name", ""},
@@ -113,14 +115,6 @@ std::vector<Source> sources(const nlohmann::json& spec, const std::string& base_
 
 }  // namespace
 
-std::string json_id(const nlohmann::json& value) {
-  uint64_t h = 1469598103934665603ull;  // FNV-1a 64: stable across platforms and builds
-  for (unsigned char c : value.dump()) h = (h ^ c) * 1099511628211ull;
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return std::string(buf, 12);
-}
-
 SweepManifest expand_sweep_spec(const nlohmann::json& user, const std::string& source, const std::string& base_dir) {
   nlohmann::json spec = apply_defaults(spec_defaults(), user, "");
   spec["grid"].erase("*");  // the open-object marker of the defaults, when no grid was given
@@ -133,9 +127,12 @@ SweepManifest expand_sweep_spec(const nlohmann::json& user, const std::string& s
   m.resources.cpus = get_int(res, "cpus", "resources");
   m.resources.memory_mb = get_int(res, "memory_mb", "resources");
   m.resources.time_minutes = get_int(res, "time_minutes", "resources");
-  if (m.resources.cpus < 1 || m.resources.memory_mb < 1 || m.resources.time_minutes < 1)
-    throw config_error("resources", "cpus, memory_mb and time_minutes must be >= 1");
-  const auto seeds = parse_number_list(spec["seeds"].is_null() ? nlohmann::json(95) : spec["seeds"], "seeds", "seed");
+  for (const auto& [key, v] : {std::pair<const char*, int>{"resources.cpus", m.resources.cpus},
+                               {"resources.memory_mb", m.resources.memory_mb},
+                               {"resources.time_minutes", m.resources.time_minutes}})
+    check_sweep_resource(key, v);
+  const auto seeds =
+      parse_number_list(spec["seeds"].is_null() ? nlohmann::json(95) : spec["seeds"], "seeds", "seed", kMaxSeed);
   const bool quick = spec["quick"].get<bool>();
   std::vector<std::string> common;
   for (const auto& s : spec["set"]) {
@@ -145,13 +142,19 @@ SweepManifest expand_sweep_spec(const nlohmann::json& user, const std::string& s
   const auto srcs = sources(spec, base_dir, common);
   if (srcs.empty()) throw config_error("runs", "the spec names no run config and no figure");
   std::set<std::string> ids;
-  for (const Source& src : srcs)
+  for (const Source& src : srcs) {
+    std::map<std::string, std::vector<std::string>> point_of_group;  // this source's groups, by the grid point that made each
     for (const auto& point : grid_points(spec["grid"])) {
       std::vector<std::string> overrides = common;
       overrides.insert(overrides.end(), point.begin(), point.end());
       nlohmann::json unseeded = resolve_run_config(src.config, src.has_common ? point : overrides);
       const nlohmann::json key_of_group = group_key(unseeded, quick);
       const std::string group = json_id(key_of_group);
+      if (const auto [it, fresh] = point_of_group.emplace(group, point); !fresh)
+        throw config_error("grid", "'" + join(it->second, ", ") + "' and '" + join(point, ", ") + "' make the same runs of " +
+                                       src.label + ": an axis over a key that does not change the synthesis (name, "
+                                       "description, snapshots, evaluate, checkpoint_seconds, format) would give one run "
+                                       "for several values; take it out of the grid");
       // The preset in the label: a preset's runs and the default's are told apart in gather
       // and its --baseline even when the preset comes from the spec's "set".
       const std::string preset = unseeded["preset"].is_string() ? " (preset " + unseeded["preset"].get<std::string>() + ")" : "";
@@ -175,6 +178,7 @@ SweepManifest expand_sweep_spec(const nlohmann::json& user, const std::string& s
         m.rows.push_back(std::move(row));
       }
     }
+  }
   return m;
 }
 
@@ -182,70 +186,22 @@ SweepManifest expand_sweep_spec(const std::string& spec_path) {
   return expand_sweep_spec(load_config(spec_path), spec_path, fs::path(spec_path).parent_path().string());
 }
 
-namespace {
-
-nlohmann::json to_json(const SweepManifest& m) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (const auto& r : m.rows)
-    rows.push_back({{"id", r.id}, {"label", r.label}, {"group", r.group}, {"group_label", r.group_label},
-                    {"source", r.source}, {"overrides", r.overrides}, {"seed", r.seed}, {"quick", r.quick},
-                    {"dir", r.dir}, {"config", r.config}});
-  return {{"kind", kKind},
-          {"version", 1},
-          {"name", m.name},
-          {"spec_source", m.spec_source},
-          {"spec", m.spec},
-          {"resources", {{"cpus", m.resources.cpus}, {"memory_mb", m.resources.memory_mb}, {"time_minutes", m.resources.time_minutes}}},
-          {"rows", rows}};
+SweepLock::SweepLock(const std::string& dir, const std::string& what)
+    : fd_(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
+  if (fd_ < 0) throw InputError(dir + ": cannot open the sweep directory to " + what + ": " + std::strerror(errno));
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd_);
+    throw InputError(dir + ": another ppsynth process (a `sweep run` or `sweep plan`) is working on this sweep; cannot " + what +
+                     " until it ends");
+  }
 }
 
-// Holds an advisory lock on the sweep directory while the manifest is rewritten.
-class DirLock {
- public:
-  explicit DirLock(const std::string& dir) : fd_(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
-    if (fd_ < 0 || ::flock(fd_, LOCK_EX | LOCK_NB) != 0)
-      throw InputError(dir + ": another ppsynth process is planning this sweep; wait for it");
-  }
-  ~DirLock() { ::close(fd_); }
-  DirLock(const DirLock&) = delete;
-  DirLock& operator=(const DirLock&) = delete;
-
- private:
-  int fd_;
-};
-
-}  // namespace
+SweepLock::~SweepLock() { ::close(fd_); }
 
 SweepManifest load_sweep(const std::string& dir) {
   const std::string path = (fs::path(dir) / kManifest).string();
   if (!fs::is_regular_file(path)) throw InputError(dir + ": not a sweep directory of ppsynth (no " + kManifest + "; plan it with `ppsynth sweep plan`)");
-  const nlohmann::json j = read_run_json(path);
-  if (j.value("kind", "") != kKind) throw file_error(path, 0, "not a sweep manifest of ppsynth");
-  SweepManifest m;
-  try {
-    m.name = j.at("name");
-    m.spec_source = j.at("spec_source");
-    m.spec = j.at("spec");
-    m.resources = {j.at("resources").at("cpus"), j.at("resources").at("memory_mb"), j.at("resources").at("time_minutes")};
-    for (const auto& r : j.at("rows")) {
-      SweepRow row;
-      row.id = r.at("id");
-      row.label = r.at("label");
-      row.group = r.at("group");
-      row.group_label = r.at("group_label");
-      row.source = r.at("source");
-      row.overrides = r.at("overrides").get<std::vector<std::string>>();
-      row.seed = r.at("seed");
-      row.quick = r.at("quick");
-      row.dir = r.at("dir");
-      row.config = r.at("config");
-      if (!is_safe_name(row.id) || row.dir != "runs/" + row.id) throw file_error(path, 0, "row " + row.id + ": malformed id or dir");
-      m.rows.push_back(std::move(row));
-    }
-  } catch (const nlohmann::json::exception& e) {
-    throw file_error(path, 0, std::string("malformed manifest: ") + e.what());
-  }
-  return m;
+  return parse_sweep_manifest(read_run_json(path), path);
 }
 
 PlanSummary plan_sweep(const SweepManifest& manifest, const std::string& dir_in) {
@@ -261,7 +217,12 @@ PlanSummary plan_sweep(const SweepManifest& manifest, const std::string& dir_in)
   } else if (state != RunDirState::Empty) {
     throw InputError(dir + ": exists and is not a sweep directory of ppsynth; name a new or empty directory. Nothing was changed.");
   }
-  DirLock lock(dir);
+  SweepLock lock(dir, "plan it again");
+  if (!old_ids.empty())
+    for (const auto& r : load_sweep(dir).rows)
+      if (run_dir_locked((fs::path(dir) / r.dir).string()))
+        throw InputError(dir + ": row " + r.id + " (" + r.label + ") is running; plan the sweep again once it has stopped. "
+                         "Nothing was changed.");
   std::set<std::string> new_ids;
   for (const auto& r : manifest.rows) {
     new_ids.insert(r.id);
@@ -271,7 +232,7 @@ PlanSummary plan_sweep(const SweepManifest& manifest, const std::string& dir_in)
   s.rows = manifest.rows.size();
   fs::create_directories(fs::path(dir) / "runs");
   fs::create_directories(fs::path(dir) / "logs");
-  write_text_atomic((fs::path(dir) / kManifest).string(), to_json(manifest).dump(1) + "\n");
+  write_text_atomic((fs::path(dir) / kManifest).string(), sweep_manifest_json(manifest).dump(1) + "\n");
   return s;
 }
 

@@ -11,7 +11,9 @@
 //                                               synthesised columns ("ours", registry methods)
 //     "panels": ["a", "b"],                     only these panels of the figures (default all)
 //     "seeds": [95, "96-99"],                   seeds and inclusive ranges ("95,97-98" too)
-//     "grid": {"method.max_iterations": [40, 100]},  --set axes, every combination
+//     "grid": {"method.max_iterations": [40, 100]},  --set axes, every combination (an axis
+//                                               whose values make the same runs, such as
+//                                               "description" or "evaluate", is refused)
 //     "set": ["method.k=20"],                   --set overrides applied to every run (in figure
 //                                               columns, method.* keys to "ours" only, as reproduce)
 //     "quick": false,                           tiny settings (tests)
@@ -26,34 +28,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/sweep_manifest.hpp"
+
 namespace ppsynth {
-
-struct SweepRow {
-  std::string id;      // 12 hex digits
-  std::string label;   // "<group label> seed <s>"
-  std::string group;   // id of the config without its seed (rows pooled by gather)
-  std::string group_label;
-  std::string source;  // the run or figure config it came from
-  std::vector<std::string> overrides;
-  uint64_t seed = 0;
-  bool quick = false;
-  std::string dir;     // relative to the sweep directory: runs/<id>
-  nlohmann::json config;  // resolved run config (seed included)
-};
-
-struct SweepResources {
-  int cpus = 1;
-  int memory_mb = 4096;
-  int time_minutes = 240;
-};
-
-struct SweepManifest {
-  std::string name;
-  std::string spec_source;
-  nlohmann::json spec;
-  SweepResources resources;
-  std::vector<SweepRow> rows;
-};
 
 // Reads a spec file and expands it (every run config resolved; errors name the file and key).
 SweepManifest expand_sweep_spec(const std::string& spec_path);
@@ -67,13 +44,29 @@ struct PlanSummary {
 
 // Writes DIR/manifest.json (DIR new or empty, or a sweep directory of ppsynth: re-planned in
 // place, keeping what it holds). Rows dropped from the plan keep their run directories.
+// A re-plan is refused while any row of the plan runs (its run directory is locked) or while
+// another process holds the sweep (SweepLock: an executor, another plan). Rows queued on a
+// cluster are addressed by id (sweep_runs.hpp), so a re-plan leaves them intact: a kept row
+// runs as planned, a dropped one is refused by its task.
 PlanSummary plan_sweep(const SweepManifest& manifest, const std::string& dir);
 
-// Reads DIR/manifest.json; InputError naming it when absent or not a sweep's.
+// Reads DIR/manifest.json, every value checked (core/sweep_manifest.hpp); InputError naming
+// it when absent, malformed or not a sweep's.
 SweepManifest load_sweep(const std::string& dir);
 
-// A short stable hash of a JSON value (FNV-1a 64 of its compact dump, 12 hex digits).
-std::string json_id(const nlohmann::json& value);
+// One process at a time works on a sweep as a whole: `sweep plan` and `sweep run --local` hold
+// this lock (an advisory lock on the sweep directory, released by the kernel when the process
+// ends) for as long as they run; a second is refused at once, naming `what` it was to do.
+class SweepLock {
+ public:
+  SweepLock(const std::string& dir, const std::string& what);
+  ~SweepLock();
+  SweepLock(const SweepLock&) = delete;
+  SweepLock& operator=(const SweepLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
 
 
 }  // namespace ppsynth

@@ -1,5 +1,6 @@
 #include "optim/sweep/sweep_runs.hpp"
 
+#include <algorithm>
 #include <ctime>
 #include <filesystem>
 
@@ -8,6 +9,7 @@
 #include "core/formats/text_table.hpp"
 #include "core/log.hpp"
 #include "core/run_directory.hpp"
+#include "core/run_json.hpp"
 #include "optim/run/run_synthesis.hpp"
 
 namespace fs = std::filesystem;
@@ -45,9 +47,10 @@ std::vector<RowStatus> sweep_status(const std::string& sweep_dir, const SweepMan
         s.state = RowState::Done;
         try {
           char buf[32];
-          std::snprintf(buf, sizeof buf, "%.1f s", read_run_json(dir + "/run.json").value("total_seconds", 0.0));
+          std::snprintf(buf, sizeof buf, "%.1f s", read_run_record(dir + "/run.json").total_seconds);
           s.detail = buf;
-        } catch (const InputError&) {
+        } catch (const InputError& e) {
+          s.detail = e.what();
         }
         break;
       }
@@ -71,12 +74,18 @@ std::vector<RowStatus> sweep_status(const std::string& sweep_dir, const SweepMan
   return out;
 }
 
-RowState run_sweep_task(const std::string& sweep_dir, size_t index, const std::atomic<bool>* stop) {
+RowState run_sweep_task(const std::string& sweep_dir, const std::string& row_id, const std::string& manifest_hash,
+                        const std::atomic<bool>* stop) {
   const SweepManifest m = load_sweep(sweep_dir);
-  if (index >= m.rows.size())
-    throw InputError("sweep " + sweep_dir + ": no row " + std::to_string(index) + " (the plan has " +
-                     std::to_string(m.rows.size()) + ")");
-  const SweepRow& row = m.rows[index];
+  const auto it = std::find_if(m.rows.begin(), m.rows.end(), [&](const SweepRow& r) { return r.id == row_id; });
+  if (it == m.rows.end())
+    throw InputError("sweep " + sweep_dir + ": no row " + row_id + " in its plan (" + std::to_string(m.rows.size()) +
+                     " rows): it was planned again without it since this task was given it; nothing was run");
+  if (!manifest_hash.empty() && manifest_hash != sweep_manifest_hash(m))
+    spdlog::warn("sweep {}: planned again since this task was given it (manifest {}, now {}); row {} is in the new plan "
+                 "with the same config (an id is its config's hash), so it runs as planned",
+                 sweep_dir, manifest_hash, sweep_manifest_hash(m), row_id);
+  const SweepRow& row = *it;
   const std::string dir = (fs::path(sweep_dir) / row.dir).string();
   const std::string failed = failure_file(sweep_dir, row);
   RunRequest req;

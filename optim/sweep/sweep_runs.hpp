@@ -7,9 +7,10 @@
 // (for both, how far: the stage begun last and the last checkpoint, run_progress_text)
 //   failed       the last task failed (DIR/logs/<id>.failed holds the error); the next retries
 //   pending      not started
-// run_sweep_task runs one row: skips a finished run, resumes an interrupted one, starts the
-// rest. The `ppsynth sweep task` command, every local worker and every SLURM array task are
-// this call.
+// run_sweep_task runs one row, named by its id (never by its position: a re-plan keeps the
+// ids of unchanged rows and may move them): skips a finished run, resumes an interrupted one,
+// starts the rest. The `ppsynth sweep task` command, every local worker and every SLURM array
+// task are this call.
 #include <atomic>
 #include <string>
 #include <vector>
@@ -30,9 +31,12 @@ struct RowStatus {
 
 std::vector<RowStatus> sweep_status(const std::string& sweep_dir, const SweepManifest& m);
 
-// Runs row `index` of the sweep in `sweep_dir`; returns its state afterwards (Done). Throws
-// what the run throws (RunInterrupted when *stop turned true: the checkpoint is kept), after
-// recording a failure in DIR/logs/<id>.failed.
-RowState run_sweep_task(const std::string& sweep_dir, size_t index, const std::atomic<bool>* stop);
+// Runs the row `row_id` of the sweep in `sweep_dir`; returns its state afterwards (Done).
+// `manifest_hash` (sweep_manifest_hash; "" = not checked) is the plan the task was given: a
+// plan changed since is noted, and a row no longer in it is an InputError. Throws what the run
+// throws (RunInterrupted when *stop turned true: the checkpoint is kept), after recording a
+// failure in DIR/logs/<id>.failed.
+RowState run_sweep_task(const std::string& sweep_dir, const std::string& row_id, const std::string& manifest_hash,
+                        const std::atomic<bool>* stop);
 
 }  // namespace ppsynth

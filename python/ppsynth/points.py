@@ -164,11 +164,13 @@ def read(path, format: Optional[str] = None, scaling: str = "per-axis",
 
 
 def _read_npz(path: str) -> PointSet:
+    # NumPy raises what its zip and format readers raise (BadZipFile, EOFError, KeyError, ...):
+    # every one is this file's flaw, reported as the package's ValueError naming it.
     try:
         with np.load(path, allow_pickle=False) as z:
             arrays = {k: z[k] for k in z.files}
-    except (ValueError, OSError) as e:
-        raise ValueError(f"{path}: not a readable .npz file ({e})") from None
+    except Exception as e:
+        raise ValueError(f"{path}: not a readable .npz file ({type(e).__name__}: {e})") from None
     key = "x" if "x" in arrays else "positions" if "positions" in arrays else None
     if key is None:
         raise ValueError(f"{path}: no positions (expected an array 'x' of shape (N, 2), as the published code writes)")
@@ -188,8 +190,10 @@ def _read_npz(path: str) -> PointSet:
 def _read_npy(path: str) -> PointSet:
     try:
         a = np.load(path, allow_pickle=False)
-    except (ValueError, OSError) as e:
-        raise ValueError(f"{path}: not a readable .npy file ({e})") from None
+    except Exception as e:
+        raise ValueError(f"{path}: not a readable .npy file ({type(e).__name__}: {e})") from None
+    if not isinstance(a, np.ndarray):  # an .npz under an .npy name loads as an archive
+        raise ValueError(f"{path}: not an .npy array (an .npz archive?)")
     if a.ndim != 2 or a.shape[1] < 2:
         raise ValueError(f"{path}: expected an (N, 2) array of positions or (N, 3 + A) of x, y, class, "
                          f"attributes; got shape {a.shape}")
@@ -210,9 +214,13 @@ def write(points: PointSet, path, format: Optional[str] = None, overwrite: bool 
     "plain", "json". ``.npz`` keeps everything (positions under ``"x"`` as the published code
     reads them); ``.npy`` keeps positions, classes and attribute values (not their names).
     An existing file is replaced only with ``overwrite=True`` (FileExistsError otherwise).
+    What :func:`read` refuses is never written: a point set that fails :meth:`PointSet.validate`
+    (a non-finite coordinate, a point outside the domain, a radius <= 0, an empty class, no
+    points) raises ValueError and leaves the file as it was.
     """
     path = os.fspath(path)
     points = _as_points(points, "points")
+    points.validate(path)
     if os.path.lexists(path) and not overwrite:
         raise FileExistsError(f"{path}: exists; pass overwrite=True to replace it")
     kind = _numpy_kind(path) if format is None else None

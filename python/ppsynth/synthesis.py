@@ -9,6 +9,7 @@ after writing a checkpoint, raising KeyboardInterrupt.
 from __future__ import annotations
 
 import json
+import numbers
 import os
 from dataclasses import dataclass
 from typing import Callable, List, Mapping, Optional, Sequence, Union
@@ -100,7 +101,8 @@ def resolve_config(config: ConfigLike = None, seed: Optional[int] = None, overri
     """The config a run uses: ``config`` (None for the paper's defaults, a dict, or a JSON file
     with its ``parent`` chain), then ``seed`` and ``overrides`` (``{"method.max_iterations":
     50}`` or ``["method.max_iterations=50"]``, the command's ``--set``), merged with every
-    default. Unknown keys and impossible values raise ValueError naming the key path."""
+    default. Unknown keys and impossible values raise ValueError naming the key path; a seed
+    is an integer in [0, 2^63) (ValueError outside it, TypeError for a float or a string)."""
     if config is None:
         c = {}
     elif isinstance(config, (str, os.PathLike)):
@@ -110,6 +112,9 @@ def resolve_config(config: ConfigLike = None, seed: Optional[int] = None, overri
     else:
         raise TypeError(f"config: expected None, a dict or a file name, not {type(config).__name__}")
     if seed is not None:
+        # Strictly an integer (NumPy's too): int() would truncate 5.7 and parse "95".
+        if isinstance(seed, bool) or not isinstance(seed, numbers.Integral):
+            raise TypeError(f"seed: expected an integer in [0, 2^63), not {type(seed).__name__}")
         c["seed"] = int(seed)
     return json.loads(_native.resolve_config(json.dumps(c), _override_strings(overrides)))
 

@@ -13,18 +13,20 @@
 
 #include "bindings.hpp"
 #include "core/atomic_file.hpp"
+#include "core/checkpoint_file.hpp"
 #include "core/config/config.hpp"
 #include "core/config/json_text.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/formats/text_table.hpp"
 #include "core/processor.hpp"
+#include "core/run_directory.hpp"
+#include "core/run_json.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/run/run_observers.hpp"
 #include "optim/run/run_synthesis.hpp"
 #include "optim/run/runtime.hpp"
 #include "optim/run/synthesize.hpp"
-#include "optim/sweep/sweep_plan.hpp"
 
 namespace fs = std::filesystem;
 
@@ -80,6 +82,15 @@ class PythonWatch : public SynthesisObserver {
     if (!resumable_) throw py::error_already_set(*error_);
   }
 
+  // Between iterations (the initialisation, a window's set-up): Ctrl-C sets the stop flag,
+  // which the method sees at once (SynthesisContext::poll).
+  void on_poll() override {
+    py::gil_scoped_acquire gil;
+    if (error_ || PyErr_CheckSignals() == 0) return;
+    error_ = std::make_unique<py::error_already_set>();
+    stop_.store(true);
+  }
+
   const std::atomic<bool>* stop() const { return &stop_; }
   bool stopped() const { return error_ != nullptr; }
   // With the GIL: raises what stopped the run.
@@ -92,46 +103,52 @@ class PythonWatch : public SynthesisObserver {
   std::unique_ptr<py::error_already_set> error_;
 };
 
-// synthesize(checkpoint_dir=...): the checkpoint of one in-memory synthesis, in a directory
-// the caller names. checkpoint.json holds the key of the synthesis (config, seed, quick,
-// exemplar), so a checkpoint of another synthesis is refused rather than resumed.
+// synthesize(checkpoint_dir=...): the checkpoint of one in-memory synthesis, in a folder the
+// caller names, written as ppsynth's own and nothing else: the folder is a ppsynth directory
+// of kind "checkpoint" (its marker and lock, core/run_directory.hpp) that holds only the
+// marker and checkpoint.bin. A new or empty folder becomes one; a folder holding anything
+// else is refused, never written to or emptied. The checkpoint carries the key of its
+// synthesis (the run layer refuses another's). A finished synthesis removes the two files,
+// and the folder when ppsynth made it.
 class CheckpointDir {
  public:
-  CheckpointDir(std::string dir, const json& spec, bool quick, const PointSet& exemplar) : dir_(std::move(dir)) {
-    key_ = json_id({{"synthesis", synthesis_key(spec)}, {"quick", quick}, {"exemplar", format_points(exemplar, Format::Plain)}});
+  explicit CheckpointDir(const std::string& dir) {
+    RunDirOptions o;
+    o.kind = "checkpoint";
+    o.option = "checkpoint_dir";
+    o.resume = run_dir_state(normalize_output_dir(dir, o.option)) == RunDirState::Unfinished;
+    dir_ = std::make_unique<RunDirectory>(RunDirectory::open(dir, o));
+    for (const auto& e : fs::directory_iterator(dir_->path()))
+      if (const std::string name = e.path().filename().string(); name != ".ppsynth-run" && name != "checkpoint.bin")
+        throw InputError("checkpoint_dir " + dir_->path() + ": holds " + name + ", which ppsynth did not write there; "
+                         "name a folder of the checkpoint's own (new or empty)");
+    if (!o.resume) dir_->mark_running({{"made_folder", dir_->created()}});
+    made_folder_ = run_dir_marker(dir_->path()).value("made_folder", false);
   }
-  std::string bin() const { return dir_ + "/checkpoint.bin"; }
-  std::string meta() const { return dir_ + "/checkpoint.json"; }
+  const std::string& path() const { return dir_->path(); }
+  std::string bin() const { return dir_->path() + "/checkpoint.bin"; }
 
-  // The bytes of this synthesis's checkpoint, or nullopt when the directory has none.
+  // The bytes of its checkpoint, or nullopt when there is none yet.
   std::optional<std::string> load() const {
     if (!fs::exists(bin())) return std::nullopt;
-    const json m = fs::exists(meta()) ? parse_json_text(read_file_text(meta()), meta(), false) : json();
-    if (!m.is_object() || m.value("key", "") != key_)
-      throw InputError("checkpoint_dir " + dir_ + ": its checkpoint belongs to another synthesis (other exemplar, config, "
-                       "seed or quick setting); name another directory, or remove " + bin() + " to start afresh");
     return read_file_text(bin());
   }
   void save(const std::string& bytes) {
-    if (!written_meta_) {
-      fs::create_directories(dir_);
-      write_text_atomic(meta(), json{{"ppsynth", "checkpoint of ppsynth.synthesize"}, {"key", key_}}.dump(2) + "\n");
-      written_meta_ = true;
-    }
     AtomicFile f(bin(), std::ios::binary);
     f.stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     f.commit();
   }
-  // A finished synthesis needs no checkpoint: remove the two files (and nothing else).
+  // A finished synthesis needs no checkpoint: the marker and checkpoint.bin go (the folder
+  // holds nothing else), and the folder too when ppsynth made it.
   void finish() {
+    dir_->discard();
     std::error_code ec;
-    fs::remove(bin(), ec);
-    fs::remove(meta(), ec);
+    if (made_folder_) fs::remove(dir_->path(), ec);
   }
 
  private:
-  std::string dir_, key_;
-  bool written_meta_ = false;
+  std::unique_ptr<RunDirectory> dir_;
+  bool made_folder_ = false;
 };
 
 py::list stage_list(const std::vector<StageResult>& stages) {
@@ -192,9 +209,10 @@ py::dict synthesize_in_memory(const py::dict& exemplar_py, const std::string& sp
   std::unique_ptr<CheckpointDir> checkpoints;
   std::optional<std::string> resume_state;
   if (!checkpoint_dir.empty()) {
-    checkpoints = std::make_unique<CheckpointDir>(checkpoint_dir, spec, quick, exemplar);
+    checkpoints = std::make_unique<CheckpointDir>(checkpoint_dir);
     resume_state = checkpoints->load();
     options.resume_state = resume_state ? &*resume_state : nullptr;
+    options.resume_source = checkpoints->bin();
     options.save_checkpoint = [&](const std::string& bytes) { checkpoints->save(bytes); };
   }
   SynthesisResult r;
@@ -204,6 +222,9 @@ py::dict synthesize_in_memory(const py::dict& exemplar_py, const std::string& sp
   } catch (const SynthesisInterrupted&) {
     if (!watch.stopped()) throw;
     watch.raise();
+  } catch (const CheckpointError& e) {
+    throw CheckpointError(std::string(e.what()) + "; name another checkpoint_dir, or empty " + checkpoints->path() +
+                          " to start afresh");
   }
   if (watch.stopped()) watch.raise();  // stopped during the last iteration: the checkpoint stays
   if (checkpoints) checkpoints->finish();
@@ -231,7 +252,7 @@ py::dict run_into_directory(const std::string& spec_json, const std::string& dir
   req.force = force;
   json spec;
   if (!resume) spec = parse_json_text(spec_json, "config", false);
-  else spec = read_run_json(dir + "/config.json");
+  else spec = read_run_config(dir + "/config.json");
   PythonWatch watch(progress, can_resume(spec));
   req.stop = watch.stop();
   req.observers = {&watch};

@@ -102,6 +102,8 @@ std::pair<double, std::vector<torch::Tensor>> call_python(const std::string& kin
     torch::Tensor t = from_capsule(grads[i], what + " gradient " + std::to_string(i));
     if (t.sizes() != inputs[i].sizes())
       throw InputError(what + ": gradient " + std::to_string(i) + " has another shape than its input");
+    if (!torch::isfinite(t).all().item<bool>())
+      throw InputError(what + ": gradient " + std::to_string(i) + " holds a value that is not finite (NaN or infinite)");
     g.push_back(t.to(inputs[i].scalar_type()));
   }
   return {value, g};

@@ -34,9 +34,9 @@ def test_keyboard_interrupt_then_resume_equals_uninterrupted(tmp_path):
         ppsynth.synthesize(EXEMPLAR, seed=5, quick=True, threads=1, overrides={"evaluate": False},
                            checkpoint_dir=tmp_path / "ck", progress=progress)
     assert total // 2 <= len(calls) < total  # stopped within an iteration or two of the signal
-    assert sorted(os.listdir(tmp_path / "ck")) == ["checkpoint.bin", "checkpoint.json"]
-    # Another synthesis is not resumed from it.
-    with pytest.raises(ValueError, match="belongs to another synthesis"):
+    assert sorted(os.listdir(tmp_path / "ck")) == [".ppsynth-run", "checkpoint.bin"]
+    # Another synthesis is not resumed from it: the message says what differs.
+    with pytest.raises(ValueError, match=r"made for another synthesis: seed 6 \(the checkpoint's: 5\)"):
         ppsynth.synthesize(EXEMPLAR, seed=6, quick=True, threads=1, overrides={"evaluate": False},
                            checkpoint_dir=tmp_path / "ck")
     again = ppsynth.synthesize(EXEMPLAR, seed=5, quick=True, threads=1, overrides={"evaluate": False},
@@ -44,7 +44,7 @@ def test_keyboard_interrupt_then_resume_equals_uninterrupted(tmp_path):
     assert again.resumed
     np.testing.assert_array_equal(again.output.positions, whole.output.positions)
     np.testing.assert_array_equal(again.losses.loss, whole.losses.loss)
-    assert os.listdir(tmp_path / "ck") == []  # a finished synthesis removes its checkpoint
+    assert not (tmp_path / "ck").exists()  # a finished synthesis removes its checkpoint (and the folder it made)
 
 
 def test_an_exception_in_progress_stops_the_run_and_is_raised(tmp_path):

@@ -172,6 +172,6 @@ TEST_CASE("every sweep spec (configs/sweeps) plans, and its first run runs with 
     REQUIRE_FALSE(m.rows.empty());
     const std::string dir = (d / f.stem()).string();
     ppsynth::plan_sweep(m, dir);
-    CHECK(ppsynth::run_sweep_task(dir, 0, nullptr) == ppsynth::RowState::Done);
+    CHECK(ppsynth::run_sweep_task(dir, m.rows[0].id, "", nullptr) == ppsynth::RowState::Done);
   }
 }

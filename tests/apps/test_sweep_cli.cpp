@@ -38,7 +38,7 @@ TEST_CASE("a sweep planned, interrupted, run by local tasks, followed and gather
 
   // Row 0 stopped by SIGTERM mid-stage: exit 143, interrupted (its checkpoint kept). One thread,
   // as the local tasks below resume it with: results depend on the thread count in the last bits.
-  ppsynth::test::Child task("sweep task " + dir + " --index 0", "PPSYNTH_THREADS=1");
+  ppsynth::test::Child task("sweep task " + dir + " --row " + m.rows[0].id, "PPSYNTH_THREADS=1");
   const std::regex third(" it +3/");
   REQUIRE(task.wait_for([&](const std::string& l) { return std::regex_search(l, third); }));
   task.signal(SIGTERM);

@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include <limits>
+
 #include "core/config/config.hpp"
 #include "core/error.hpp"
 #include "core/registry.hpp"
@@ -71,16 +73,36 @@ TEST_CASE("registry creates by name with defaults and refuses duplicates", "[con
 }
 
 TEST_CASE("number lists (seeds, stages): numbers and ranges, in order, without repeats", "[config]") {
-  CHECK(parse_number_list(json::array({95, "96-98", 95}), "seeds", "seed") == std::vector<uint64_t>{95, 96, 97, 98});
-  CHECK(parse_number_list(json("7-7"), "seeds", "seed") == std::vector<uint64_t>{7});
-  CHECK(parse_number_list(json("95,97-98"), "seeds", "seed") == std::vector<uint64_t>{95, 97, 98});
-  CHECK(parse_number_list(json("95"), "seeds", "seed") == std::vector<uint64_t>{95});
-  CHECK_THROWS_WITH(parse_number_list(json("95,x"), "seeds", "seed"), Catch::Contains("seeds[0]"));
-  CHECK_THROWS_WITH(parse_number_list(json("9--3"), "seeds", "seed"), Catch::Contains("seeds[0]"));
-  CHECK_THROWS_WITH(parse_number_list(json::array({"9-3"}), "seeds", "seed"), Catch::Contains("seeds[0]"));
-  CHECK_THROWS_WITH(parse_number_list(json::array({-1}), "seeds", "seed"), Catch::Contains("seeds[0]"));
-  CHECK_THROWS_WITH(parse_number_list(json::array(), "seeds", "seed"), Catch::Contains("no seeds"));
+  const uint64_t seeds = (uint64_t{1} << 63) - 1;
+  CHECK(parse_number_list(json::array({95, "96-98", 95}), "seeds", "seed", seeds) == std::vector<uint64_t>{95, 96, 97, 98});
+  CHECK(parse_number_list(json("7-7"), "seeds", "seed", seeds) == std::vector<uint64_t>{7});
+  CHECK(parse_number_list(json("95,97-98"), "seeds", "seed", seeds) == std::vector<uint64_t>{95, 97, 98});
+  CHECK(parse_number_list(json("95"), "seeds", "seed", seeds) == std::vector<uint64_t>{95});
+  CHECK_THROWS_WITH(parse_number_list(json("95,x"), "seeds", "seed", seeds), Catch::Contains("seeds[0]"));
+  CHECK_THROWS_WITH(parse_number_list(json("9--3"), "seeds", "seed", seeds), Catch::Contains("seeds[0]"));
+  CHECK_THROWS_WITH(parse_number_list(json::array({"9-3"}), "seeds", "seed", seeds), Catch::Contains("seeds[0]"));
+  CHECK_THROWS_WITH(parse_number_list(json::array({-1}), "seeds", "seed", seeds), Catch::Contains("seeds[0]"));
+  CHECK_THROWS_WITH(parse_number_list(json::array(), "seeds", "seed", seeds), Catch::Contains("no seeds"));
   // The errors call the numbers what they are.
-  CHECK_THROWS_WITH(parse_number_list(json("1-x"), "--stage", "stage"), Catch::Contains("--stage[0]") && Catch::Contains("expected a stage >= 0"));
+  CHECK_THROWS_WITH(parse_number_list(json("1-x"), "--stage", "stage", 100000),
+                    Catch::Contains("--stage[0]") && Catch::Contains("expected a stage from 0 to 100000"));
 }
+
+TEST_CASE("number lists near 2^64 are refused, never saturated or looped over", "[config]") {
+  // The defect: sscanf("%llu") saturated 2^64 and beyond to 2^64 - 1, and `v <= last` never
+  // failed for a range ending there: the loop ran on and allocated until memory was gone.
+  const uint64_t max = std::numeric_limits<uint64_t>::max();
+  for (const std::string text : {"18446744073709551615", "18446744073709551614-18446744073709551615",
+                                 "99999999999999999999", "18446744073709551616-18446744073709551620"})
+    CHECK_THROWS_WITH(parse_number_list(json(text), "seeds", "seed", (uint64_t{1} << 63) - 1), Catch::Contains("seeds[0]"));
+  // With the whole range allowed, a range ending at 2^64 - 1 ends there.
+  CHECK(parse_number_list(json("18446744073709551614-18446744073709551615"), "n", "number", max) ==
+        std::vector<uint64_t>{max - 1, max});
+  CHECK_THROWS_WITH(parse_number_list(json("18446744073709551616"), "n", "number", max), Catch::Contains("past"));
+  CHECK_THROWS_WITH(parse_number_list(json::array({100001}), "--stage", "stage", 100000), Catch::Contains("past 100000"));
+  for (const std::string text : {"+5", " 5", "5 ", "1e3", "0x10", "5-", "-5", ""})
+    CHECK_THROWS_AS(parse_number_list(json(text), "seeds", "seed", 1000), InputError);
+  CHECK_THROWS_WITH(parse_number_list(json("0-100000"), "seeds", "seed", 1000000), Catch::Contains("spans more than"));
+}
+
 

@@ -5,8 +5,13 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
+#include <functional>
+#include <random>
 #include <sstream>
 
+#include "core/checkpoint_file.hpp"
+#include "core/content_hash.hpp"
 #include "core/generators/lattices.hpp"
 #include "core/metrics/pcf.hpp"
 #include "optim/method.hpp"
@@ -28,6 +33,29 @@ const json kQuickMethod{{"type", "gabor"}, {"quick", {{"res", 16}, {"channels", 
 Run synthesize(const PointSet& ex, const std::string* resume = nullptr, const std::atomic<bool>* stop = nullptr,
                const json& method_spec = kQuickMethod) {
   return test::checkpointed_run(method_spec, ex, 5, resume, stop);
+}
+
+// Sets the stop flag at the first iteration it is told of: the run stops at that iteration's
+// end (a flag set before the start stops it before any work, with nothing to save).
+struct StopAtFirstIteration : SynthesisObserver {
+  std::atomic<bool> stop{false};
+  void on_iteration(const ProgressEvent&) override { stop = true; }
+};
+
+// A run (resumed from `resume` when given) stopped at the end of its first iteration: it
+// throws SynthesisInterrupted, its checkpoint in `saved`.
+void stop_after_one_iteration(const PointSet& ex, const std::string* resume, std::vector<std::string>& saved) {
+  StopAtFirstIteration first;
+  auto method = MethodRegistry::instance().create(kQuickMethod, "method");
+  SynthesisContext ctx;
+  ctx.quick = true;
+  ctx.seed = 5;
+  ctx.checkpoint_seconds = 1e9;
+  ctx.save_checkpoint = [&](const std::string& bytes) { saved.push_back(bytes); };
+  ctx.resume_state = resume;
+  ctx.stop = &first.stop;
+  ctx.observers = {&first};
+  method->synthesize(ex, ctx);
 }
 
 
@@ -110,16 +138,8 @@ TEST_CASE("a stage that ends on its best iterate ends there, and resumes to the 
 TEST_CASE("the stop flag saves a checkpoint and throws; resuming from it finishes the run", "[optim][checkpoint]") {
   const PointSet ex = test::small_exemplar(2, false);
   const Run whole = synthesize(ex);
-  std::atomic<bool> stop{true};  // stop at the end of the first iteration
   Run stopped;
-  auto method = MethodRegistry::instance().create(kQuickMethod, "method");
-  SynthesisContext ctx;
-  ctx.quick = true;
-  ctx.seed = 5;
-  ctx.checkpoint_seconds = 1e9;
-  ctx.save_checkpoint = [&](const std::string& bytes) { stopped.checkpoints.push_back(bytes); };
-  ctx.stop = &stop;
-  CHECK_THROWS_AS(method->synthesize(ex, ctx), SynthesisInterrupted);
+  CHECK_THROWS_AS(stop_after_one_iteration(ex, nullptr, stopped.checkpoints), SynthesisInterrupted);
   REQUIRE(stopped.checkpoints.size() == 1);
   CHECK(deserialize_state(stopped.checkpoints[0], "t").iteration == 1);
   CHECK(same_bits(synthesize(ex, &stopped.checkpoints[0]).output, whole.output));
@@ -164,4 +184,133 @@ TEST_CASE("a checkpoint of another synthesis is refused", "[optim][checkpoint]")
   CHECK_THROWS_AS(synthesize(other, &one.checkpoints[1]), InputError);
   const std::string garbage = "not a checkpoint";
   CHECK_THROWS_WITH(synthesize(other, &garbage), Catch::Contains("checkpoint"));
+}
+
+namespace {
+
+// The checkpoint `bytes` with its state changed by `edit`, written back whole (checksum and all):
+// what a crafted file holds, to reach the checks behind the checksum.
+std::string edited(const std::string& bytes, const std::function<void(SynthesisState&)>& edit) {
+  SynthesisState s = deserialize_state(bytes, "test");
+  edit(s);
+  return serialize_state(s);
+}
+
+}  // namespace
+
+TEST_CASE("a restored state is checked against the plan: indices, counts, flags, finite values", "[optim][checkpoint]") {
+  const PointSet ex = test::small_exemplar(2, true);
+  const Run whole = synthesize(ex);
+  const std::string& mid = whole.checkpoints[2];  // inside the first stage: moving points, optimiser moments
+  {
+    const SynthesisState st = deserialize_state(mid, "test");
+    REQUIRE(st.moving.defined());
+    REQUIRE_FALSE(st.optimizer.empty());
+    REQUIRE(st.iteration > 0);
+  }
+  struct Case {
+    const char* what;
+    std::function<void(SynthesisState&)> edit;
+  };
+  const std::vector<Case> cases = {
+      // The defect: an index out of range made map_weights read past the output (SIGSEGV).
+      {"point index", [](SynthesisState& s) { s.group_moving[0] = 1000000; }},
+      {"point index", [](SynthesisState& s) { s.group_frozen.push_back(-3); }},
+      {"twice", [](SynthesisState& s) { s.group_moving[1] = s.group_moving[0]; }},
+      {"moving positions for", [](SynthesisState& s) { s.group_moving.pop_back(); }},
+      {"outside the synthesis domain", [](SynthesisState& s) { s.positions[4].x = 7.5; }},
+      {"points; this synthesis has", [](SynthesisState& s) { s.positions.pop_back(); }},
+      {"stage", [](SynthesisState& s) { s.stage = 1000; }},
+      {"iteration", [](SynthesisState& s) { s.iteration = 100000; }},
+      {"losses recorded", [](SynthesisState& s) { s.stage_losses.push_back(1.0); }},
+      {"a loss recorded at stage", [](SynthesisState& s) { s.history[0].stage = 999; }},
+      {"finished stages", [](SynthesisState& s) { s.stages.push_back(json::object()); }},
+      {"not finite", [](SynthesisState& s) { s.moving[0][0] = std::nanf(""); }},
+      {"not finite", [](SynthesisState& s) { s.stage_losses[0] = INFINITY; }},
+      {"optimiser state 'exp_avg'", [](SynthesisState& s) { s.optimizer["exp_avg"] = torch::zeros({3, 2}); }},
+      {"optimiser state 'exp_avg_sq'", [](SynthesisState& s) { s.optimizer["exp_avg_sq"] = -s.optimizer["exp_avg_sq"] - 1; }},
+      {"optimiser state 'step'", [](SynthesisState& s) { s.optimizer["step"] = torch::tensor(int64_t{0}); }},
+      {"optimiser state 'momentum'", [](SynthesisState& s) { s.optimizer["momentum"] = torch::zeros({1}); }},
+      {"best iterate", [](SynthesisState& s) { s.stage_best = torch::zeros({1, 2}); }},
+      {"another type", [](SynthesisState& s) { s.stages.push_back({{"relaxed", "yes"}}); }},
+      {"generator", [](SynthesisState& s) { s.rng = "not a generator"; }},
+  };
+  for (const Case& c : cases) {
+    const std::string bytes = edited(mid, c.edit);
+    INFO(c.what);
+    CHECK_THROWS_AS(synthesize(ex, &bytes), CheckpointError);
+    CHECK_THROWS_WITH(synthesize(ex, &bytes), Catch::Contains(c.what));
+  }
+  // Intact, the round trip resumes to the same bits.
+  const std::string same = edited(mid, [](SynthesisState&) {});
+  CHECK(same_bits(synthesize(ex, &same).output, whole.output));
+}
+
+TEST_CASE("random bytes changed in a checkpoint (checksum mended) never crash a resume", "[optim][checkpoint]") {
+  const PointSet ex = test::small_exemplar(2, true);
+  const Run whole = synthesize(ex);
+  const std::string& mid = whole.checkpoints[3];
+  std::mt19937_64 rng(7);
+  int refused = 0, resumed = 0;
+  for (int trial = 0; trial < 150; ++trial) {
+    std::string bytes = mid;
+    const size_t at = 19 + rng() % (bytes.size() - 27);  // past the magic, before the checksum
+    bytes[at] = static_cast<char>(bytes[at] ^ (1 + rng() % 255));
+    const uint64_t h = fnv1a64(bytes.data(), bytes.size() - 8);
+    std::memcpy(&bytes[bytes.size() - 8], &h, 8);
+    try {  // each trial restores, runs an iteration at most, and stops
+      std::vector<std::string> saved;
+      stop_after_one_iteration(ex, &bytes, saved);
+      ++resumed;
+    } catch (const InputError&) {
+      ++refused;
+    } catch (const SynthesisInterrupted&) {
+      ++resumed;
+    }
+  }
+  INFO(refused << " refused, " << resumed << " resumed");
+  CHECK(refused + resumed == 150);
+  CHECK(refused > 0);
+}
+
+TEST_CASE("a checkpoint carries its synthesis's key; another key is refused, naming what differs", "[optim][checkpoint]") {
+  const PointSet ex = test::small_exemplar(1, false);
+  auto run_keyed = [&](const json& key, const std::string* resume, std::vector<std::string>* saved) {
+    auto method = MethodRegistry::instance().create(kQuickMethod, "method");
+    SynthesisContext ctx;
+    ctx.quick = true;
+    ctx.seed = 5;
+    ctx.checkpoint_seconds = 0;
+    ctx.checkpoint_key = key;
+    ctx.resume_state = resume;
+    ctx.resume_source = "run/checkpoint.bin";
+    ctx.save_checkpoint = [&](const std::string& b) {
+      if (saved) saved->push_back(b);
+    };
+    return method->synthesize(ex, ctx);
+  };
+  const json key = {{"method", "gabor"}, {"method_version", 1}, {"seed", 5}, {"quick", true}, {"exemplar", "e"}};
+  std::vector<std::string> saved;
+  const PointSet out = run_keyed(key, nullptr, &saved);
+  REQUIRE(saved.size() > 2);
+  CHECK(deserialize_state(saved[1], "t").key == key);
+  CHECK(same_bits(run_keyed(key, &saved[1], nullptr), out));
+  json other = key;
+  other["seed"] = 6;
+  CHECK_THROWS_WITH(run_keyed(other, &saved[1], nullptr),
+                    Catch::Contains("run/checkpoint.bin") && Catch::Contains("seed 6 (the checkpoint's: 5)"));
+}
+
+TEST_CASE("L-BFGS's state resumes bit for bit too", "[optim][checkpoint]") {
+  json spec = kQuickMethod;
+  spec["optimizer"] = {{"type", "lbfgs"}, {"max_iter", 3}};
+  const PointSet ex = test::small_exemplar(1, false);
+  const Run whole = synthesize(ex, nullptr, nullptr, spec);
+  REQUIRE(whole.checkpoints.size() > 4);
+  const SynthesisState st = deserialize_state(whole.checkpoints[2], "test");
+  REQUIRE(st.optimizer.count("old_dirs"));
+  for (size_t i : {size_t{1}, size_t{2}, whole.checkpoints.size() / 2}) {
+    INFO("checkpoint " << i);
+    CHECK(same_bits(synthesize(ex, &whole.checkpoints[i], nullptr, spec).output, whole.output));
+  }
 }

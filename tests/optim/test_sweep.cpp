@@ -14,6 +14,7 @@
 #include "core/metrics/evaluation.hpp"
 #include "core/metrics/summary_stats.hpp"
 #include "core/processor.hpp"
+#include "core/run_directory.hpp"
 #include "optim/run/run_store.hpp"
 #include "optim/run/run_synthesis.hpp"
 #include "optim/sweep/gather.hpp"
@@ -43,7 +44,7 @@ json tiny_spec(json grid = json::object()) {
 SweepManifest planned_and_run(const json& spec, const std::string& dir) {
   plan_sweep(expand_sweep_spec(spec, "spec", ""), dir);
   const SweepManifest m = load_sweep(dir);
-  for (size_t i = 0; i < m.rows.size(); ++i) REQUIRE(run_sweep_task(dir, i, nullptr) == RowState::Done);
+  for (const auto& row : m.rows) REQUIRE(run_sweep_task(dir, row.id, "", nullptr) == RowState::Done);
   return m;
 }
 
@@ -126,9 +127,9 @@ TEST_CASE("tasks run rows, skip finished ones, and gather pools seeds against a 
   const auto m = planned_and_run(tiny_spec(), dir);
   for (const auto& s : sweep_status(dir, m)) CHECK(s.state == RowState::Done);
   const auto before = fs::last_write_time(fs::path(dir) / m.rows[0].dir / "output.txt");
-  CHECK(run_sweep_task(dir, 0, nullptr) == RowState::Done);  // done already: not run again
+  CHECK(run_sweep_task(dir, m.rows[0].id, "", nullptr) == RowState::Done);  // done already: not run again
   CHECK(fs::last_write_time(fs::path(dir) / m.rows[0].dir / "output.txt") == before);
-  CHECK_THROWS_WITH(run_sweep_task(dir, 3, nullptr), Catch::Contains("no row 3"));
+  CHECK_THROWS_WITH(run_sweep_task(dir, "0123456789ab", "", nullptr), Catch::Contains("no row 0123456789ab"));
 
   GatherOptions o;
   o.references = {{"", (fs::path(dir) / m.rows[0].dir / "output.txt").string()}};  // seed 3's own output
@@ -236,12 +237,14 @@ TEST_CASE("the SLURM job script: one array task per run that is not done", "[swe
   CHECK_THAT(s, Catch::Contains("#SBATCH --partition=long\n"));
   CHECK_THAT(s, Catch::Contains("#SBATCH --qos=low\n"));
   CHECK_THAT(s, Catch::Contains("#SBATCH --requeue\n"));
+  // The array index picks the row's id from the list (a re-plan never shifts a task's row).
+  CHECK_THAT(s, Catch::Contains("rows=(" + m.rows[0].id + " " + m.rows[1].id + " " + m.rows[2].id + ")\n"));
   CHECK_THAT(s, Catch::Contains("exec /opt/ppsynth/bin/ppsynth sweep task " + fs::absolute(dir).lexically_normal().string() +
-                                " --index \"$SLURM_ARRAY_TASK_ID\""));
-  run_sweep_task(dir, 1, nullptr);
+                                " --row \"${rows[$SLURM_ARRAY_TASK_ID]}\" --manifest " + sweep_manifest_hash(m) + "\n"));
+  run_sweep_task(dir, m.rows[1].id, "", nullptr);
   CHECK_THAT(slurm_script(dir, m, how), Catch::Contains("#SBATCH --array=0,2%2\n"));
-  run_sweep_task(dir, 0, nullptr);
-  run_sweep_task(dir, 2, nullptr);
+  run_sweep_task(dir, m.rows[0].id, "", nullptr);
+  run_sweep_task(dir, m.rows[2].id, "", nullptr);
   CHECK(slurm_script(dir, m, how).empty());
   CHECK(compress_indices({0, 1, 2, 4, 6, 7}) == "0-2,4,6-7");
 }
@@ -464,7 +467,7 @@ TEST_CASE("gather tells apart two sweeps of one run config with other settings",
     spec["set"] = {"method.quick.max_iterations=" + std::to_string(iterations), "method.quick.res=16"};
     dirs.push_back((d / ("sw" + std::to_string(iterations))).string());
     plan_sweep(expand_sweep_spec(spec, "spec", ""), dirs.back());
-    REQUIRE(run_sweep_task(dirs.back(), 0, nullptr) == RowState::Done);
+    REQUIRE(run_sweep_task(dirs.back(), load_sweep(dirs.back()).rows[0].id, "", nullptr) == RowState::Done);
   }
   std::set<std::string> labels;
   for (const auto& run : gather_runs(dirs, GatherOptions{}).runs) labels.insert(run.group_label);
@@ -480,7 +483,7 @@ TEST_CASE("gather tells apart two sweeps of one run config with other settings",
     if (term) spec["set"].push_back("method.terms.separation.weight=1");
     grids.push_back((d / (term ? "grid_term" : "grid")).string());
     plan_sweep(expand_sweep_spec(spec, "spec", ""), grids.back());
-    REQUIRE(run_sweep_task(grids.back(), 0, nullptr) == RowState::Done);
+    REQUIRE(run_sweep_task(grids.back(), load_sweep(grids.back()).rows[0].id, "", nullptr) == RowState::Done);
   }
   labels.clear();
   for (const auto& run : gather_runs(grids, GatherOptions{}).runs) labels.insert(run.group_label);

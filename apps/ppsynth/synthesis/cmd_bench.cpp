@@ -17,6 +17,7 @@
 #include <iostream>
 
 #include "apps/ppsynth/command.hpp"
+#include "apps/ppsynth/option_checks.hpp"
 #include "optim/run/run_config.hpp"
 #include "core/memory_budget.hpp"
 #include "core/atomic_file.hpp"
@@ -92,7 +93,7 @@ app::RunFn setup(CLI::App& app) {
   app.add_option("--exemplar,-e", o->exemplar, "exemplar point file");
   app.add_option("--set", o->sets, "override a config key: key.path=value");
   app.add_option("--device", o->device, "where it runs: cpu, cuda, cuda:N or auto (runtime.device)");
-  app.add_option("--reps", o->reps, "repetitions per phase")->check(CLI::PositiveNumber);
+  app.add_option("--reps", o->reps, "repetitions per phase")->check(ppsynth::app::whole_number(1, 1000000));
   app.add_option("--json", o->json_out, "also write the figures as JSON");
   app.add_flag("--skip-setup", o->skip_setup, "do not time the set-up of every sigma");
   return [o]() {

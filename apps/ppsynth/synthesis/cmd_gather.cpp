@@ -49,10 +49,8 @@ ppsynth::app::RunFn setup(CLI::App& cmd) {
     for (const auto& r : o->references) opts.references.push_back(ppsynth::parse_reference(r));
     opts.bound = o->bound;
     if (!o->stages.empty())
-      for (const uint64_t stage : ppsynth::parse_number_list(nlohmann::json(o->stages), "--stage", "stage")) {
-        if (stage > 100000) throw ppsynth::InputError("--stage " + std::to_string(stage) + ": no plan has that many stages");
+      for (const uint64_t stage : ppsynth::parse_number_list(nlohmann::json(o->stages), "--stage", "stage", 100000))
         opts.stages.push_back(static_cast<int>(stage));
-      }
     const auto r = ppsynth::gather_runs(o->dirs, opts);
     if (r.runs.empty()) throw ppsynth::InputError("gather: no finished run under the given directories");
     std::cout << ppsynth::format_gather(r);

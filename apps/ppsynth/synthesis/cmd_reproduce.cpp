@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "apps/ppsynth/command.hpp"
+#include "apps/ppsynth/option_checks.hpp"
 #include "optim/reproduce/reproduce_config.hpp"
 #include "optim/reproduce/reproduce_runner.hpp"
 #include "core/error.hpp"
@@ -35,7 +36,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_option("--seeds", o->seeds, "every synthesised column over these seeds (\"95-99\" or \"95,97\"), as a sweep; "
                                       "the report adds the statistics over seeds");
   app.add_option("--sweep", o->sweep, "the sweep's directory (default sweeps/NAME)");
-  app.add_option("-j,--jobs", o->jobs, "the sweep's runs at once, here (--seeds)")->check(CLI::PositiveNumber);
+  app.add_option("-j,--jobs", o->jobs, "the sweep's runs at once, here (--seeds)")->check(ppsynth::app::whole_number(1, 1024));
   app.add_flag("--plan-only", o->plan_only, "plan the sweep (--seeds) and stop: run it with `ppsynth sweep run DIR --slurm`, "
                                             "then run this command again to write the report");
   return [o]() {

@@ -2,12 +2,13 @@
 // `ppsynth sweep run DIR --local [-j N]`      run what is not done, N tasks at once
 // `ppsynth sweep run DIR --slurm [--dry-run]` the same as a SLURM job array
 // `ppsynth sweep status DIR [--json]`         done / running / interrupted / failed / pending
-// `ppsynth sweep task DIR [--index I]`        one row (I, else $SLURM_ARRAY_TASK_ID)
+// `ppsynth sweep task DIR --row ID [--manifest HASH]`  one row, by its id (what every executor runs)
 // The library: optim/sweep (plan, runs, executors). Statistics: `ppsynth gather`.
 #include <filesystem>
 #include <iostream>
 
 #include "apps/ppsynth/command.hpp"
+#include "apps/ppsynth/option_checks.hpp"
 #include "apps/ppsynth/stop_signals.hpp"
 #include "core/error.hpp"
 #include "optim/run/run_synthesis.hpp"
@@ -20,11 +21,10 @@ using namespace ppsynth;
 namespace fs = std::filesystem;
 
 struct Opts {
-  std::string spec, dir, partition, account;
+  std::string spec, dir, partition, account, row, manifest;
   std::vector<std::string> sbatch_options;
   bool local = false, slurm = false, dry_run = false, json = false;
   int jobs = 1, threads = 0, cpus = 0, memory_mb = 0, time_minutes = 0, max_parallel = 0;
-  long long index = -1;
 };
 
 std::string self_binary() { return fs::read_symlink("/proc/self/exe").string(); }
@@ -104,19 +104,13 @@ int run(const Opts& o) {
 }
 
 int task(const Opts& o) {
-  long long index = o.index;
-  if (index < 0) {
-    const char* env = std::getenv("SLURM_ARRAY_TASK_ID");
-    char* end = nullptr;
-    if (!env || (index = std::strtoll(env, &end, 10), *end != '\0' || index < 0))
-      throw InputError("sweep task: give --index, or run it as a SLURM array task (SLURM_ARRAY_TASK_ID)");
-  }
   app::install_stop_handlers();
   try {
-    run_sweep_task(o.dir, static_cast<size_t>(index), app::stop_flag());
+    run_sweep_task(o.dir, o.row, o.manifest, app::stop_flag());
   } catch (const RunInterrupted& e) {
-    std::cerr << "ppsynth sweep task: stopped by " << app::stop_signal_name() << "; the checkpoint is in " << e.dir
-              << "; the next task for row " << index << " resumes it\n";
+    std::cerr << "ppsynth sweep task: stopped by " << app::stop_signal_name()
+              << (e.dir.empty() ? std::string(" before its first checkpoint") : "; the checkpoint is in " + e.dir)
+              << "; the next task for row " << o.row << " resumes it\n";
     return app::exit_code_for_stop();
   }
   return 0;
@@ -131,23 +125,27 @@ app::RunFn setup(CLI::App& cmd) {
   auto* r = cmd.add_subcommand("run", "run the sweep's runs that are not done");
   r->add_option("dir", o->dir, "sweep directory")->required();
   r->add_flag("--local", o->local, "run here, -j tasks at once");
-  r->add_option("-j,--jobs", o->jobs, "tasks at once (--local)")->check(CLI::PositiveNumber);
-  r->add_option("--threads", o->threads, "threads per task (--local; default: cores / jobs)")->check(CLI::PositiveNumber);
+  r->add_option("-j,--jobs", o->jobs, "tasks at once (--local)")->check(app::whole_number(1, 1024));
+  r->add_option("--threads", o->threads, "threads per task (--local; default: PPSYNTH_THREADS, else cores / jobs)")
+      ->check(app::whole_number(1, 1024));
   r->add_flag("--slurm", o->slurm, "submit a SLURM job array, one task per run");
   r->add_flag("--dry-run", o->dry_run, "print the job script, submit nothing (--slurm)");
-  r->add_option("--partition", o->partition, "SLURM partition");
-  r->add_option("--account", o->account, "SLURM account");
+  r->add_option("--partition", o->partition, "SLURM partition (letters, digits, '_', '-', '.')");
+  r->add_option("--account", o->account, "SLURM account (letters, digits, '_', '-', '.')");
   r->add_option("--sbatch-option", o->sbatch_options, "an extra #SBATCH option, e.g. --qos=long (repeatable)");
-  r->add_option("--cpus", o->cpus, "CPUs per task (default: the spec's resources.cpus)")->check(CLI::PositiveNumber);
-  r->add_option("--mem-mb", o->memory_mb, "memory per task in MiB (default: the spec's)")->check(CLI::PositiveNumber);
-  r->add_option("--time-minutes", o->time_minutes, "time limit per task (default: the spec's)")->check(CLI::PositiveNumber);
-  r->add_option("--max-parallel", o->max_parallel, "at most this many array tasks at once")->check(CLI::PositiveNumber);
+  r->add_option("--cpus", o->cpus, "CPUs per task (default: the spec's resources.cpus)")->check(app::whole_number(1, kMaxSweepCpus));
+  r->add_option("--mem-mb", o->memory_mb, "memory per task in MiB (default: the spec's)")
+      ->check(app::whole_number(1, kMaxSweepMemoryMb));
+  r->add_option("--time-minutes", o->time_minutes, "time limit per task (default: the spec's)")
+      ->check(app::whole_number(1, kMaxSweepMinutes));
+  r->add_option("--max-parallel", o->max_parallel, "at most this many array tasks at once")->check(app::whole_number(1, 100000));
   auto* s = cmd.add_subcommand("status", "list the sweep's runs and their state");
   s->add_option("dir", o->dir, "sweep directory")->required();
   s->add_flag("--json", o->json, "print JSON");
   auto* t = cmd.add_subcommand("task", "run one row of the sweep (what each worker and array task runs)");
   t->add_option("dir", o->dir, "sweep directory")->required();
-  t->add_option("--index", o->index, "manifest row (default: $SLURM_ARRAY_TASK_ID)")->check(CLI::NonNegativeNumber);
+  t->add_option("--row", o->row, "the row's id (`ppsynth sweep status` lists them)")->required();
+  t->add_option("--manifest", o->manifest, "the plan's hash the task was given (a plan changed since is noted)");
   return [o, p, r, s, t]() -> int {
     if (p->parsed()) return plan(*o);
     if (r->parsed()) return run(*o);

@@ -1,5 +1,5 @@
 // `ppsynth synthesize [CONFIG] [--exemplar FILE] [-o RUN_DIR] [--set key=value ...]`
-// `ppsynth synthesize --resume RUN_DIR`
+// `ppsynth synthesize --resume RUN_DIR [--force]`  (--force: afresh from its config.json)
 // `--size W H` / `--points N`: an output of that size (exemplar units) or point count instead of
 // the paper's u x u unit square (the config's "output"; core/output_shape.hpp).
 // Runs one synthesis (default method: the paper's, with the published settings) and writes a
@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "apps/ppsynth/command.hpp"
+#include "apps/ppsynth/option_checks.hpp"
 #include "apps/ppsynth/stop_signals.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/run/run_synthesis.hpp"
@@ -21,10 +22,10 @@
 namespace {
 
 struct Opts {
-  std::string config, exemplar, out, method, init, format, resume, preset, device;
+  std::string config, exemplar, out, method, init, format, resume, preset, device, seed;
   std::vector<std::string> sets;
   std::vector<double> size;
-  long long seed = -1, points = -1;
+  long long points = -1;
   bool quick = false, force = false;
 };
 
@@ -34,20 +35,20 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_option("--exemplar,-e", o->exemplar, "exemplar point file (overrides the config's)");
   app.add_option("--format", o->format, "exemplar format: auto | gabor | point-synthesis | plain | json");
   app.add_option("-o,--out", o->out, "run directory (default runs/<name>); must be new or empty");
-  app.add_flag("--force", o->force, "replace the run directory if it holds a run of ppsynth");
+  app.add_flag("--force", o->force, "replace the run directory if it holds a run of ppsynth (with --resume: start that run afresh from its config.json)");
   app.add_option("--resume", o->resume, "continue the unfinished run in this directory from its last checkpoint");
   app.add_option("--method,-m", o->method, "synthesis method (gabor, roveri2015, pcf2017, ...)");
   app.add_option("--set", o->sets, "override a config key: key.path=value (repeatable)");
-  app.add_option("--seed", o->seed, "random seed");
+  app.add_option("--seed", o->seed, "random seed, a whole number from 0 to 2^63 - 1")->check(ppsynth::app::seed_number());
   app.add_option("--preset", o->preset, "a named preset under the config's own keys: fast (`ppsynth config --kind preset`)");
   app.add_option("--init", o->init, "explicit initialisation point file");
   app.add_option("--device", o->device, "where the synthesis runs: cpu (default), cuda, cuda:N or auto (runtime.device)");
   app.add_flag("--quick", o->quick, "tiny grid and few iterations (smoke test)");
   auto* size = app.add_option("--size", o->size, "output rectangle W H in exemplar units (clean borders, window by window)")
                    ->expected(2)
-                   ->check(CLI::PositiveNumber);
+                   ->check(ppsynth::app::positive_number());
   app.add_option("--points", o->points, "output of about N points (a square at the exemplar's density)")
-      ->check(CLI::PositiveNumber)
+      ->check(ppsynth::app::whole_number(1, 1000000000000ull))
       ->excludes(size);
   return [o]() -> int {
     using namespace ppsynth;
@@ -58,10 +59,11 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     req.stop = ppsynth::app::stop_flag();
     try {
       if (!o->resume.empty()) {
-        if (!o->config.empty() || !o->exemplar.empty() || !o->out.empty() || !o->sets.empty() || o->force || o->seed >= 0 ||
+        if (!o->config.empty() || !o->exemplar.empty() || !o->out.empty() || !o->sets.empty() || !o->seed.empty() ||
             !o->method.empty() || !o->init.empty() || !o->format.empty() || o->quick || !o->size.empty() || o->points >= 0 ||
             !o->preset.empty() || !o->device.empty())
-          throw InputError("--resume takes the run directory alone: its config, seed and settings are the run's own");
+          throw InputError("--resume takes the run directory alone (and --force to start it afresh): its config, seed and "
+                           "settings are the run's own");
         ppsynth::app::install_stop_handlers();
         std::cout << resume_synthesis(o->resume, req).dir << "\n";
         return 0;
@@ -70,7 +72,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     if (!o->exemplar.empty()) c["exemplar"] = o->exemplar;
     if (!o->format.empty()) c["format"] = o->format;
     if (!o->method.empty()) c["method"] = json{{"type", o->method}};
-    if (o->seed >= 0) c["seed"] = o->seed;
+    if (!o->seed.empty()) c["seed"] = std::stoull(o->seed);  // digits below 2^63 (seed_number)
     if (!o->init.empty()) c["init_file"] = o->init;
     if (!o->size.empty()) c["output"]["size"] = o->size;
     if (o->points >= 0) c["output"]["points"] = o->points;
@@ -81,8 +83,12 @@ ppsynth::app::RunFn setup(CLI::App& app) {
       std::cout << run_synthesis(resolved, req).dir << "\n";
       return 0;
     } catch (const RunInterrupted& e) {
-      std::cerr << "ppsynth synthesize: stopped by " << ppsynth::app::stop_signal_name() << " at the end of an iteration; the checkpoint is in " << e.dir
-                << ". Continue with:\n  ppsynth synthesize --resume " << ppsynth::shell_quoted(e.dir) << "\n";
+      if (e.dir.empty())
+        std::cerr << "ppsynth synthesize: stopped by " << ppsynth::app::stop_signal_name()
+                  << " before the first checkpoint; nothing was kept\n";
+      else
+        std::cerr << "ppsynth synthesize: stopped by " << ppsynth::app::stop_signal_name() << "; the checkpoint is in " << e.dir
+                  << ". Continue with:\n  ppsynth synthesize --resume " << ppsynth::shell_quoted(e.dir) << "\n";
       return ppsynth::app::exit_code_for_stop();
     }
   };

@@ -1,0 +1,17 @@
+#pragma once
+// The numbers of one evaluation (a run's metrics.json, evaluate()'s JSON) as
+// "<scope>/<metric>" -> value: "all/pcf_mse", "class 1/wasserstein", "classes 0-1/pcf_mse",
+// "all/border_density_0.5%", "all/l_sup", "class 0/verdict_p", "all/verdict_pass". What gather pools over seeds. A metrics.json that is not the
+// evaluation's layout (edited, truncated, crafted) is an InputError naming `source` and the
+// key; a metric that is null (undefined for that output) is left out.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace ppsynth {
+
+std::vector<std::pair<std::string, double>> metric_values(const nlohmann::json& metrics, const std::string& source);
+
+}  // namespace ppsynth
