@@ -8,7 +8,7 @@ side, each over what uniform points put there. The edge's quantile among the ran
 near 1 where points pile on it, near 0 where the edge is a thin seam, and anywhere between
 where the edge looks like any other line. Unlike a bound on the density itself, this holds
 for lattice-like patterns, whose density near a line depends on where the line falls between
-rows (Tree1: docs/large_outputs.md, "The relax as the default").
+rows (Tree1: docs/lab/large_outputs.md, "The relax as the default").
 
     scripts/edge_against_lines.py RUN_DIR/output.txt [RUN_DIR/snapshots/stage04.txt ...]
 

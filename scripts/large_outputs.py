@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 20's measurements of large outputs, as one table (docs/large_outputs.md).
+"""Issue 20's measurements of large outputs, as one table (docs/lab/large_outputs.md).
 
 For each run directory (a finished `ppsynth synthesize`, large output or u = 2 run): points,
 windows, wall time and peak memory (run.json), the PCF MSE, Wasserstein and Chamfer of random
@@ -9,7 +9,7 @@ spectrum's peak ratio with its heat map (`ppsynth spectrum`; tile periods and se
 peaks off the ring).
 
     scripts/large_outputs.py RUN_DIR... [--crops 20] [--spectra DIR] [--json FILE]
-    scripts/large_outputs.py runs/lines_1k runs/lines_10k sweeps/lines_seeds/runs/* --spectra docs/results/large_outputs
+    scripts/large_outputs.py runs/lines_1k runs/lines_10k sweeps/lines_seeds/runs/* --spectra docs/lab/results_large_outputs
 
 Run directories of sweeps are accepted as they are. Writes nothing but the spectra (into
 --spectra, refusing to replace files it did not make unless --force).

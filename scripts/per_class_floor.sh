@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# What the per-class quadrant PCF MSE can tell apart on a scene (docs/method.md, "What the
+# What the per-class quadrant PCF MSE can tell apart on a scene (docs/lab/method_measurements.md, "What the
 # per-class criterion measures"). Over seeds 1..N it evaluates two reference patterns against
 # the exemplar with `ppsynth eval`:
 #   init  - each class drawn alone by the synthesiser's initialiser (best candidate, u^2 x

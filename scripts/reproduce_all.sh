@@ -3,7 +3,7 @@
 # settings, one report per config in OUT_DIR/NAME/index.html, and prints the wall time of each
 # and the total. Full settings take hours on a CPU; pass --quick for a smoke run (~minutes).
 # Usage: scripts/reproduce_all.sh [OUT_DIR] [PPSYNTH_BINARY] [--quick] [--set key=value ...]
-# Stops at the first failing config (its previous report is kept; see docs/reproduce.md).
+# Stops at the first failing config (its previous report is kept; see docs/howto/reproduce_a_figure.md).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 out="${1:-reports}"
