@@ -23,7 +23,7 @@ double peak_resident_mib();
 // without page faults (optim/run/runtime.hpp); a run of many windows calls this at each
 // window's end, or the heap's fragments add up window after window (100,000 points of
 // lines: 608 -> 936 MiB over 25 windows; a malloc_trim at window 24 of a later run gave back
-// 213 of its 779 MiB; docs/large_outputs.md).
+// 213 of its 779 MiB; docs/lab/large_outputs.md).
 void release_freed_memory();
 
 }  // namespace ppsynth

@@ -19,7 +19,7 @@
 // rectangle's points (the Gabor method; exact counts: nothing parks, nothing is cut off);
 // "published" synthesises on the rectangle itself and keeps the method's border behaviour.
 // "pad": null or "auto" = 2 mean nearest-neighbour distances of the exemplar, or a length in
-// exemplar units (docs/large_outputs.md).
+// exemplar units (docs/lab/large_outputs.md).
 //
 // Torch-free: every method (optim/method.hpp) gets one in its SynthesisContext.
 #include <string>

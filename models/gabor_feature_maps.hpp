@@ -30,7 +30,7 @@
 // with that, so a point near x = 1 is seen by grid positions near x = 0 and the border
 // stops being a place where points lose half their influence (where they park otherwise).
 // The "gabor" rasterizer sets the flag per raster: `periodic_output` for the output's,
-// `periodic_exemplar` for the exemplar's (read as a tile); docs/method.md "Border parking".
+// `periodic_exemplar` for the exemplar's (read as a tile); docs/lab/method_measurements.md "Border parking".
 #include <torch/torch.h>
 
 #include <vector>

@@ -28,7 +28,7 @@ std::unique_ptr<Rasterizer> make(const json& p, const RasterizerArgs& a, bool sp
   o.spatial_only = spatial_only;
   // Each raster chooses on its own: periodic output maps alone remove border parking but
   // ask the torus to copy the exemplar's border fade (clumps); periodic exemplar maps too
-  // treat the exemplar as a tile, so both sides have no border (docs/method.md "Border parking").
+  // treat the exemplar as a tile, so both sides have no border (docs/lab/method_measurements.md "Border parking").
   o.periodic = get_bool(p, a.output ? "periodic_output" : "periodic_exemplar", "rasterizer");
   return std::make_unique<GaborRasterizer>(o);
 }

@@ -1,5 +1,5 @@
 #pragma once
-// "class_own" map term (not in the paper; docs/method.md "Beyond the paper"): from the second
+// "class_own" map term (not in the paper; docs/explanation/method.md "Beyond the paper"): from the second
 // class on, the paper's loss on the maps of the moving class ALONE against the exemplar's class
 // alone. The joint maps constrain a later class only through the joint pattern; this term also
 // asks for the class's own spacing. It uses a second pipeline (rasters with the class's own k,

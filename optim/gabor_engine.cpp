@@ -100,7 +100,7 @@ PointSet initial_output(const PointSet& ex, const SynthesisContext& ctx, const I
 // at the rectangle's edge instead of an empty border to fill, and the count is exact (a
 // cropped padded canvas loses 5-10 % of Tree1's points to its border). Measured, it helps
 // only exemplars like lines; on poisson, Tree1 and lemon it is worse than the crop
-// (docs/large_outputs.md, "Context borders"), which is why "clean" stays the default.
+// (docs/lab/large_outputs.md, "Context borders"), which is why "clean" stays the default.
 // The tiles are centred on the rectangle's corner (shifted by half a tile): a pad narrower
 // than half the exemplar then shows the exemplar's inside, not the seam of two copies, where
 // an exemplar whose points keep off its own border (lines) leaves an empty strip that the
@@ -483,7 +483,7 @@ bool GaborEngine::relax_this_class() const {
   if (s_.relax_parked <= 0 || relax_parked_ > s_.relax_parked) return true;
   // An earlier class parked and was relaxed: this one is relaxed too, parked or not. Its
   // sigma stages measured the unrolled grid, where its pairs with the relaxed classes
-  // across the seam were never seen (lemon_4c_v2's later classes: docs/large_outputs.md).
+  // across the seam were never seen (lemon_4c_v2's later classes: docs/lab/large_outputs.md).
   // state_.stages is the checkpoint's, so a resumed run decides as the uninterrupted one.
   return std::any_of(state_.stages.begin(), state_.stages.end(), [](const json& s) { return s.value("relaxed", false); });
 }

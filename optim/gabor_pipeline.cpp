@@ -14,7 +14,7 @@
 namespace ppsynth {
 
 // method.border_relax.iterations "auto" on the u x u square: the count issue 20's criterion was
-// measured with (docs/large_outputs.md, "Where the issue stands": lines, poisson_n64c2_point and
+// measured with (docs/lab/large_outputs.md, "Where the issue stands": lines, poisson_n64c2_point and
 // lemon_4c_v2, seeds 95-99).
 constexpr int k_auto_relax_iterations = 60;
 
@@ -65,7 +65,7 @@ json gabor_defaults() {
       // null: the finest sigma's rate). 0 iterations: the paper's border. `separation`: the
       // weight of the separation point term (optim/separation_term.hpp) in the relax stages
       // only, beside any method.terms: across the rolled seam the Gabor losses pull a class's
-      // close pairs into one point (lemon_4c_v2's class 0: docs/large_outputs.md), and the
+      // close pairs into one point (lemon_4c_v2's class 0: docs/lab/large_outputs.md), and the
       // term keeps the exemplar's spacing while the sigma stages stay the paper's. 0: off.
       // `parked`: a class is relaxed only when more of its points lie within 1 % of the
       // grid's edge (the issue's border band) than `parked` x what uniform points put there
@@ -73,12 +73,12 @@ json gabor_defaults() {
       // pairs with that class across the seam were never measured). Where no class parks
       // there is no pile to take apart, and a relax would only spread the band (it keeps the
       // band's count): poisson_n64c2_point at the full settings parks nowhere and came out
-      // thinner at the seam (docs/large_outputs.md). `after`: "all" puts the relaxes after
+      // thinner at the seam (docs/lab/large_outputs.md). `after`: "all" puts the relaxes after
       // every class's sigma stages, which then are the paper's bit for bit as on a one-class
       // exemplar: class by class in class order, its band moving, every other point of every
       // class frozen, against the targets of all classes. "class" puts each class's relax
       // right after its own sigma stages, so the later classes are synthesised beside the
-      // relaxed ones: lemon_4c_v2 scored worse so (docs/large_outputs.md). One class: the same.
+      // relaxed ones: lemon_4c_v2 scored worse so (docs/lab/large_outputs.md). One class: the same.
       // `iterations` null or "auto" (the default: issue 20's clean border, the published one
       // kept as an option): 60 on the u x u square measured as one grid without map_terms, 0 where
       // there is no fixed grid edge to relax (rectangles take output.border instead; "tiles"

@@ -13,7 +13,7 @@
 // points as one plane rectangle, its border included) or "crops" (the mean PCF MSE of 20
 // exemplar-sized crops at fixed places, other than the evaluation's: the pattern away from
 // the border, which is where the published border's parked pairs made the whole
-// rectangle's PCF a poor judge; docs/large_outputs.md).
+// rectangle's PCF a poor judge; docs/lab/large_outputs.md).
 //
 // Why: the loss of a stage keeps falling for hundreds of iterations while the points only
 // jitter around their places (the grid jitter of every iteration feeds Adam fresh noise);

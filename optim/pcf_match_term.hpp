@@ -6,7 +6,7 @@
 // Why: in the paper's multi-class scheme a later class is optimised inside the JOINT maps of
 // classes 0..k (no class channel), so nothing asks it for its own spacing; with a class of 3
 // or 6 exemplar points (lemon_4c_v2) the per-class PCF stays near the initialisation's
-// (docs/method.md "Beyond the paper"). This term asks each class for the exemplar's own PCF
+// (docs/explanation/method.md "Beyond the paper"). This term asks each class for the exemplar's own PCF
 // and, with `cross`, for the exemplar's cross-PCF to every frozen (earlier) class:
 //
 //   term = sum over curves of mean_b (g_out(r_b) - g_ex(r_b))^2

@@ -5,7 +5,7 @@
 // The exemplar is one window of a pattern that goes on past its edges; its maps fall off
 // near its border and its Gram and correlation targets include that fall-off. The paper
 // measures the u x u output's whole grid, which has a smaller share of border, and the
-// output imitates the missing fall-off by parking points on its border (docs/method.md
+// output imitates the missing fall-off by parking points on its border (docs/lab/method_measurements.md
 // "Border parking"). Here the output (a torus) is cut at a random offset into u x u tiles
 // the exemplar's size; each tile's points alone are rasterised on the exemplar's grid and
 // measured against the exemplar's targets. Every tile then has the exemplar's geometry, so

@@ -246,7 +246,11 @@ Format detect_format_of_text(const std::string& text, const std::string& source)
   return detect_format_details(text, source).format;
 }
 
-Format detect_format(const std::string& path) { return detect_format_of_text(read_file_text(path), path); }
+// Takes a name as read_points does ("shared:data/...").
+Format detect_format(const std::string& name) {
+  const std::string path = resolve_data_path(name);
+  return detect_format_of_text(read_file_text(path), path);
+}
 
 PointSet parse_points(const std::string& text, const std::string& source, const ReadOptions& opts) {
   return parse_text(text, source, opts, /*validate_too=*/false);

@@ -67,7 +67,7 @@ struct Detection {
   bool guessed = false;           // no format fits most of the first lines
 };
 Detection detect_format_details(const std::string& text, const std::string& source);
-Format detect_format(const std::string& path);
+Format detect_format(const std::string& name);  // a path or "shared:data/...", as read_points
 Format detect_format_of_text(const std::string& text, const std::string& source);
 
 }  // namespace ppsynth

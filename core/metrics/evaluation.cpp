@@ -356,7 +356,7 @@ std::string format_evaluation(const json& r) {
        << " point pairs (exact: O(n^2 m)); comparable only with estimates of the same sample sizes\n";
   if (r.contains("cross_skipped")) os << "note: " << r["cross_skipped"].get<std::string>() << "\n";
   // Why the note: on lemon_4c_v2 (classes of 3-13 points) the exemplar itself, tiled at random
-  // offsets, scores worse per class than a Poisson-disk pattern (docs/method.md, "What the
+  // offsets, scores worse per class than a Poisson-disk pattern (docs/lab/method_measurements.md, "What the
   // per-class criterion measures"); 64-point classes are judged reliably.
   if (fewest > 0 && fewest < kFewPoints)
     os << "note: with fewer than " << kFewPoints << " exemplar points, a row's pcf_mse depends on where the "

@@ -1,7 +1,7 @@
 #pragma once
 // A paper experiment as a config (configs/paper/NAME.json): `ppsynth reproduce NAME` runs it
 // and writes a report (optim/reproduce/reproduce_runner.hpp, report_writer.hpp).
-// Schema (docs/reproduce.md is the user-facing description; unknown keys are errors naming
+// Schema (docs/howto/reproduce_a_figure.md is the user-facing description; unknown keys are errors naming
 // the key path, e.g. "config key 'panels[2].methods[1]': ..."):
 //
 //   { "name", "title", "claim" (the paper's claim, one sentence), "paper_ref", "description",

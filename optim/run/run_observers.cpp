@@ -42,7 +42,7 @@ void ProgressLog::on_stage_end(const ProgressEvent& e, const PointSet&) {
   ++windows_done_here_;  // the ETA assumes the windows still to come cost what these did
   const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count();
   const int left = e.windows - e.window - 1;
-  // The peak memory so far: a window run's should stay that of one window (docs/large_outputs.md).
+  // The peak memory so far: a window run's should stay that of one window (docs/lab/large_outputs.md).
   spdlog::info("[{}] canvas: {}/{} windows done ({:.0f} %), {} in this process, ETA {}, peak {:.0f} MiB", name_, e.window + 1,
                e.windows, 100.0 * (e.window + 1) / e.windows, fmt_duration(spent), fmt_duration(spent / windows_done_here_ * left),
                peak_resident_mib());

@@ -34,7 +34,7 @@ struct GatherOptions {
   std::vector<std::string> baselines;
   // Unset: each run's metrics.json (the evaluation its run made). Set: every run's output
   // (and every reference) evaluated again against its exemplar with this protocol, e.g.
-  // crops for finished u = 2 runs measured away from their frame (docs/large_outputs.md).
+  // crops for finished u = 2 runs measured away from their frame (docs/lab/large_outputs.md).
   std::optional<PatchProtocol> protocol;
   // Stage numbers (1-based, as snapshots/stageNN.txt): each run's points after that stage
   // also make a group of their own, "<group label> @ stage N", evaluated here (with

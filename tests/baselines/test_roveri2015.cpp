@@ -328,7 +328,7 @@ TEST_CASE("roveri2015: expanding a 6x6 lattice gives a lattice", "[roveri2015]")
                           << " -> " << m.pcf_mse << ", " << stats["seconds"].get<double>() << " s");
   CHECK(std::abs(double(out.size()) - 144.0) <= 8);
   // Measured (seed 95): rho 0.09 -> 0.38, PCF MSE 0.70 -> 0.11; a perfect square lattice has
-  // rho ~0.93, so lattice defects remain (docs/roveri2015.md). The check: no near-coincident
+  // rho ~0.93, so lattice defects remain (docs/explanation/roveri2015.md). The check: no near-coincident
   // pairs are left and the spacing became regular enough to quadruple rho.
   CHECK(rho > 0.3);
   CHECK(rho > 3 * rho0);

@@ -199,6 +199,8 @@ TEST_CASE("every shipped exemplar loads with the right detected format", "[forma
     if (e.path().extension() != ".txt") continue;
     INFO(e.path());
     CHECK(detect_format(e.path().string()) == Format::GaborInt);
+    // The name a user writes ("shared:data/..."), as read_points takes it.
+    CHECK(detect_format("shared:data/exemplars/gabor-paper/" + e.path().filename().string()) == Format::GaborInt);
     const PointSet ps = read_points(e.path().string());
     CHECK(ps.size() > 0);
     for (int k = 0; k < ps.num_classes(); ++k) CHECK(ps.class_label(k) == 1000 * (k + 1));

@@ -2,7 +2,7 @@
 // `ppsynth reproduce --list` | `ppsynth reproduce --check [NAME...]`
 // Re-runs a published experiment (a figure, table or ablation of Huang et al. 2022) from its
 // config in configs/paper/ and writes a self-contained report (reports/NAME/index.html, plus
-// CSV/Markdown tables). Schema: optim/reproduce/reproduce_config.hpp, docs/reproduce.md.
+// CSV/Markdown tables). Schema: optim/reproduce/reproduce_config.hpp, docs/howto/reproduce_a_figure.md.
 #include <filesystem>
 #include <iostream>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Neighbourhood similarity of thesis Eq. 3.2 / 3.5 / A.6 and the sampling error of Eq. 3.7,
 // with analytic gradients (Appendix A.1.2; the appendix's equations are missing from the
-// text, they are re-derived in docs/roveri2015.md and checked against finite differences in
+// text, they are re-derived in docs/explanation/roveri2015.md and checked against finite differences in
 // tests/baselines/test_roveri2015.cpp).
 //
 // A neighbourhood is given by the points near its centre as RELATIVE positions: output

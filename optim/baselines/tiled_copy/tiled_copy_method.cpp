@@ -3,7 +3,7 @@
 // and attributes (radii divided by u). Locally it is the exemplar itself, so it is the floor
 // a structure-preserving method can hope for, and it shows what a metric rewards besides
 // structure: with the default random offset the copies no longer line up with the
-// evaluation's quadrant windows (docs/method.md, "What the per-class criterion measures").
+// evaluation's quadrant windows (docs/lab/method_measurements.md, "What the per-class criterion measures").
 // An offset of [0, 0] puts one copy in each quadrant (every quadrant metric is then 0).
 //
 // Rectangle outputs (core/output_shape.hpp): copies of the exemplar in exemplar units (no
