@@ -34,13 +34,8 @@ const nlohmann::json kKey = {{"method", "gabor"}, {"method_version", 1}, {"seed"
 
 }  // namespace
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  fuzz::quiet_logging();
-  return 0;
-}
-
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const std::string raw(reinterpret_cast<const char*>(data), size);
+PPSYNTH_FUZZ_TEXT_TARGET {
+  const std::string& raw = text;
   for (const std::string& bytes : {raw, mended(raw)}) {
     CheckpointFile f;
     if (!fuzz::accepts([&] { f = decode_checkpoint(bytes, "fuzz.bin"); })) continue;

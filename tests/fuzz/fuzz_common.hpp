@@ -54,3 +54,17 @@ inline void check_parsed(const PointSet& ps, Format format, const std::string& s
 }
 
 }  // namespace ppsynth::fuzz
+
+// libFuzzer's two entry points for a target that reads its input as text and needs no set-up
+// but quiet logging. Write `PPSYNTH_FUZZ_TEXT_TARGET { ... }`: the body sees `text` and
+// returns 0.
+#define PPSYNTH_FUZZ_TEXT_TARGET                                                 \
+  static int fuzz_text(const std::string& text);                                 \
+  extern "C" int LLVMFuzzerInitialize(int*, char***) {                           \
+    ppsynth::fuzz::quiet_logging();                                              \
+    return 0;                                                                    \
+  }                                                                              \
+  extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {      \
+    return fuzz_text(std::string(reinterpret_cast<const char*>(data), size));    \
+  }                                                                              \
+  static int fuzz_text(const std::string& text)

@@ -5,13 +5,7 @@
 
 using namespace ppsynth;
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  fuzz::quiet_logging();
-  return 0;
-}
-
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const std::string text(reinterpret_cast<const char*>(data), size);
+PPSYNTH_FUZZ_TEXT_TARGET {
   (void)looks_like_gabor_int(text);
   // Two names: the stem decides a single attribute column's name ("disk" -> radius).
   for (const char* source : {"fuzz.txt", "fuzz_disk.txt"}) {

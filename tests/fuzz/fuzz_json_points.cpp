@@ -5,13 +5,7 @@
 
 using namespace ppsynth;
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  fuzz::quiet_logging();
-  return 0;
-}
-
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const std::string text(reinterpret_cast<const char*>(data), size);
+PPSYNTH_FUZZ_TEXT_TARGET {
   PointSet ps;
   if (fuzz::accepts([&] { ps = parse_json_points(text, "fuzz.json"); }))
     fuzz::check_parsed(ps, Format::Json, "fuzz.json");

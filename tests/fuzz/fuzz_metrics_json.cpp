@@ -7,13 +7,7 @@
 
 using namespace ppsynth;
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  fuzz::quiet_logging();
-  return 0;
-}
-
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const std::string text(reinterpret_cast<const char*>(data), size);
+PPSYNTH_FUZZ_TEXT_TARGET {
   std::vector<std::pair<std::string, double>> v;
   if (!fuzz::accepts([&] { v = metric_values(parse_json_text(text, "metrics.json", false), "metrics.json"); })) return 0;
   for (const auto& [key, value] : v)

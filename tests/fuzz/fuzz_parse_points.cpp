@@ -5,13 +5,7 @@
 
 using namespace ppsynth;
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  fuzz::quiet_logging();
-  return 0;
-}
-
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const std::string text(reinterpret_cast<const char*>(data), size);
+PPSYNTH_FUZZ_TEXT_TARGET {
   const std::string source = "fuzz.txt";
   Format format = Format::Auto;
   if (!fuzz::accepts([&] { format = detect_format_of_text(text, source); })) return 0;

@@ -6,13 +6,7 @@
 
 using namespace ppsynth;
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  fuzz::quiet_logging();
-  return 0;
-}
-
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const std::string text(reinterpret_cast<const char*>(data), size);
+PPSYNTH_FUZZ_TEXT_TARGET {
   for (AxisScaling scaling : {AxisScaling::PerAxisMinMax, AxisScaling::Uniform}) {
     ReadOptions opts;
     opts.format = Format::PointSynthesis;

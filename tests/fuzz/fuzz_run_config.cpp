@@ -9,13 +9,7 @@
 
 using namespace ppsynth;
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  fuzz::quiet_logging();
-  return 0;
-}
-
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const std::string text(reinterpret_cast<const char*>(data), size);
+PPSYNTH_FUZZ_TEXT_TARGET {
   nlohmann::json c;
   if (!fuzz::accepts([&] {
         c = parse_json_text(text, "config.json", false);

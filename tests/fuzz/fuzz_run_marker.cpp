@@ -7,13 +7,7 @@
 
 using namespace ppsynth;
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  fuzz::quiet_logging();
-  return 0;
-}
-
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const std::string text(reinterpret_cast<const char*>(data), size);
+PPSYNTH_FUZZ_TEXT_TARGET {
   nlohmann::json m;
   if (!fuzz::accepts([&] { m = parse_run_dir_marker(text, ".ppsynth-run"); })) return 0;
   try {  // what the readers of an accepted marker take from it, unchecked

@@ -6,13 +6,7 @@
 
 using namespace ppsynth;
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  fuzz::quiet_logging();
-  return 0;
-}
-
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const std::string text(reinterpret_cast<const char*>(data), size);
+PPSYNTH_FUZZ_TEXT_TARGET {
   RunRecord r;
   if (!fuzz::accepts([&] { r = parse_run_record(parse_json_text(text, "run.json", false), "run.json"); })) return 0;
   if (r.seed > kMaxSeed || r.threads < 0 || r.threads > 1024 || !(r.total_seconds >= 0) || !r.method_stats.is_object())

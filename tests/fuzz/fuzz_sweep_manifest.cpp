@@ -9,13 +9,7 @@
 
 using namespace ppsynth;
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  fuzz::quiet_logging();
-  return 0;
-}
-
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const std::string text(reinterpret_cast<const char*>(data), size);
+PPSYNTH_FUZZ_TEXT_TARGET {
   SweepManifest m;
   if (!fuzz::accepts([&] { m = parse_sweep_manifest(parse_json_text(text, "manifest.json", false), "manifest.json"); })) return 0;
   if (!is_safe_name(m.name)) fuzz::fail("an accepted sweep name that is not a plain name");
