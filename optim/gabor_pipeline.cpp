@@ -13,9 +13,8 @@
 
 namespace ppsynth {
 
-// method.border_relax.iterations "auto" on the u x u square: the count issue 20's criterion was
-// measured with (docs/lab/large_outputs.md, "Where the issue stands": lines, poisson_n64c2_point and
-// lemon_4c_v2, seeds 95-99).
+// method.border_relax.iterations "auto" on the u x u square: the count the clean-border
+// criterion was measured with (docs/lab/large_outputs.md).
 constexpr int k_auto_relax_iterations = 60;
 
 json gabor_defaults() {
@@ -79,7 +78,7 @@ json gabor_defaults() {
       // class frozen, against the targets of all classes. "class" puts each class's relax
       // right after its own sigma stages, so the later classes are synthesised beside the
       // relaxed ones: lemon_4c_v2 scored worse so (docs/lab/large_outputs.md). One class: the same.
-      // `iterations` null or "auto" (the default: issue 20's clean border, the published one
+      // `iterations` null or "auto" (the default: the clean border, the published one
       // kept as an option): 60 on the u x u square measured as one grid without map_terms, 0 where
       // there is no fixed grid edge to relax (rectangles take output.border instead; "tiles"
       // and "rolled" move the edge). 0: the paper's border, as the shipped configs/runs set it

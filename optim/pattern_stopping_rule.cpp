@@ -1,4 +1,4 @@
-// The "pattern" stopping rule (issue 21): stop a sigma stage when its pattern stops getting
+// The "pattern" stopping rule: stop a sigma stage when its pattern stops getting
 // closer to the exemplar's, whatever the loss still does. Every `check_every` iterations it
 // measures the PCF MSE between the stage's points in play and the exemplar's points of the
 // same classes (core/metrics/pcf.hpp: radii in each set's own r_max units, so a u x u output
