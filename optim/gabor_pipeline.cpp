@@ -152,7 +152,7 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   if (s.res < 8) throw config_error("method.grid.res", "must be >= 8 (or 0 for automatic)");
   int num_sigmas = get_int(p, "num_sigmas", "method");
   s.max_iterations = get_int(p, "max_iterations", "method");
-  s.feature_net = p["feature_net"];
+  s.feature_net = with_channels_for_classes(p["feature_net"], K, "method.feature_net");
   const int full_res = s.res, full_num_sigmas = num_sigmas;  // the window margin's (below)
   if (quick) {
     s.res = std::min(s.res, get_int(p["quick"], "res", "method.quick"));

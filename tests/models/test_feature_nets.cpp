@@ -212,6 +212,24 @@ TEST_CASE("RandomFilterNet precision: float32, bfloat16 or auto, anything else r
                     Catch::Contains("method.feature_net.precision") && Catch::Contains("auto"));
 }
 
+TEST_CASE("a filter count by class count resolves for the exemplar; malformed ones are refused naming the key", "[models][net][config]") {
+  const json by_count = json{{"type", "random"}, {"channels", {{"one_class", 64}, {"several_classes", 120}}}};
+  CHECK(with_channels_for_classes(by_count, 1, "method.feature_net")["channels"] == 64);
+  CHECK(with_channels_for_classes(by_count, 2, "method.feature_net")["channels"] == 120);
+  CHECK(with_channels_for_classes(by_count, 4, "method.feature_net")["channels"] == 120);
+  const json plain = json{{"type", "random"}, {"channels", 24}};
+  CHECK(with_channels_for_classes(plain, 3, "method.feature_net") == plain);  // a number holds for every class count
+  json unknown = by_count, missing = by_count, fraction = by_count;
+  unknown["channels"]["three_classes"] = 8;
+  missing["channels"].erase("one_class");
+  fraction["channels"]["several_classes"] = 12.5;
+  CHECK_THROWS_WITH(with_channels_for_classes(unknown, 1, "method.feature_net"),
+                    Catch::Contains("method.feature_net.channels.three_classes") && Catch::Contains("unknown"));
+  CHECK_THROWS_WITH(with_channels_for_classes(missing, 2, "method.feature_net"), Catch::Contains("method.feature_net.channels.one_class"));
+  CHECK_THROWS_WITH(with_channels_for_classes(fraction, 2, "method.feature_net"),
+                    Catch::Contains("method.feature_net.channels.several_classes"));
+}
+
 TEST_CASE("Gabor rasterizer: periodic_exemplar and periodic_output reach their own raster", "[models][gabor]") {
   // A point near x = 1: a periodic raster sees it at x = 0 too, a plane raster does not.
   auto p = torch::tensor({{0.99, 0.5}}, torch::kFloat64);

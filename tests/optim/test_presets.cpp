@@ -5,8 +5,12 @@
 
 #include "core/config/config.hpp"
 #include "core/processor.hpp"
+#include "models/feature_net.hpp"
+#include "optim/gabor_pipeline.hpp"
 #include "optim/run/presets.hpp"
 #include "optim/run/run_config.hpp"
+#include "tests/support/gabor_runs.hpp"
+#include "tests/support/small_exemplar.hpp"
 
 using namespace ppsynth;
 
@@ -46,7 +50,9 @@ TEST_CASE("the fast preset by processor class: auto precision, and its float32 v
   CHECK(with_units["convergence"] == without["convergence"]);
   CHECK(with_units["grid"] == without["grid"]);
   CHECK_FALSE(with_units["feature_net"].contains("channels"));  // the paper's 120 filters where bf16 is native
-  CHECK(without["feature_net"]["channels"].get<int>() < 120);
+  // Without them, fewer float32 filters for one class; a multi-class exemplar keeps 120.
+  CHECK(with_channels_for_classes(without["feature_net"], 1, "f")["channels"].get<int>() < 120);
+  CHECK(with_channels_for_classes(without["feature_net"], 2, "f")["channels"] == 120);
   // This process takes the variant of its own processor, and run.json says which and why.
   CHECK(preset_fragment("fast") == preset_fragment("fast", cpu_isa().native_bf16));
   const json record = preset_record(resolve_run_config(json{{"preset", "fast"}}, {}));
@@ -54,6 +60,23 @@ TEST_CASE("the fast preset by processor class: auto precision, and its float32 v
   CHECK(record["variant"] == (cpu_isa().native_bf16 ? "every processor" : "without bf16 units"));
   CHECK(record["reason"].get<std::string>().find(processor_kind()) != std::string::npos);
   CHECK(preset_record(resolve_run_config(json::object(), {})).is_null());
+}
+
+TEST_CASE("the fast preset's float32 variant: 64 filters for a one-class exemplar, 120 for a multi-class one", "[optim][config][preset]") {
+  // The variant as the run resolves it (whatever this processor is), down to the settings the
+  // pipeline makes its network from.
+  json method = merge(json{{"type", "gabor"}}, preset_fragment("fast", false)["method"]);
+  method["grid"]["res"] = 32;
+  const json p = test::method_params(method);
+  OutputShape shape;
+  shape.upscale = 2;
+  CHECK(resolve_gabor_settings(p, test::small_exemplar(1, false), shape, false).feature_net["channels"] == 64);
+  CHECK(resolve_gabor_settings(p, test::small_exemplar(2, false), shape, false).feature_net["channels"] == 120);
+  // A config's own number holds for both.
+  json own = method;
+  own["feature_net"]["channels"] = 24;
+  const json q = test::method_params(own);
+  CHECK(resolve_gabor_settings(q, test::small_exemplar(2, false), shape, false).feature_net["channels"] == 24);
 }
 
 TEST_CASE("presets: unknown names and other methods are errors naming the key", "[optim][config][preset]") {
