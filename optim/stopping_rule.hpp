@@ -7,7 +7,7 @@
 //              the default (optim/loss_stopping_rule.cpp).
 //   "pattern"  watches the pattern instead of the loss: the PCF of the stage's points
 //              against the exemplar's stops improving (optim/pattern_stopping_rule.cpp;
-//              issue 21: the loss keeps falling slowly after the points have stopped
+//              the loss keeps falling slowly after the points have stopped
 //              changing what any metric sees).
 //
 // A rule is asked after every iteration. What it remembers of the stage goes into `record`,

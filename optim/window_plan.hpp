@@ -1,5 +1,5 @@
 #pragma once
-// Large outputs, window by window (issue 20). The canvas (the output, grown by the clean
+// Large outputs, window by window. The canvas (the output, grown by the clean
 // border's pad) is covered by equal square windows in raster order (rows bottom to top,
 // left to right in a row). Each window runs the paper's plan (classes one after another,
 // sigmas coarse to fine) on its own grid, so memory is one window's whatever the canvas:

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Is the square's edge special in a u x u output? (issue 20: a proposed border criterion)
+"""Is the square's edge special in a u x u output? (a proposed border criterion)
 
 The paper's u x u output is a torus: its edge is one line of it like any other. This compares
 the density near the edge (the lines x = 0 and y = 0, both sides) with the density near

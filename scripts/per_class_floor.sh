@@ -3,7 +3,7 @@
 # per-class criterion measures"). Over seeds 1..N it evaluates two reference patterns against
 # the exemplar with `ppsynth eval`:
 #   init  - each class drawn alone by the synthesiser's initialiser (best candidate, u^2 x
-#           the class's exemplar count): the baseline of issue 7's "half the initialisation"
+#           the class's exemplar count): the baseline of "half the initialisation"
 #   copy  - the exemplar tiled u x u at a seeded random torus offset (method "tiled_copy"):
 #           locally the exemplar itself, the best any structure-preserving method can do
 # and prints, per class and for all classes, the median of each and the fraction of copies

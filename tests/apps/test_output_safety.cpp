@@ -1,4 +1,4 @@
-// Nothing a user has is lost: the defects of issue 16 as a user meets them, through the real
+// Nothing a user has is lost: the defects found in review as a user meets them, through the real
 // binary. Each case names the defect it guards against.
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-// The evaluation suite on large inputs (issue 16): every metric that `ppsynth eval` runs is
+// The evaluation suite on large inputs: every metric that `ppsynth eval` runs is
 // checked against a brute-force O(N^2) reference on a few hundred random points, in the plane
 // and on the torus, so the neighbour-search versions stay numerically what they were; then
 // inputs that used to take minutes (exact Wasserstein on thousands of points, periodic

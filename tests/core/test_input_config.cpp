@@ -1,4 +1,4 @@
-// Issue 16 ("nothing lost, nothing crashes"), configs: every bad config is an InputError
+// Nothing lost, nothing crashes, configs: every bad config is an InputError
 // naming the file (and line) or the key path; never a crash, never another exception.
 #include <climits>
 #include <filesystem>

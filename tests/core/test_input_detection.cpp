@@ -1,4 +1,4 @@
-// Issue 16 ("nothing lost, nothing crashes"): format detection must keep every shipped point
+// Nothing lost, nothing crashes: format detection must keep every shipped point
 // file under ../shared/data detected and read as it was before detection became structural.
 // The expected format of each file is the one the old first-match detection chose
 // (recorded by running this test against it): the Gabor paper's exemplars are gabor, the

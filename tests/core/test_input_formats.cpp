@@ -1,4 +1,4 @@
-// Issue 16 ("nothing lost, nothing crashes"), point files: every bad input is an InputError
+// Nothing lost, nothing crashes, point files: every bad input is an InputError
 // naming the file and line (never another exception, never a silent read as another
 // format). Each case is one defect found in review; the inputs are a few lines each.
 #include <climits>

@@ -270,7 +270,7 @@ TEST_CASE("a blank cell (empty title, empty set) of a panel grid draws nothing",
   CHECK_NOTHROW(plot_panels(png.string(), {{"a", coloured}, {"", PointSet()}}, by_depth, px, 2));
 }
 
-// --- issue 16: rendering limits ----------------------------------------------------------
+// --- rendering limits --------------------------------------------------------------------
 
 TEST_CASE("disks of radius 1e30, 1e300, inf or < 0 are drawn clipped, promptly", "[render][limits]") {
   // A huge disk used to make cairo flatten an arc of 1e32 px (it never returned).

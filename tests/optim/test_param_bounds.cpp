@@ -1,5 +1,5 @@
 // Every numeric parameter of every registered part has a declared range, and every default
-// lies inside it (issue 16: "every numeric parameter range-checked where it is declared").
+// lies inside it: every numeric parameter is range-checked where it is declared.
 #include <catch2/catch.hpp>
 
 #include "core/config/param_bounds.hpp"

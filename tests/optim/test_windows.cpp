@@ -1,4 +1,4 @@
-// Outputs of any size and shape (issue 20): rectangles and point counts in exemplar units,
+// Outputs of any size and shape: rectangles and point counts in exemplar units,
 // clean borders (a padded canvas, cropped, or its pad held by the frozen exemplar), and synthesis window by window
 // (optim/window_plan.hpp): the layout tiles the canvas, a window run resumes bit for bit, the
 // pattern has no seam at the windows' meeting lines, and the grid (the memory of an
