@@ -8,7 +8,7 @@
 // best before them: the pattern, as the evaluation sees it, has stopped improving.
 // With `"end_on": "best"` the stage ends on its best checked iterate (its start included)
 // instead of its last: in the last sigma of `lines` the PCF MSE rose in 8 of 10 runs while
-// the loss still fell (docs/performance.md, "The time / quality curve"); the stage then
+// the loss still fell (docs/lab/fast_preset.md, "The time / quality curve"); the stage then
 // gives back what it lost. `"best_by"` says how the best is judged: "output" (the stage's
 // points as one plane rectangle, its border included) or "crops" (the mean PCF MSE of 20
 // exemplar-sized crops at fixed places, other than the evaluation's: the pattern away from
@@ -17,7 +17,7 @@
 //
 // Why: the loss of a stage keeps falling for hundreds of iterations while the points only
 // jitter around their places (the grid jitter of every iteration feeds Adam fresh noise);
-// the loss rule waits for that tail (docs/performance.md, "Time to quality").
+// the loss rule waits for that tail (docs/lab/fast_preset.md).
 #include <algorithm>
 #include <limits>
 
@@ -56,7 +56,7 @@ class PatternStoppingRule : public StoppingRule {
       // The best is chosen as a user sees the output: a plane rectangle, edge-corrected, as
       // the evaluation measures it. On the paper's torus, points parked on opposite borders
       // are close pairs of the torus but not of the square: chosen on the torus, Tree1's
-      // stages 3 and 4 never beat their start (docs/performance.md, "Time to quality").
+      // stages 3 and 4 never beat their start (docs/lab/fast_preset.md).
       // The record then holds pairs (as optimised, as seen); the stop watches the first.
       stride = 2;
       const double seen = best_by_crops_ ? crops_mse(points, v.zoom, now)
