@@ -10,5 +10,5 @@ venv="${1:-$here/.venv}"
 if [ ! -x "$venv/bin/python" ]; then
   /usr/bin/python3 -m venv --system-site-packages "$venv"  # Debian's interpreter, explicitly
 fi
-"$venv/bin/python" -m pip install --quiet --no-index --no-build-isolation "$here/python"
+"$venv/bin/python" -m pip install --quiet --no-index --no-build-isolation "$here"
 echo "ppsynth installed in $venv: $venv/bin/python -c 'import ppsynth; help(ppsynth)'"

@@ -63,22 +63,34 @@ def test_readme_example_runs(tmp_path):
     assert body.split('"""', 2)[2].strip() in readme
 
 
-def test_install_into_a_virtual_environment(tmp_path):
-    # What scripts/install_python.sh does after building: a venv that sees Debian's packages,
-    # pip without an index. From a copy of python/, so the checkout stays clean.
+def test_install_from_the_root_into_a_virtual_environment(tmp_path):
+    # `pip install .` from the checkout's root, as scripts/install_python.sh runs it: a venv
+    # that sees Debian's packages, pip without an index, the existing build reused. From a
+    # copy of what the root's pyproject.toml needs, so the checkout stays clean.
     import shutil
     from conftest import BINARY
-    shutil.copytree(os.path.join(SOURCE_DIR, "python"), tmp_path / "python",
-                    ignore=shutil.ignore_patterns("build", "*.egg-info", "__pycache__", "tests"))
+    root = tmp_path / "checkout"
+    (root / "python").mkdir(parents=True)
+    for f in ("pyproject.toml", "setup.py", "MANIFEST.in", "README.md"):
+        shutil.copy2(os.path.join(SOURCE_DIR, f), root / f)
+    shutil.copy2(os.path.join(SOURCE_DIR, "python", "README.md"), root / "python" / "README.md")
+    shutil.copytree(os.path.join(SOURCE_DIR, "python", "ppsynth"), root / "python" / "ppsynth",
+                    ignore=shutil.ignore_patterns("__pycache__"))
     subprocess.run(["/usr/bin/python3", "-m", "venv", "--system-site-packages", str(tmp_path / "venv")], check=True)
-    env = {**os.environ, "PPSYNTH_BUILD_DIR": os.path.dirname(BINARY)}
+    env = {**os.environ, "PPSYNTH_BUILD_DIR": os.path.dirname(BINARY), "PPSYNTH_THREADS": "1"}
     env.pop("PYTHONPATH", None)  # the venv's own copy, not the build tree's
-    p = subprocess.run([str(tmp_path / "venv" / "bin" / "python"), "-m", "pip", "install", "--quiet", "--no-index",
-                        "--no-build-isolation", str(tmp_path / "python")], capture_output=True, text=True, env=env)
+    python = str(tmp_path / "venv" / "bin" / "python")
+    p = subprocess.run([python, "-m", "pip", "install", "--quiet", "--no-index", "--no-build-isolation", "."],
+                       capture_output=True, text=True, env=env, cwd=root)
     assert p.returncode == 0, p.stderr
-    p = subprocess.run([str(tmp_path / "venv" / "bin" / "python"), "-c",
-                        "import ppsynth; print(ppsynth.__file__); print(len(ppsynth.generate('uniform', 10)))"],
+    p = subprocess.run([python, "-c", "import ppsynth; print(ppsynth.__file__); print(len(ppsynth.generate('uniform', 10)))"],
                        capture_output=True, text=True, env=env, cwd=tmp_path)
     assert p.returncode == 0, p.stderr
     where, n = p.stdout.split()
     assert where.startswith(str(tmp_path / "venv")) and n == "10"
+    # The README's example runs from the installed package.
+    pytest.importorskip("matplotlib")
+    p = subprocess.run([python, os.path.join(SOURCE_DIR, "docs", "examples", "python_quickstart.py"), str(tmp_path / "lines.png"), "--quick"],
+                       capture_output=True, text=True, env=env, cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+    assert (tmp_path / "lines.png").stat().st_size > 10000

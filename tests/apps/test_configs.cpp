@@ -105,6 +105,22 @@ TEST_CASE("every run config runs with --quick", "[apps][configs]") {
     }
 }
 
+TEST_CASE("the paper's choices where the defaults differ are pinned once, in configs/methods/gabor_published.json", "[apps][configs]") {
+  // A default that changes (the border relax became one) is then one edit, not one per config.
+  const json published = ppsynth::load_config((kConfigs / "methods" / "gabor_published.json").string());
+  CHECK(published["method"]["border_relax"]["iterations"] == 0);
+  for (auto& f : json_files(kConfigs / "runs")) {
+    INFO(f.string());
+    std::ifstream in(f);
+    const json own = json::parse(in);  // the file itself, without its parent chain
+    const bool pins = own.contains("method") && own["method"].contains("border_relax") &&
+                      own["method"]["border_relax"].contains("iterations") && own["method"]["border_relax"]["iterations"] == 0;
+    CHECK_FALSE(pins);
+  }
+  const json lines = ppsynth::resolve_run_config(ppsynth::load_config((kConfigs / "runs" / "lines.json").string()), {});
+  CHECK(lines["method"]["border_relax"]["iterations"] == 0);  // through the parent
+}
+
 TEST_CASE("every paper config (configs/paper) reproduces with --quick", "[apps][configs][reproduce]") {
   QuietLogs quiet;
   const fs::path out = ppsynth::test::scratch_dir("configs_paper");

@@ -1,5 +1,6 @@
-"""Builds the extension module with the checkout's CMake project (the build directory of
-scripts/setup.sh, or PPSYNTH_BUILD_DIR) and packs it beside the package's Python files."""
+"""Builds the extension module with this checkout's CMake project and packs it beside the
+package's Python files (python/ppsynth). An existing build directory (build/, or
+PPSYNTH_BUILD_DIR) is reused: only the module's target is brought up to date there."""
 import glob
 import os
 import shutil
@@ -9,7 +10,7 @@ from setuptools import setup
 from setuptools.command.build_py import build_py
 from setuptools.dist import Distribution
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.abspath(__file__))
 BUILD = os.environ.get("PPSYNTH_BUILD_DIR", os.path.join(ROOT, "build"))
 
 
@@ -30,4 +31,6 @@ class WithExtension(Distribution):
         return True
 
 
-setup(cmdclass={"build_py": BuildWithCMake}, distclass=WithExtension, packages=["ppsynth"])
+# setuptools' own scratch goes beside CMake's build, not into it (both default to build/).
+setup(cmdclass={"build_py": BuildWithCMake}, distclass=WithExtension,
+      options={"build": {"build_base": os.path.join(ROOT, ".setuptools-build")}})
