@@ -9,6 +9,7 @@
 
 #include "core/processor.hpp"
 #include "models/network_precision.hpp"
+#include "models/feature_net.hpp"
 #include "optim/run/presets.hpp"
 
 namespace ppsynth {
@@ -92,13 +93,20 @@ MachineReport machine_report(int floor_res, int reps) {
     const auto* net = fragment.contains("method") && fragment["method"].contains("feature_net") ? &fragment["method"]["feature_net"] : nullptr;
     return net && net->contains("precision") ? (*net)["precision"].get<std::string>() : std::string("float32");
   };
-  auto add = [&](const std::string& name, const std::string& requested) {
-    const NetworkPrecision p = resolve_network_precision(requested, "method.feature_net.precision");
-    m.presets.push_back({name, p.name, p.reason});
+  // ... and its filter count for a one-class and a multi-class exemplar.
+  auto filters_of = [](const nlohmann::json& fragment, int classes) {
+    const nlohmann::json net = fragment.contains("method") && fragment["method"].contains("feature_net")
+                                   ? with_channels_for_classes(fragment["method"]["feature_net"], classes, "method.feature_net")
+                                   : nlohmann::json::object();
+    return net.contains("channels") ? net["channels"].get<int>() : 120;  // the random network's default
   };
-  add("default", "float32");
+  auto add = [&](const std::string& name, const nlohmann::json& fragment) {
+    const NetworkPrecision p = resolve_network_precision(precision_of(fragment), "method.feature_net.precision");
+    m.presets.push_back({name, p.name, p.reason, filters_of(fragment, 1), filters_of(fragment, 2)});
+  };
+  add("default", nlohmann::json::object());
   const nlohmann::json all = presets();
-  for (auto it = all.begin(); it != all.end(); ++it) add(it.key(), precision_of(it.value()["config"]));
+  for (auto it = all.begin(); it != all.end(); ++it) add(it.key(), preset_fragment(it.key()));
   return m;
 }
 
@@ -110,7 +118,9 @@ nlohmann::json MachineReport::to_json() const {
     for (const auto& f : floors) j["conv_gflops"][f.path] = f.gflops;
     j["bf16_over_float32"] = floors[1].gflops / floors[0].gflops;
   }
-  for (const auto& p : presets) j["presets"][p.preset] = {{"precision", p.precision}, {"reason", p.reason}};
+  for (const auto& p : presets)
+    j["presets"][p.preset] = {{"precision", p.precision}, {"reason", p.reason},
+                              {"filters", {{"one_class", p.filters_one_class}, {"several_classes", p.filters_several_classes}}}};
   return j;
 }
 
@@ -132,9 +142,10 @@ std::string MachineReport::text() const {
     std::snprintf(buf, sizeof buf, " bf16 / float32 %.3g x\n", floors[1].gflops / floors[0].gflops);
     t += buf;
   }
-  t += "network precision per preset here:\n";
+  t += "network per preset here (precision, filters for one class / several):\n";
   for (const auto& p : presets) {
-    std::snprintf(buf, sizeof buf, "  %-10s %-9s %s\n", p.preset.c_str(), p.precision.c_str(), p.reason.c_str());
+    std::snprintf(buf, sizeof buf, "  %-10s %-9s %3d / %-3d %s\n", p.preset.c_str(), p.precision.c_str(), p.filters_one_class,
+                  p.filters_several_classes, p.reason.c_str());
     t += buf;
   }
   return t;

@@ -23,6 +23,7 @@ ConvThroughput conv_throughput_bfloat16(int res, int reps, const c10::Device& de
 
 struct PresetPrecision {
   std::string preset, precision, reason;
+  int filters_one_class = 120, filters_several_classes = 120;  // the random network's, here
 };
 
 struct MachineReport {

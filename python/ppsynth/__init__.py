@@ -20,11 +20,11 @@ the command's runtime settings (every core, or PPSYNTH_THREADS).
 """
 from .points import PointSet, read, write, generate, generators
 from .evaluation import evaluate
-from .synthesis import synthesize, run, resume, resolve_config, Result, RunResult, Stage, Progress
+from .synthesis import synthesize, run, resume, resolve_config, Result, Stage, Losses, Progress
 from .terms import register_loss, register_point_term, ClassStage, point_term_value_and_grad, loss_value_and_grad
 
 __all__ = [
     "PointSet", "read", "write", "generate", "generators", "evaluate",
-    "synthesize", "run", "resume", "resolve_config", "Result", "RunResult", "Stage", "Progress",
+    "synthesize", "run", "resume", "resolve_config", "Result", "Stage", "Losses", "Progress",
     "register_loss", "register_point_term", "ClassStage", "point_term_value_and_grad", "loss_value_and_grad",
 ]

@@ -30,27 +30,53 @@ def evaluate(exemplar, output, bins: int = 100, r_max: float = 0.0, periodic_pcf
              curves: bool = True, spectrum: bool = False,
              wasserstein_exact_limit: int = _native.WASSERSTEIN_EXACT_PAIRS,
              protocol: str = "auto", crops: int = 20, crop_seed: int = 1, zoom: float = 0.0) -> dict:
-    """Metrics of ``output`` against ``exemplar`` (PointSets, arrays or file names), the
-    numbers of ``ppsynth eval --json`` on the same points.
+    """Metrics of an output against its exemplar: the numbers of ``ppsynth eval --json``.
 
-    ``protocol``: ``"quadrants"`` (the paper's: the output's four quadrants are compared with
-    the exemplar), ``"crops"`` (``crops`` random exemplar-sized crops placed from
-    ``crop_seed``, for outputs of other sizes and shapes; rows then carry ``per_crop`` values
-    and ``pcf_mse_quartiles``; ``zoom``: output units per exemplar unit, the crops' scale, 0 to
-    read it from the two densities), or ``"auto"`` (quadrants for a square output holding 3-5
-    times the exemplar's points, else crops; ``"protocol"`` in the result says which). Keys:
+    Parameters
+    ----------
+    exemplar, output : PointSet, array_like of shape (N, 2), or str
+        The two patterns (or point files' names).
+    bins : int
+        PCF bins, 2..10000.
+    r_max : float
+        The PCF's range; 0 derives it from the exemplar's count.
+    periodic_pcf : bool
+        Measure the PCF on the torus.
+    curves : bool
+        Keep the PCF curves (``"pcf"``) in the result.
+    spectrum : bool
+        Add the 2-D power spectrum's summary (``"spectrum"``).
+    wasserstein_exact_limit : int
+        Pairs per region up to which the Wasserstein distance is the exact assignment.
+    protocol : str
+        ``"quadrants"`` (the paper's: the output's four quadrants against the exemplar),
+        ``"crops"`` (``crops`` random exemplar-sized crops placed from ``crop_seed``, for
+        outputs of other sizes and shapes; rows then carry ``per_crop`` values and
+        ``pcf_mse_quartiles``), or ``"auto"`` (quadrants for a square output holding 3-5
+        times the exemplar's points, else crops; ``"protocol"`` in the result says which).
+    crops, crop_seed : int
+        How many crops, and their seed.
+    zoom : float
+        Output units per exemplar unit, the crops' scale; 0 reads it from the two densities.
 
-    - ``"all"``: all classes together: ``pcf_mse``, ``wasserstein``, ``chamfer`` and ``pcf``
-      with NumPy arrays ``r`` (in r_max units), ``exemplar`` and ``output`` (mean of the
-      quadrants' curves);
-    - ``"classes"``: the same per class; ``"cross"``: the cross-PCF of every class pair;
-    - ``"exemplar"``, ``"output"``: counts, closest pair ``d_min``, mean nearest-neighbour
-      distance, ``border_fraction`` (share of points within 1 % of the shorter side of the
-      border) and ``border_fraction_uniform`` (what uniform points would give there);
-    - ``"overlap"`` (disk patterns), ``"spectrum"`` (``spectrum=True``), ``"options"``.
+    Returns
+    -------
+    dict
+        - ``"all"``: all classes together: ``pcf_mse``, ``wasserstein``, ``chamfer`` and
+          ``pcf`` with NumPy arrays ``r`` (in r_max units), ``exemplar`` and ``output``;
+        - ``"classes"``: the same per class; ``"cross"``: the cross-PCF of every class pair;
+        - ``"exemplar"``, ``"output"``: counts, closest pair ``d_min``, mean
+          nearest-neighbour distance, ``border_fraction`` (share of points within 1 % of the
+          shorter side of the border) and ``border_fraction_uniform`` (uniform points' share);
+        - ``"second_order"``: the K, L, G and F summaries with their spatstat corrections;
+        - ``"verdict"``: a studentized permutation test of equal K-functions over
+          sub-windows (docs/verdict.md);
+        - ``"overlap"`` (disk patterns), ``"spectrum"`` (``spectrum=True``), ``"options"``.
 
-    ``bins`` (2..10000) and ``r_max`` (0 derives it from the exemplar's count) set the PCF;
-    ``wasserstein_exact_limit`` bounds the exact assignment (pairs per quadrant).
+    Raises
+    ------
+    ValueError
+        Bad input or an impossible option, naming it.
     """
     ex = _as_points(exemplar, "exemplar")
     out = _as_points(output, "output")

@@ -32,6 +32,25 @@ class PointSet:
     Only ``positions`` is required; the other fields default to one class, no attributes,
     the unit square.
 
+    Attributes
+    ----------
+    positions : numpy.ndarray, shape (N, 2), float64
+        The points.
+    classes : numpy.ndarray, shape (N,), int64
+        Dense class ids 0..K-1 (default: all 0).
+    attributes : numpy.ndarray, shape (N, A), float64
+        Per-point attributes, one column per name (default: none).
+    attribute_names : sequence of str
+        The attribute columns' names; ``"radius"`` makes a disk pattern.
+    domain : (x0, y0, x1, y1)
+        The rectangle the points lie in (default: the unit square).
+    periodic : bool
+        Whether the domain is a torus.
+    class_labels : list of int
+        The labels the file gave its classes, one per class id (default: none).
+
+    Examples
+    --------
     >>> ps = PointSet(np.random.default_rng(1).random((100, 2)))
     >>> len(ps), ps.num_classes
     (100, 1)
@@ -136,14 +155,29 @@ def read(path, format: Optional[str] = None, scaling: str = "per-axis",
          attribute_names: Optional[Sequence[str]] = None) -> PointSet:
     """Reads a point file.
 
-    ``format``: None detects it, as the command does ("gabor", "point-synthesis", "plain",
-    "json"); ``.npy`` and ``.npz`` files are read by NumPy. ``scaling`` brings
-    Point-Synthesis pixel coordinates to the unit square: "per-axis" (as published) or
-    "uniform" (aspect kept). ``attribute_names`` names the attribute columns of formats whose
-    files do not. ``"shared:data/..."`` names a file of the shared data folder.
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file; ``"shared:data/..."`` names a file of the shared data folder.
+    format : str, optional
+        None detects it, as the command does ("gabor", "point-synthesis", "plain", "json");
+        ``.npy`` and ``.npz`` files are read by NumPy.
+    scaling : str
+        How Point-Synthesis pixel coordinates reach the unit square: "per-axis" (as
+        published) or "uniform" (aspect kept).
+    attribute_names : sequence of str, optional
+        Names for the attribute columns of formats whose files do not name them.
 
-    Errors name the file and line: FileNotFoundError for a missing file, ValueError for
-    everything else.
+    Returns
+    -------
+    PointSet
+
+    Raises
+    ------
+    FileNotFoundError
+        A missing file.
+    ValueError
+        Anything else, naming the file and line.
     """
     path = os.fspath(path)
     kind = _numpy_kind(path)
@@ -209,14 +243,29 @@ def _read_npy(path: str) -> PointSet:
 def write(points: PointSet, path, format: Optional[str] = None, overwrite: bool = False) -> None:
     """Writes a point file, atomically (a temporary file beside it, then renamed).
 
-    ``format``: None chooses by extension (``.json`` JSON, ``.npy``/``.npz`` NumPy, otherwise
-    this project's plain text, which reads back bit-exactly), or "gabor", "point-synthesis",
-    "plain", "json". ``.npz`` keeps everything (positions under ``"x"`` as the published code
-    reads them); ``.npy`` keeps positions, classes and attribute values (not their names).
-    An existing file is replaced only with ``overwrite=True`` (FileExistsError otherwise).
-    What :func:`read` refuses is never written: a point set that fails :meth:`PointSet.validate`
-    (a non-finite coordinate, a point outside the domain, a radius <= 0, an empty class, no
-    points) raises ValueError and leaves the file as it was.
+    Parameters
+    ----------
+    points : PointSet or array_like of shape (N, 2)
+        What to write.
+    path : str or os.PathLike
+        The file.
+    format : str, optional
+        None chooses by extension (``.json`` JSON, ``.npy``/``.npz`` NumPy, otherwise this
+        project's plain text, which reads back bit-exactly), or "gabor", "point-synthesis",
+        "plain", "json". ``.npz`` keeps everything (positions under ``"x"`` as the published
+        code reads them); ``.npy`` keeps positions, classes and attribute values (not their
+        names).
+    overwrite : bool
+        Replace an existing file.
+
+    Raises
+    ------
+    FileExistsError
+        The file exists and ``overwrite`` is False.
+    ValueError
+        What :func:`read` would refuse is never written: a point set that fails
+        :meth:`PointSet.validate` (a non-finite coordinate, a point outside the domain, a
+        radius <= 0, an empty class, no points); the file stays as it was.
     """
     path = os.fspath(path)
     points = _as_points(points, "points")
@@ -253,9 +302,27 @@ def write(points: PointSet, path, format: Optional[str] = None, overwrite: bool 
 
 def generate(name: str, n: int, seed: int = 1, domain: Sequence[float] = (0.0, 0.0, 1.0, 1.0),
              periodic: bool = False, **params) -> PointSet:
-    """N points of a classic point process, as ``ppsynth generate``: ``name`` is one of
-    :func:`generators` ("uniform", "poisson_disk", "best_candidate", "jittered_grid", ...),
-    ``params`` its parameters (defaults: ``generators()[name]``). Same arguments, same points.
+    """N points of a classic point process, as ``ppsynth generate``; same arguments, same points.
+
+    Parameters
+    ----------
+    name : str
+        One of :func:`generators`: "uniform", "poisson_disk", "best_candidate",
+        "jittered_grid", ...
+    n : int
+        How many points.
+    seed : int
+        The random seed.
+    domain : (x0, y0, x1, y1)
+        The rectangle to fill.
+    periodic : bool
+        Distances on the torus (for the processes that keep points apart).
+    **params
+        The generator's parameters (defaults: ``generators()[name]["defaults"]``).
+
+    Returns
+    -------
+    PointSet
     """
     import json
     spec = {"type": name, **params}
@@ -263,6 +330,12 @@ def generate(name: str, n: int, seed: int = 1, domain: Sequence[float] = (0.0, 0
 
 
 def generators() -> dict:
-    """Every generator with its description and default parameters."""
+    """Every generator with its description and default parameters.
+
+    Returns
+    -------
+    dict
+        name -> ``{"description": str, "defaults": dict, "bounds": dict}``.
+    """
     import json
     return json.loads(_native.defaults_json()).get("generator", {})

@@ -8,6 +8,7 @@ after writing a checkpoint, raising KeyboardInterrupt.
 """
 from __future__ import annotations
 
+import csv
 import json
 import numbers
 import os
@@ -20,24 +21,54 @@ from . import _ppsynth as _native
 from .evaluation import _arrays
 from .points import PointSet, _as_points
 
-__all__ = ["synthesize", "run", "resume", "resolve_config", "Result", "RunResult", "Stage", "Progress"]
+__all__ = ["synthesize", "run", "resume", "resolve_config", "Result", "Stage", "Losses", "Progress"]
 
 
 @dataclass(frozen=True)
 class Progress:
-    """What a ``progress`` callable receives at every iteration."""
-    stage: str            # e.g. "class 1/2, sigma 3/4"
-    stage_index: int      # 0-based over the whole run
+    """What a ``progress`` callable receives at every iteration.
+
+    Attributes
+    ----------
+    stage : str
+        The stage's name, e.g. ``"class 1/2, sigma 3/4"``.
+    stage_index : int
+        The stage, 0-based over the whole run.
+    stage_count : int
+        How many stages the run has.
+    iteration : int
+        The iteration within the stage.
+    max_iterations : int
+        The stage's cap on iterations (0: unknown).
+    loss : float
+        The loss at this iteration.
+    seconds : float
+        Seconds since the stage began.
+    """
+    stage: str
+    stage_index: int
     stage_count: int
-    iteration: int        # within the stage
-    max_iterations: int   # the stage's cap (0: unknown)
+    iteration: int
+    max_iterations: int
     loss: float
-    seconds: float        # since the stage began
+    seconds: float
 
 
 @dataclass(frozen=True)
 class Stage:
-    """One stage of a run (a class and sigma of the Gabor method)."""
+    """One stage of a run (a class and a sigma of the Gabor method).
+
+    Attributes
+    ----------
+    stage : str
+        The stage's name, as in :class:`Progress`.
+    iterations : int
+        Iterations it ran.
+    final_loss : float
+        Its loss at the end.
+    seconds : float
+        Its wall time.
+    """
     stage: str
     iterations: int
     final_loss: float
@@ -46,7 +77,21 @@ class Stage:
 
 @dataclass
 class Losses:
-    """Every iteration's loss: parallel arrays, one entry per iteration."""
+    """Every iteration's loss, as parallel arrays with one entry per iteration.
+
+    Attributes
+    ----------
+    stage_index : numpy.ndarray of int64
+        The stage of each iteration (0-based).
+    stage : list of str
+        The stage's name for each iteration.
+    iteration : numpy.ndarray of int64
+        The iteration within its stage.
+    loss : numpy.ndarray of float64
+        The loss.
+    seconds : numpy.ndarray of float64
+        Seconds since the stage began.
+    """
     stage_index: np.ndarray
     stage: List[str]
     iteration: np.ndarray
@@ -56,31 +101,50 @@ class Losses:
 
 @dataclass
 class Result:
-    """What :func:`synthesize` returns."""
-    output: PointSet              # in the unit square, with classes and attributes
-    initialization: PointSet      # the output before optimisation
+    """What :func:`synthesize`, :func:`run` and :func:`resume` return.
+
+    Attributes
+    ----------
+    output : PointSet
+        The synthesised pattern, in the unit square, with classes and attributes.
+    initialization : PointSet
+        The output before optimisation.
+    exemplar : PointSet
+        The exemplar the synthesis read.
+    stages : list of Stage
+        Each stage that ran.
+    losses : Losses
+        Every iteration's loss.
+    stats : dict
+        All the method measured: grids, sigmas, phase times, the resolved parts.
+    metrics : dict or None
+        ``evaluate(exemplar, output)`` when the config's ``"evaluate"`` is on, else None.
+    seconds : float
+        Wall time of the synthesis (for a resumed run, of the whole run).
+    threads : int
+        LibTorch's thread count: the output depends on it in the last bits.
+    processor : str
+        ``"MODEL (ISA)"``: the output depends on the instruction set too.
+    config : dict
+        The resolved config.
+    resumed : bool
+        Whether the synthesis continued from a checkpoint.
+    dir : str or None
+        The run directory (:func:`run`, :func:`resume`); None for :func:`synthesize`.
+    """
+    output: PointSet
+    initialization: PointSet
+    exemplar: PointSet
     stages: List[Stage]
     losses: Losses
-    stats: dict                   # all the method measured (grid, sigmas, phase times, ...)
-    metrics: Optional[dict]       # evaluate(exemplar, output) when config "evaluate" is on
-    seconds: float                # wall time of the synthesis
-    threads: int                  # LibTorch's thread count (results depend on it in the last bits)
-    processor: str                # "MODEL (ISA)": results depend on the instruction set too
-    config: dict                  # the resolved config
-    resumed: bool                 # continued from checkpoint_dir
-
-
-@dataclass
-class RunResult:
-    """What :func:`run` and :func:`resume` return: the run directory and what is in it."""
-    dir: str
-    exemplar: PointSet
-    initialization: PointSet
-    output: PointSet
     stats: dict
     metrics: Optional[dict]
-    config: dict
     seconds: float
+    threads: int
+    processor: str
+    config: dict
+    resumed: bool
+    dir: Optional[str] = None
 
 
 ConfigLike = Union[None, str, os.PathLike, Mapping]
@@ -98,11 +162,30 @@ def _override_strings(overrides: Overrides) -> List[str]:
 
 
 def resolve_config(config: ConfigLike = None, seed: Optional[int] = None, overrides: Overrides = None) -> dict:
-    """The config a run uses: ``config`` (None for the paper's defaults, a dict, or a JSON file
-    with its ``parent`` chain), then ``seed`` and ``overrides`` (``{"method.max_iterations":
-    50}`` or ``["method.max_iterations=50"]``, the command's ``--set``), merged with every
-    default. Unknown keys and impossible values raise ValueError naming the key path; a seed
-    is an integer in [0, 2^63) (ValueError outside it, TypeError for a float or a string)."""
+    """The config a run uses, merged with every default.
+
+    Parameters
+    ----------
+    config : None, dict, str or os.PathLike
+        None for the paper's defaults, a dict, or a JSON file (with its ``parent`` chain).
+    seed : int, optional
+        The run's seed, an integer in [0, 2^63).
+    overrides : dict or list of str, optional
+        ``{"method.max_iterations": 50}`` or ``["method.max_iterations=50"]``: the command's
+        ``--set``.
+
+    Returns
+    -------
+    dict
+        The resolved config, as ``ppsynth synthesize`` writes it into config.json.
+
+    Raises
+    ------
+    ValueError
+        An unknown key or an impossible value; the message names the key path.
+    TypeError
+        A seed that is a float or a string, or a config of another type.
+    """
     if config is None:
         c = {}
     elif isinstance(config, (str, os.PathLike)):
@@ -135,22 +218,43 @@ def _loads_or_none(text: str):
 def synthesize(exemplar=None, config: ConfigLike = None, seed: Optional[int] = None, overrides: Overrides = None,
                progress: Optional[Callable[[Progress], object]] = None, checkpoint_dir=None, quick: bool = False,
                initialization=None, threads: int = 0) -> Result:
-    """Synthesises a larger pattern from ``exemplar``, in memory.
-
-    ``exemplar``: a PointSet, an (N, 2) array or a file name; None takes the config's
-    ``"exemplar"``. ``config``, ``seed``, ``overrides``: as :func:`resolve_config` (None: the
-    paper's method with the published settings, seed 95, u = 2, i.e. 4x the points).
-    ``progress(p: Progress)`` is called at every iteration; an exception it raises stops the
-    run (after its checkpoint) and is raised here. ``checkpoint_dir``: where the checkpoint of
-    this synthesis is kept (every stage and every ``checkpoint_seconds``); after an
-    interruption (Ctrl-C raises KeyboardInterrupt at the end of the iteration) the same call
-    continues from it and returns what an uninterrupted run returns; a finished run removes
-    it. ``quick``: tiny grids and few iterations (tests). ``initialization``: an explicit
-    initial output. ``threads``: LibTorch's thread count (0: every core or PPSYNTH_THREADS).
+    """Synthesises a larger pattern from an exemplar, in memory.
 
     The same config, seed and thread count give the same output as ``ppsynth synthesize``.
-    Bad input raises ValueError (FileNotFoundError for a missing file) with the command's
-    message.
+
+    Parameters
+    ----------
+    exemplar : PointSet, array_like of shape (N, 2), str or None
+        The exemplar, or a point file's name; None takes the config's ``"exemplar"``.
+    config, seed, overrides
+        As :func:`resolve_config`. None: the paper's method with the published settings,
+        seed 95, u = 2 (4 x the exemplar's points).
+    progress : callable, optional
+        ``progress(p: Progress)``, called at every iteration. An exception it raises stops
+        the run (after its checkpoint) and is raised here.
+    checkpoint_dir : str or os.PathLike, optional
+        Where this synthesis keeps its checkpoint (at every stage and every
+        ``checkpoint_seconds``). After an interruption the same call continues from it and
+        returns what an uninterrupted run returns; a finished run removes it. A directory
+        holding files this synthesis did not write is refused.
+    quick : bool
+        Tiny grids and few iterations (tests).
+    initialization : PointSet or array_like, optional
+        An explicit initial output.
+    threads : int
+        LibTorch's thread count; 0: every core, or ``PPSYNTH_THREADS``.
+
+    Returns
+    -------
+    Result
+        With ``dir`` None.
+
+    Raises
+    ------
+    ValueError
+        Bad input, with the command's message (``FileNotFoundError`` for a missing file).
+    KeyboardInterrupt
+        Ctrl-C: the run stops at the end of the current iteration, after its checkpoint.
     """
     spec = resolve_config(config, seed, overrides)
     if exemplar is None:
@@ -160,37 +264,105 @@ def synthesize(exemplar=None, config: ConfigLike = None, seed: Optional[int] = N
     init = None if initialization is None else _as_points(initialization, "initialization")._to_native()
     r = _native.synthesize(ex._to_native(), json.dumps(spec), bool(quick), init, _progress_hook(progress),
                            "" if checkpoint_dir is None else os.fspath(checkpoint_dir), int(threads))
-    rows = r["losses"]
-    losses = Losses(np.array([x[0] for x in rows], dtype=np.int64), [x[1] for x in rows],
-                    np.array([x[2] for x in rows], dtype=np.int64), np.array([x[3] for x in rows], dtype=np.float64),
-                    np.array([x[4] for x in rows], dtype=np.float64))
-    return Result(PointSet._from_native(r["output"]), PointSet._from_native(r["initialization"]),
-                  [Stage(**s) for s in r["stages"]], losses, json.loads(r["stats_json"]),
+    return Result(PointSet._from_native(r["output"]), PointSet._from_native(r["initialization"]), ex,
+                  [Stage(**st) for st in r["stages"]], _losses(r["losses"]), json.loads(r["stats_json"]),
                   _loads_or_none(r["metrics_json"]), r["seconds"], r["threads"], r["processor"], spec, r["resumed"])
 
 
-def _run_result(r: dict) -> RunResult:
-    return RunResult(r["dir"], PointSet._from_native(r["exemplar"]), PointSet._from_native(r["initialization"]),
-                     PointSet._from_native(r["output"]), json.loads(r["stats_json"]),
-                     _loads_or_none(r["metrics_json"]), json.loads(r["config_json"]), r["seconds"])
+def _losses(rows) -> Losses:
+    return Losses(np.array([x[0] for x in rows], dtype=np.int64), [x[1] for x in rows],
+                  np.array([x[2] for x in rows], dtype=np.int64), np.array([x[3] for x in rows], dtype=np.float64),
+                  np.array([x[4] for x in rows], dtype=np.float64))
+
+
+def _losses_of_run(run_dir: str) -> Losses:
+    """The run directory's loss.csv (a method without per-iteration losses has none)."""
+    path = os.path.join(run_dir, "loss.csv")
+    rows = []
+    if os.path.exists(path):
+        with open(path, newline="") as f:
+            for rec in csv.DictReader(f):
+                rows.append((int(rec["stage_index"]), rec["stage"], int(rec["iteration"]), float(rec["loss"]),
+                             float(rec["seconds"])))
+    return _losses(rows)
+
+
+def _run_result(r: dict, resumed: bool) -> Result:
+    """A run directory's Result: what the native call returned, and its run.json and loss.csv."""
+    stats = json.loads(r["stats_json"])
+    with open(os.path.join(r["dir"], "run.json")) as f:
+        record = json.load(f)
+    stages = [Stage(st["stage"], int(st["iterations"]), float(st["final_loss"]), float(st["seconds"]))
+              for st in stats.get("stages", [])]
+    return Result(PointSet._from_native(r["output"]), PointSet._from_native(r["initialization"]),
+                  PointSet._from_native(r["exemplar"]), stages, _losses_of_run(r["dir"]), stats,
+                  _loads_or_none(r["metrics_json"]), r["seconds"], int(record.get("threads", 0)),
+                  str(record.get("processor", "")), json.loads(r["config_json"]), resumed, r["dir"])
 
 
 def run(config: ConfigLike, out_dir, seed: Optional[int] = None, overrides: Overrides = None, quick: bool = False,
-        force: bool = False, progress: Optional[Callable[[Progress], object]] = None, threads: int = 0) -> RunResult:
-    """Runs a synthesis into the run directory ``out_dir``, as ``ppsynth synthesize CONFIG -o
-    OUT_DIR``: the same files (output points, plots, snapshots, loss curve, config.json,
-    run.json, metrics). ``out_dir`` must be new or empty, or hold a ppsynth run and
-    ``force=True``. Ctrl-C stops it with a checkpoint in ``out_dir``: :func:`resume` continues.
+        force: bool = False, progress: Optional[Callable[[Progress], object]] = None, threads: int = 0) -> Result:
+    """Runs a synthesis into a run directory, as ``ppsynth synthesize CONFIG -o OUT_DIR``.
+
+    The directory gets the command's files: output points, plots, snapshots, loss curve,
+    config.json, run.json and metrics.
+
+    Parameters
+    ----------
+    config, seed, overrides
+        As :func:`resolve_config`; the config names its exemplar.
+    out_dir : str or os.PathLike
+        The run directory: new or empty, or holding a ppsynth run and ``force=True``.
+    quick : bool
+        Tiny grids and few iterations (tests).
+    force : bool
+        Replace the run that ``out_dir`` holds (never anything else).
+    progress : callable, optional
+        As in :func:`synthesize`.
+    threads : int
+        As in :func:`synthesize`.
+
+    Returns
+    -------
+    Result
+        With ``dir`` the run directory.
+
+    Raises
+    ------
+    ValueError
+        Bad input, or an ``out_dir`` that holds something else.
+    KeyboardInterrupt
+        Ctrl-C: the run stops with a checkpoint in ``out_dir``; :func:`resume` continues it.
     """
     spec = resolve_config(config, seed, overrides)
     return _run_result(_native.run(json.dumps(spec), os.fspath(out_dir), bool(quick), bool(force),
-                                   _progress_hook(progress), int(threads)))
+                                   _progress_hook(progress), int(threads)), False)
 
 
-def resume(run_dir, progress: Optional[Callable[[Progress], object]] = None, threads: int = 0) -> RunResult:
-    """Continues the interrupted run in ``run_dir`` from its checkpoint, as ``ppsynth
-    synthesize --resume``; the outputs equal those of the run never interrupted (same thread
-    count: ``threads`` as the run had, see its run.json). ``progress`` as in
-    :func:`synthesize`; Ctrl-C stops it again with a new checkpoint. A directory without a
-    checkpoint (finished, or stopped before its first) raises ValueError."""
-    return _run_result(_native.resume(os.fspath(run_dir), _progress_hook(progress), int(threads)))
+def resume(run_dir, progress: Optional[Callable[[Progress], object]] = None, threads: int = 0) -> Result:
+    """Continues an interrupted run from its checkpoint, as ``ppsynth synthesize --resume``.
+
+    The outputs equal those of the run never interrupted, given the same thread count as the
+    run had (its run.json says which).
+
+    Parameters
+    ----------
+    run_dir : str or os.PathLike
+        The interrupted run's directory.
+    progress : callable, optional
+        As in :func:`synthesize`; Ctrl-C stops it again with a new checkpoint.
+    threads : int
+        As in :func:`synthesize`.
+
+    Returns
+    -------
+    Result
+        With ``dir`` the run directory and ``resumed`` True.
+
+    Raises
+    ------
+    ValueError
+        A directory without a checkpoint (finished, or stopped before its first), or one whose
+        checkpoint fails its checks.
+    """
+    return _run_result(_native.resume(os.fspath(run_dir), _progress_hook(progress), int(threads)), True)

@@ -43,12 +43,26 @@ def _torch():
 
 @dataclass
 class ClassStage:
-    """The class stage a point term is evaluated in."""
+    """The class stage a point term is evaluated in.
+
+    Attributes
+    ----------
+    exemplar : PointSet
+        The exemplar.
+    output : PointSet
+        Every point of the output, positions as the stage starts.
+    moving : numpy.ndarray of int
+        Indices into ``output`` of the points that move (one class).
+    frozen : numpy.ndarray of int
+        Indices of the frozen ones.
+    upscale : int
+        u: the output has u^2 times the exemplar's points.
+    """
     exemplar: PointSet
-    output: PointSet          # every point, positions as the stage starts
-    moving: np.ndarray        # indices into output of the moving points (one class)
-    frozen: np.ndarray        # indices of the frozen ones
-    upscale: int              # u: the output has u^2 times the exemplar's points
+    output: PointSet
+    moving: np.ndarray
+    frozen: np.ndarray
+    upscale: int
 
 
 def _scalar(torch, v, kind: str, name: str):
@@ -122,10 +136,30 @@ def _register(native_register, make_glue, name: str, fn: Optional[Callable], def
 
 
 def register_loss(name: str, fn: Optional[Callable] = None, *, defaults: Optional[dict] = None, description: str = ""):
-    """Registers ``fn(output, target, params) -> scalar tensor`` as the feature loss ``name``.
+    """Registers a feature loss written with torch under a config name.
 
-    Every loss takes ``weight`` (default 1) and ``layers`` (default [0, 1, 2]); ``defaults``
-    adds or changes parameters. Usable as a decorator::
+    Parameters
+    ----------
+    name : str
+        The name a config's ``method.losses[i].type`` uses.
+    fn : callable, optional
+        ``fn(output, target, params) -> scalar tensor``: ``output`` and ``target`` are lists
+        of the chosen layers' features (1 x C x H x W tensors), ``params`` the resolved
+        parameters. Omitted: returns a decorator.
+    defaults : dict, optional
+        Parameters beyond the ones every loss takes, ``weight`` (default 1) and ``layers``
+        (default [0, 1, 2]), or new defaults for those.
+    description : str
+        One line for ``ppsynth config --defaults``.
+
+    Returns
+    -------
+    callable
+        ``fn``, or the decorator.
+
+    Examples
+    --------
+    Usable as a decorator::
 
         @ppsynth.register_loss("mean_match", defaults={"layers": [2]})
         def mean_match(output, target, params):
@@ -136,8 +170,29 @@ def register_loss(name: str, fn: Optional[Callable] = None, *, defaults: Optiona
 
 def register_point_term(name: str, fn: Optional[Callable] = None, *, defaults: Optional[dict] = None,
                         description: str = ""):
-    """Registers ``fn(moving, frozen, params, stage) -> scalar tensor`` as the point term
-    ``name`` (``weight`` defaults to 0: off until a config sets it). Usable as a decorator::
+    """Registers a point term written with torch under a config name.
+
+    Parameters
+    ----------
+    name : str
+        The name a config's ``method.terms`` uses.
+    fn : callable, optional
+        ``fn(moving, frozen, params, stage) -> scalar tensor``: ``moving`` (n, 2) and
+        ``frozen`` (m, 2) positions, the resolved ``params``, the :class:`ClassStage`.
+        Omitted: returns a decorator.
+    defaults : dict, optional
+        Its parameters; ``weight`` defaults to 0, so the term is off until a config sets it.
+    description : str
+        One line for ``ppsynth config --defaults``.
+
+    Returns
+    -------
+    callable
+        ``fn``, or the decorator.
+
+    Examples
+    --------
+    Usable as a decorator::
 
         @ppsynth.register_point_term("repulsion", defaults={"h": 0.02})
         def repulsion(moving, frozen, params, stage):
@@ -148,9 +203,28 @@ def register_point_term(name: str, fn: Optional[Callable] = None, *, defaults: O
 
 
 def point_term_value_and_grad(name: str, moving, frozen=None, stage: Optional[ClassStage] = None, **params):
-    """The value of point term ``name`` (compiled or Python) at ``moving`` (n, 2) and its
-    gradient (n, 2), through the path a synthesis takes. For checking a term, e.g. against
-    finite differences. ``stage`` defaults to one class of exemplar ``moving`` at u = 1."""
+    """A point term's value and gradient, through the path a synthesis takes.
+
+    For checking a term (compiled or Python), e.g. against finite differences.
+
+    Parameters
+    ----------
+    name : str
+        The term's registered name.
+    moving : array_like, shape (n, 2)
+        The moving points.
+    frozen : array_like, shape (m, 2), optional
+        The frozen points.
+    stage : ClassStage, optional
+        Default: one class, whose exemplar is ``moving`` itself, at u = 1.
+    **params
+        The term's parameters.
+
+    Returns
+    -------
+    value : float
+    gradient : numpy.ndarray, shape (n, 2)
+    """
     torch = _torch()
     to_dlpack = torch.utils.dlpack.to_dlpack
     moving = np.ascontiguousarray(moving, dtype=np.float64)
@@ -167,9 +241,23 @@ def point_term_value_and_grad(name: str, moving, frozen=None, stage: Optional[Cl
 
 
 def loss_value_and_grad(name: str, output, target, **params):
-    """The value of feature loss ``name`` (compiled or Python) for the layers ``output``
-    against ``target`` (lists of arrays or tensors, 1 x C x H x W) and its gradient for each
-    output layer, through the path a synthesis takes."""
+    """A feature loss's value and gradient, through the path a synthesis takes.
+
+    Parameters
+    ----------
+    name : str
+        The loss's registered name (compiled or Python).
+    output, target : list of array_like or torch.Tensor
+        One 1 x C x H x W array per layer.
+    **params
+        The loss's parameters.
+
+    Returns
+    -------
+    value : float
+    gradients : list of numpy.ndarray or None
+        The gradient for each output layer (None for a layer the loss does not read).
+    """
     torch = _torch()
     to_dlpack = torch.utils.dlpack.to_dlpack
     caps = [to_dlpack(torch.as_tensor(np.asarray(o)).contiguous().clone()) for o in output]

@@ -47,6 +47,18 @@ def test_help_documents_the_api():
               ppsynth.register_point_term, ppsynth.run, ppsynth.resume, ppsynth.generate):
         assert f.__doc__ and len(f.__doc__) > 200, f.__name__
     assert "checkpoint_dir" in ppsynth.synthesize.__doc__ and "KeyboardInterrupt" in ppsynth.synthesize.__doc__
+    # numpydoc: help() shows each parameter, what comes back and each field.
+    import re
+    for f in (ppsynth.synthesize, ppsynth.run, ppsynth.resume, ppsynth.resolve_config, ppsynth.read, ppsynth.write,
+              ppsynth.generate, ppsynth.evaluate, ppsynth.register_loss, ppsynth.register_point_term,
+              ppsynth.point_term_value_and_grad, ppsynth.loss_value_and_grad):
+        assert re.search(r"\n\s*Parameters\n\s*----------\n", f.__doc__), f.__name__
+    for f in (ppsynth.synthesize, ppsynth.run, ppsynth.resume, ppsynth.read, ppsynth.generate, ppsynth.evaluate):
+        assert re.search(r"\n\s*Returns\n\s*-------\n", f.__doc__), f.__name__
+    for c in (ppsynth.Result, ppsynth.Stage, ppsynth.Losses, ppsynth.Progress, ppsynth.PointSet, ppsynth.ClassStage):
+        assert re.search(r"\n\s*Attributes\n\s*----------\n", c.__doc__), c.__name__
+        for name in c.__dataclass_fields__:
+            assert re.search(rf"\n\s*{name} : ", c.__doc__), f"{c.__name__}.{name}"
 
 
 def test_readme_example_runs(tmp_path):

@@ -26,6 +26,11 @@ def test_run_equals_the_command_file_for_file(tmp_path):
     command("synthesize", tmp_path / "tiny.json", "--quick", "-o", tmp_path / "cmd")
     r = ppsynth.run(tmp_path / "tiny.json", tmp_path / "py", quick=True, threads=1)
     assert r.dir == str(tmp_path / "py")
+    # One result type: a run directory's Result says what synthesize()'s says.
+    assert isinstance(r, ppsynth.Result) and not r.resumed and r.threads == 1
+    assert r.stages and len(r.losses.loss) == sum(s.iterations for s in r.stages)
+    assert len(r.exemplar) > 0 and len(r.output) == 4 * len(r.exemplar)
+    assert r.processor == json.loads((tmp_path / "py" / "run.json").read_text())["processor"]
     names = files_of(tmp_path / "cmd")
     assert names == files_of(tmp_path / "py")
     # Wall times (run.json, the loss CSV's last column) and the writer's pid and clock in the
