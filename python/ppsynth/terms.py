@@ -183,16 +183,16 @@ def register_point_term(name: str, fn: Optional[Callable] = None, *, defaults: O
     defaults : dict, optional
         Its parameters; ``weight`` defaults to 0, so the term is off until a config sets it.
     description : str
-        One line for ``ppsynth config --defaults``.
+        As in :func:`register_loss`.
 
     Returns
     -------
     callable
-        ``fn``, or the decorator.
+        As :func:`register_loss` returns.
 
     Examples
     --------
-    Usable as a decorator::
+    ::
 
         @ppsynth.register_point_term("repulsion", defaults={"h": 0.02})
         def repulsion(moving, frozen, params, stage):
