@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "core/config/config.hpp"
 #include "core/processor.hpp"
 #include "models/network_precision.hpp"
 #include "models/feature_net.hpp"
@@ -88,21 +89,20 @@ MachineReport machine_report(int floor_res, int reps) {
     m.floor_res = floor_res;
     m.floors = {conv_throughput_float32(floor_res, reps), conv_throughput_bfloat16(floor_res, reps)};
   }
-  // The precision a run takes here: the network's default, then each preset's.
-  auto precision_of = [](const nlohmann::json& fragment) {
-    const auto* net = fragment.contains("method") && fragment["method"].contains("feature_net") ? &fragment["method"]["feature_net"] : nullptr;
-    return net && net->contains("precision") ? (*net)["precision"].get<std::string>() : std::string("float32");
+  // The network a run takes here (the default's, then each preset's): the preset's fragment
+  // over the "random" network's registered defaults, so no default is restated here.
+  auto network_of = [](const nlohmann::json& fragment) {
+    nlohmann::json net = FeatureNetRegistry::instance().entry("random").defaults;
+    if (fragment.contains("method") && fragment["method"].contains("feature_net")) net = merge(net, fragment["method"]["feature_net"]);
+    return net;
   };
-  // ... and its filter count for a one-class and a multi-class exemplar.
-  auto filters_of = [](const nlohmann::json& fragment, int classes) {
-    const nlohmann::json net = fragment.contains("method") && fragment["method"].contains("feature_net")
-                                   ? with_channels_for_classes(fragment["method"]["feature_net"], classes, "method.feature_net")
-                                   : nlohmann::json::object();
-    return net.contains("channels") ? net["channels"].get<int>() : 120;  // the random network's default
+  auto filters_of = [](const nlohmann::json& net, int classes) {
+    return with_channels_for_classes(net, classes, "method.feature_net")["channels"].get<int>();
   };
   auto add = [&](const std::string& name, const nlohmann::json& fragment) {
-    const NetworkPrecision p = resolve_network_precision(precision_of(fragment), "method.feature_net.precision");
-    m.presets.push_back({name, p.name, p.reason, filters_of(fragment, 1), filters_of(fragment, 2)});
+    const nlohmann::json net = network_of(fragment);
+    const NetworkPrecision p = resolve_network_precision(net["precision"].get<std::string>(), "method.feature_net.precision");
+    m.presets.push_back({name, p.name, p.reason, filters_of(net, 1), filters_of(net, 2)});
   };
   add("default", nlohmann::json::object());
   const nlohmann::json all = presets();

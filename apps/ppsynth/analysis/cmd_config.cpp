@@ -11,12 +11,17 @@
 
 namespace {
 
+// `app`'s subcommands by name, so that the page's order does not follow registration order.
+std::vector<CLI::App*> sorted_subcommands(CLI::App* app) {
+  std::vector<CLI::App*> subs = app->get_subcommands([](CLI::App*) { return true; });
+  std::sort(subs.begin(), subs.end(), [](CLI::App* a, CLI::App* b) { return a->get_name() < b->get_name(); });
+  return subs;
+}
+
 // The help of `sub` and of its own subcommands, each in a code block under its full name.
 void command_help(CLI::App* sub, const std::string& name, std::ostream& out) {
   out << "### `ppsynth " << name << "`\n\n```text\n" << sub->help() << "```\n\n";
-  std::vector<CLI::App*> subs = sub->get_subcommands([](CLI::App*) { return true; });
-  std::sort(subs.begin(), subs.end(), [](CLI::App* a, CLI::App* b) { return a->get_name() < b->get_name(); });
-  for (CLI::App* s : subs) command_help(s, name + " " + s->get_name(), out);
+  for (CLI::App* s : sorted_subcommands(sub)) command_help(s, name + " " + s->get_name(), out);
 }
 
 void reference_markdown(CLI::App* root, std::ostream& out) {
@@ -26,9 +31,7 @@ void reference_markdown(CLI::App* root, std::ostream& out) {
       << "command's own option declarations and its registries; do not edit it by hand (a test\n"
       << "fails when it differs from what the command prints). What the pieces mean:\n"
       << "[reference.md](reference.md).\n\n## Commands\n\n";
-  std::vector<CLI::App*> subs = root->get_subcommands([](CLI::App*) { return true; });
-  std::sort(subs.begin(), subs.end(), [](CLI::App* a, CLI::App* b) { return a->get_name() < b->get_name(); });
-  for (CLI::App* s : subs) command_help(s, s->get_name(), out);
+  for (CLI::App* s : sorted_subcommands(root)) command_help(s, s->get_name(), out);
   out << "## Config keys\n\n"
       << "Per kind, each registered part with its keys, defaults and bounds (`[a, b]` closed, `(a, b)`\n"
       << "open; `int` a whole number). A config's top-level keys are the `run` kind's; the method's\n"
