@@ -19,7 +19,7 @@ PACKAGES=(
   clang-14 libclang-rt-14-dev  # libFuzzer and the sanitizer runtimes (scripts/fuzz.sh)
   llvm-14                 # llvm-symbolizer: file:line in sanitizer reports
   munge slurmctld slurmd slurm-client  # a single-node SLURM cluster for the sweep tests (scripts/slurm_cluster.sh)
-  python3-dev python3-pybind11 python3-numpy  # the Python package (python/)
+  python3-dev python3-pybind11 pybind11-json-dev python3-numpy  # the Python package (python/)
   python3-torch           # loss terms written in Python (the same LibTorch build as libtorch-dev)
   python3-pytest python3-matplotlib python3-venv python3-pip python3-setuptools python3-wheel  # its tests, example, install
   # R's spatstat: the field's reference for K, L, g and mark correlation (tests/core

@@ -160,12 +160,18 @@ void set_override(json& config, const std::string& assignment) {
       throw config_error(key, "--set value: " + flaw->message);
     if (!failure.empty()) throw config_error(key, "--set value: " + failure);
   }
+  if (key.empty() || key.front() == '.' || key.back() == '.' || key.find("..") != std::string::npos)
+    throw InputError("--set '" + assignment + "': empty key component");
+  set_at_key_path(config, key, std::move(value));
+}
+
+void set_at_key_path(json& config, const std::string& key, json value) {
   json* node = &config;
   size_t start = 0;
   while (true) {
     size_t dot = key.find('.', start);
     std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-    if (part.empty()) throw InputError("--set '" + assignment + "': empty key component");
+    if (part.empty()) throw InputError("key path '" + key + "': empty key component");
     const bool last = dot == std::string::npos;
     if (node->is_array()) {
       size_t idx = 0;
@@ -182,7 +188,7 @@ void set_override(json& config, const std::string& assignment) {
       node = &(*node)[part];
     }
     if (last) {
-      *node = value;
+      *node = std::move(value);
       return;
     }
     start = dot + 1;

@@ -35,6 +35,9 @@ json apply_defaults(const json& defaults, const json& user, const std::string& k
 // ("3", "true", "[0,1]"), else taken as a string. Array elements: "losses.1.weight=2". A JSON
 // value goes through the checks of a config file (nesting depth, numbers beyond double).
 void set_override(json& config, const std::string& assignment);
+// Sets the value at a dotted key path ("method.max_iterations", "losses.1.weight"), creating
+// objects on the way as set_override does; the path's flaws are InputErrors naming it.
+void set_at_key_path(json& config, const std::string& key, json value);
 
 // Typed getters that name the key on error. get_int refuses a fraction and a value outside
 // the int range, naming the range.

@@ -12,7 +12,7 @@ def report(p):  # called at every iteration
 exemplar = ppsynth.read("shared:data/exemplars/gabor-paper/lines.txt")
 result = ppsynth.synthesize(exemplar, seed=95, progress=report, quick="--quick" in sys.argv)
 print(f"{len(exemplar)} -> {len(result.output)} points in {result.seconds:.0f} s, "
-      f"PCF MSE {result.metrics['all']['pcf_mse']:.3g}")
+      f"PCF MSE {result.metrics.all.pcf_mse:.3g}")
 fig, axes = plt.subplots(1, 2, figsize=(8, 4))
 for ax, ps, title in zip(axes, (exemplar, result.output), ("exemplar", "output")):
     ax.scatter(*ps.positions.T, s=6), ax.set_title(title), ax.set_aspect("equal")

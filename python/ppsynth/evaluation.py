@@ -1,35 +1,168 @@
 """The evaluation suite of ``ppsynth eval``: an output against its exemplar."""
 from __future__ import annotations
 
-import json
+import keyword
+import math
+from typing import Any, Dict
 
 import numpy as np
 
 from . import _ppsynth as _native
 from .points import PointSet, _as_points
 
-__all__ = ["evaluate"]
+__all__ = ["evaluate", "Evaluation", "Record"]
 
 
-def _arrays(node):
-    """Lists of numbers under "pcf" and "spectrum" become NumPy arrays."""
-    if isinstance(node, dict):
-        out = {}
-        for k, v in node.items():
-            if k in ("pcf", "spectrum") and isinstance(v, dict):
-                out[k] = {kk: np.asarray(vv, dtype=np.float64) if isinstance(vv, list) else vv for kk, vv in v.items()}
-            else:
-                out[k] = _arrays(v)
-        return out
-    if isinstance(node, list):
-        return [_arrays(v) for v in node]
-    return node
+def _is_number(v) -> bool:
+    return v is None or (isinstance(v, (int, float)) and not isinstance(v, bool))
+
+
+def _numeric_array(values: list):
+    """A list of numbers (None for an undefined value) or of such lists as one array, else None."""
+    if not values:
+        return None
+    if all(_is_number(v) for v in values):
+        if all(isinstance(v, int) for v in values):
+            return np.asarray(values, dtype=np.int64)
+        return np.asarray([math.nan if v is None else v for v in values], dtype=np.float64)
+    if all(isinstance(v, list) for v in values):
+        rows = [_numeric_array(v) for v in values]
+        if all(r is not None and r.shape == rows[0].shape for r in rows):
+            return np.stack(rows)
+    return None
+
+
+def _attribute(key: str) -> str:
+    """The attribute for a JSON key: a Python keyword gets a trailing underscore (``class_``)."""
+    return key + "_" if keyword.iskeyword(key) else key
+
+
+def _wrap(v):
+    if isinstance(v, dict):
+        return Record(v)
+    if isinstance(v, list):
+        a = _numeric_array(v)
+        return a if a is not None else [_wrap(x) for x in v]
+    return v
+
+
+def _unwrap(v):
+    if isinstance(v, Record):
+        return v.to_dict()
+    if isinstance(v, np.ndarray):
+        if v.dtype.kind == "f":
+            return [_unwrap(x) for x in v] if v.ndim > 1 else [None if math.isnan(x) else float(x) for x in v]
+        return v.tolist()
+    if isinstance(v, list):
+        return [_unwrap(x) for x in v]
+    return v
+
+
+class Record:
+    """A read-only node of a result: its keys as attributes, its lists of numbers as NumPy arrays.
+
+    A key that is a Python keyword is read with a trailing underscore (``row.pass_``,
+    ``measures.class_``); ``to_dict()`` gives the plain nested dict back, with the original keys
+    and lists (an undefined value, NaN in an array, as None), as ``ppsynth eval --json`` prints it.
+    """
+
+    __slots__ = ("_keys", "_values")
+
+    def __init__(self, data: Dict[str, Any]):
+        object.__setattr__(self, "_keys", list(data.keys()))
+        object.__setattr__(self, "_values", {_attribute(k): _wrap(v) for k, v in data.items()})
+
+    def __getattr__(self, name: str):
+        if name.startswith("__") or name in Record.__slots__:  # copy, pickle: before __init__
+            raise AttributeError(name)
+        try:
+            return self._values[name]
+        except KeyError:
+            raise AttributeError(f"{type(self).__name__} has no '{name}' (it has: {', '.join(self._values)})") from None
+
+    def __setattr__(self, name, value):
+        raise AttributeError(f"{type(self).__name__} is read-only")
+
+    def __dir__(self):
+        return list(self._values)
+
+    def __contains__(self, name: str) -> bool:
+        return _attribute(name) in self._values
+
+    def __reduce__(self):
+        return (type(self), (self.to_dict(),))
+
+    def __eq__(self, other) -> bool:
+        return isinstance(other, Record) and self.to_dict() == other.to_dict()
+
+    def __repr__(self) -> str:
+        def short(v):
+            if isinstance(v, np.ndarray):
+                return f"array{v.shape}"
+            if isinstance(v, Record):
+                return f"{type(v).__name__}(...)"
+            if isinstance(v, list):
+                return f"[{len(v)} items]"
+            return repr(v)
+        return f"{type(self).__name__}(" + ", ".join(f"{k}={short(v)}" for k, v in self._values.items()) + ")"
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The plain nested dict (lists, numbers, strings), ready for ``json.dump``."""
+        return {k: _unwrap(self._values[_attribute(k)]) for k in self._keys}
+
+
+class Evaluation(Record):
+    """What :func:`evaluate` returns: ``ppsynth eval --json`` as an object.
+
+    Every key of that JSON is an attribute, nested objects are :class:`Record`\\ s and lists of
+    numbers are NumPy arrays; ``to_dict()`` gives the JSON's dict back.
+
+    Attributes
+    ----------
+    all : Record
+        All classes together: ``pcf_mse``, ``wasserstein``, ``chamfer``,
+        ``wasserstein_method``, ``exemplar_points`` and ``pcf`` (arrays ``r`` in r_max
+        units, ``exemplar`` and ``output``); with the crops protocol also ``per_crop`` and
+        the ``*_quartiles``.
+    classes : list of Record
+        The same per class, with ``class_`` (its index) and ``label``.
+    cross : list of Record
+        The cross-PCF of every class pair ``ci``, ``cj``: ``pcf_mse``, ``pcf``.
+    exemplar, output : Record
+        Each pattern's ``count``, ``class_counts``, closest pair ``d_min``, mean
+        nearest-neighbour distance ``mean_nn``, ``relative_radius`` and
+        ``border_fraction`` (share of points within 1 % of the shorter side of the border)
+        beside ``border_fraction_uniform`` (uniform points' share).
+    second_order : Record
+        K, L and g of both patterns with spatstat's edge correction (``rows``: ``r``,
+        ``exemplar.k`` ..., ``l_sup``), and the mark correlation of marked patterns.
+    verdict : Record
+        The studentized permutation test of equal K-functions over sub-windows
+        (docs/verdict.md): ``rows``, each with ``row`` (``"all"``, ``"class"``, ``"pair"``),
+        ``p`` and ``pass_``; ``alpha``, ``test``.
+    protocol : Record
+        Quadrants or crops, and why (``name``, ``reason``, ``zoom``, ``windows``).
+    options : Record
+        The PCF's settings.
+    overlap : Record
+        Disk patterns only: the overlap of the output's disks.
+    spectrum : Record
+        With ``spectrum=True``: the radially averaged power spectra and their peak ratios.
+    """
+
+    __slots__ = ()
+
+    @property
+    def passed(self) -> bool:
+        """Whether every row of the verdict passed (True when there is no verdict)."""
+        rows = self.verdict.rows if "verdict" in self else []
+        return all(r.pass_ is not False for r in rows)
 
 
 def evaluate(exemplar, output, bins: int = 100, r_max: float = 0.0, periodic_pcf: bool = False,
              curves: bool = True, spectrum: bool = False,
              wasserstein_exact_limit: int = _native.WASSERSTEIN_EXACT_PAIRS,
-             protocol: str = "auto", crops: int = 20, crop_seed: int = 1, zoom: float = 0.0) -> dict:
+             protocol: str = "auto", crops: int = 20, crop_seed: int = 1, zoom: float = 0.0) -> Evaluation:
     """Metrics of an output against its exemplar: the numbers of ``ppsynth eval --json``.
 
     Parameters
@@ -43,9 +176,9 @@ def evaluate(exemplar, output, bins: int = 100, r_max: float = 0.0, periodic_pcf
     periodic_pcf : bool
         Measure the PCF on the torus.
     curves : bool
-        Keep the PCF curves (``"pcf"``) in the result.
+        Keep the PCF curves (``pcf``) in the result.
     spectrum : bool
-        Add the 2-D power spectrum's summary (``"spectrum"``).
+        Add the 2-D power spectrum's summary (``spectrum``).
     wasserstein_exact_limit : int
         Pairs per region up to which the Wasserstein distance is the exact assignment.
     protocol : str
@@ -53,7 +186,7 @@ def evaluate(exemplar, output, bins: int = 100, r_max: float = 0.0, periodic_pcf
         ``"crops"`` (``crops`` random exemplar-sized crops placed from ``crop_seed``, for
         outputs of other sizes and shapes; rows then carry ``per_crop`` values and
         ``pcf_mse_quartiles``), or ``"auto"`` (quadrants for a square output holding 3-5
-        times the exemplar's points, else crops; ``"protocol"`` in the result says which).
+        times the exemplar's points, else crops; ``protocol.name`` in the result says which).
     crops, crop_seed : int
         How many crops, and their seed.
     zoom : float
@@ -61,17 +194,9 @@ def evaluate(exemplar, output, bins: int = 100, r_max: float = 0.0, periodic_pcf
 
     Returns
     -------
-    dict
-        - ``"all"``: all classes together: ``pcf_mse``, ``wasserstein``, ``chamfer`` and
-          ``pcf`` with NumPy arrays ``r`` (in r_max units), ``exemplar`` and ``output``;
-        - ``"classes"``: the same per class; ``"cross"``: the cross-PCF of every class pair;
-        - ``"exemplar"``, ``"output"``: counts, closest pair ``d_min``, mean
-          nearest-neighbour distance, ``border_fraction`` (share of points within 1 % of the
-          shorter side of the border) and ``border_fraction_uniform`` (uniform points' share);
-        - ``"second_order"``: the K, L, G and F summaries with their spatstat corrections;
-        - ``"verdict"``: a studentized permutation test of equal K-functions over
-          sub-windows (docs/verdict.md);
-        - ``"overlap"`` (disk patterns), ``"spectrum"`` (``spectrum=True``), ``"options"``.
+    Evaluation
+        E.g. ``e.all.pcf_mse``, ``e.classes[1].wasserstein``, ``e.all.pcf.output`` (an
+        array), ``e.verdict.rows[0].p``, ``e.passed``; ``e.to_dict()`` is the JSON's dict.
 
     Raises
     ------
@@ -80,7 +205,6 @@ def evaluate(exemplar, output, bins: int = 100, r_max: float = 0.0, periodic_pcf
     """
     ex = _as_points(exemplar, "exemplar")
     out = _as_points(output, "output")
-    text = _native.evaluate_json(ex._to_native(), out._to_native(), int(bins), float(r_max), bool(periodic_pcf),
-                                 bool(curves), bool(spectrum), int(wasserstein_exact_limit), str(protocol), int(crops),
-                                 int(crop_seed), float(zoom))
-    return _arrays(json.loads(text))
+    return Evaluation(_native.evaluate(ex._to_native(), out._to_native(), int(bins), float(r_max), bool(periodic_pcf),
+                                       bool(curves), bool(spectrum), int(wasserstein_exact_limit), str(protocol),
+                                       int(crops), int(crop_seed), float(zoom)))

@@ -324,9 +324,8 @@ def generate(name: str, n: int, seed: int = 1, domain: Sequence[float] = (0.0, 0
     -------
     PointSet
     """
-    import json
     spec = {"type": name, **params}
-    return PointSet._from_native(_native.generate(json.dumps(spec), int(n), int(seed), tuple(domain), bool(periodic)))
+    return PointSet._from_native(_native.generate(spec, int(n), int(seed), tuple(domain), bool(periodic)))
 
 
 def generators() -> dict:
@@ -337,5 +336,4 @@ def generators() -> dict:
     dict
         name -> ``{"description": str, "defaults": dict, "bounds": dict}``.
     """
-    import json
-    return json.loads(_native.defaults_json()).get("generator", {})
+    return _native.defaults().get("generator", {})

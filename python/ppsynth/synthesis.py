@@ -8,6 +8,7 @@ after writing a checkpoint, raising KeyboardInterrupt.
 """
 from __future__ import annotations
 
+import copy
 import csv
 import json
 import numbers
@@ -18,7 +19,7 @@ from typing import Callable, List, Mapping, Optional, Sequence, Union
 import numpy as np
 
 from . import _ppsynth as _native
-from .evaluation import _arrays
+from .evaluation import Evaluation
 from .points import PointSet, _as_points
 
 __all__ = ["synthesize", "run", "resume", "resolve_config", "Result", "Stage", "Losses", "Progress"]
@@ -117,7 +118,7 @@ class Result:
         Every iteration's loss.
     stats : dict
         All the method measured: grids, sigmas, phase times, the resolved parts.
-    metrics : dict or None
+    metrics : Evaluation or None
         ``evaluate(exemplar, output)`` when the config's ``"evaluate"`` is on, else None.
     seconds : float
         Wall time of the synthesis (for a resumed run, of the whole run).
@@ -138,7 +139,7 @@ class Result:
     stages: List[Stage]
     losses: Losses
     stats: dict
-    metrics: Optional[dict]
+    metrics: Optional[Evaluation]
     seconds: float
     threads: int
     processor: str
@@ -151,14 +152,18 @@ ConfigLike = Union[None, str, os.PathLike, Mapping]
 Overrides = Union[None, Mapping[str, object], Sequence[str]]
 
 
-def _override_strings(overrides: Overrides) -> List[str]:
+def _split_overrides(overrides: Overrides):
+    """(the command's ``--set`` strings, a dict of key paths to values)."""
     if overrides is None:
-        return []
+        return [], {}
     if isinstance(overrides, Mapping):
-        return [f"{k}={v if isinstance(v, str) else json.dumps(v)}" for k, v in overrides.items()]
+        for k in overrides:
+            if not isinstance(k, str):
+                raise TypeError(f"overrides: the key {k!r} is not a 'key.path' string")
+        return [], dict(overrides)
     if isinstance(overrides, str):
         raise TypeError("overrides: expected a dict {'key.path': value} or a list of 'key.path=value' strings")
-    return [str(o) for o in overrides]
+    return [str(o) for o in overrides], {}
 
 
 def resolve_config(config: ConfigLike = None, seed: Optional[int] = None, overrides: Overrides = None) -> dict:
@@ -189,9 +194,9 @@ def resolve_config(config: ConfigLike = None, seed: Optional[int] = None, overri
     if config is None:
         c = {}
     elif isinstance(config, (str, os.PathLike)):
-        c = json.loads(_native.load_config(os.fspath(config)))
+        c = _native.load_config(os.fspath(config))
     elif isinstance(config, Mapping):
-        c = json.loads(json.dumps(dict(config)))
+        c = copy.deepcopy(dict(config))
     else:
         raise TypeError(f"config: expected None, a dict or a file name, not {type(config).__name__}")
     if seed is not None:
@@ -199,7 +204,8 @@ def resolve_config(config: ConfigLike = None, seed: Optional[int] = None, overri
         if isinstance(seed, bool) or not isinstance(seed, numbers.Integral):
             raise TypeError(f"seed: expected an integer in [0, 2^63), not {type(seed).__name__}")
         c["seed"] = int(seed)
-    return json.loads(_native.resolve_config(json.dumps(c), _override_strings(overrides)))
+    assignments, values = _split_overrides(overrides)
+    return _native.resolve_config(c, assignments, values)
 
 
 def _progress_hook(progress: Optional[Callable[[Progress], object]]):
@@ -210,9 +216,8 @@ def _progress_hook(progress: Optional[Callable[[Progress], object]]):
     return lambda event: progress(Progress(**event))
 
 
-def _loads_or_none(text: str):
-    v = json.loads(text)
-    return None if v is None else _arrays(v)
+def _evaluation_or_none(metrics: Optional[dict]) -> Optional[Evaluation]:
+    return None if metrics is None else Evaluation(metrics)
 
 
 def synthesize(exemplar=None, config: ConfigLike = None, seed: Optional[int] = None, overrides: Overrides = None,
@@ -258,15 +263,15 @@ def synthesize(exemplar=None, config: ConfigLike = None, seed: Optional[int] = N
     """
     spec = resolve_config(config, seed, overrides)
     if exemplar is None:
-        ex = PointSet._from_native(_native.load_exemplar(json.dumps(spec)))
+        ex = PointSet._from_native(_native.load_exemplar(spec))
     else:
         ex = _as_points(exemplar, "exemplar")
     init = None if initialization is None else _as_points(initialization, "initialization")._to_native()
-    r = _native.synthesize(ex._to_native(), json.dumps(spec), bool(quick), init, _progress_hook(progress),
+    r = _native.synthesize(ex._to_native(), spec, bool(quick), init, _progress_hook(progress),
                            "" if checkpoint_dir is None else os.fspath(checkpoint_dir), int(threads))
     return Result(PointSet._from_native(r["output"]), PointSet._from_native(r["initialization"]), ex,
-                  [Stage(**st) for st in r["stages"]], _losses(r["losses"]), json.loads(r["stats_json"]),
-                  _loads_or_none(r["metrics_json"]), r["seconds"], r["threads"], r["processor"], spec, r["resumed"])
+                  [Stage(**st) for st in r["stages"]], _losses(r["losses"]), r["stats"],
+                  _evaluation_or_none(r["metrics"]), r["seconds"], r["threads"], r["processor"], spec, r["resumed"])
 
 
 def _losses(rows) -> Losses:
@@ -289,15 +294,15 @@ def _losses_of_run(run_dir: str) -> Losses:
 
 def _run_result(r: dict, resumed: bool) -> Result:
     """A run directory's Result: what the native call returned, and its run.json and loss.csv."""
-    stats = json.loads(r["stats_json"])
+    stats = r["stats"]
     with open(os.path.join(r["dir"], "run.json")) as f:
         record = json.load(f)
     stages = [Stage(st["stage"], int(st["iterations"]), float(st["final_loss"]), float(st["seconds"]))
               for st in stats.get("stages", [])]
     return Result(PointSet._from_native(r["output"]), PointSet._from_native(r["initialization"]),
                   PointSet._from_native(r["exemplar"]), stages, _losses_of_run(r["dir"]), stats,
-                  _loads_or_none(r["metrics_json"]), r["seconds"], int(record.get("threads", 0)),
-                  str(record.get("processor", "")), json.loads(r["config_json"]), resumed, r["dir"])
+                  _evaluation_or_none(r["metrics"]), r["seconds"], int(record.get("threads", 0)),
+                  str(record.get("processor", "")), r["config"], resumed, r["dir"])
 
 
 def run(config: ConfigLike, out_dir, seed: Optional[int] = None, overrides: Overrides = None, quick: bool = False,
@@ -335,7 +340,7 @@ def run(config: ConfigLike, out_dir, seed: Optional[int] = None, overrides: Over
         Ctrl-C: the run stops with a checkpoint in ``out_dir``; :func:`resume` continues it.
     """
     spec = resolve_config(config, seed, overrides)
-    return _run_result(_native.run(json.dumps(spec), os.fspath(out_dir), bool(quick), bool(force),
+    return _run_result(_native.run(spec, os.fspath(out_dir), bool(quick), bool(force),
                                    _progress_hook(progress), int(threads)), False)
 
 

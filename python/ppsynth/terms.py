@@ -20,7 +20,6 @@ redefines it (a notebook cell run twice); compiled-in names cannot be taken. Nee
 """
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass
 from typing import Callable, Optional
 
@@ -79,20 +78,11 @@ def _gradients(torch, v, xs):
     return [torch.zeros_like(x) if g is None else g for g, x in zip(gs, xs)]
 
 
-def _params(cache: dict, text: str) -> dict:
-    p = cache.get(text)
-    if p is None:
-        p = cache[text] = json.loads(text)
-    return p
-
-
 def _loss_glue(name: str, fn: Callable):
     torch = _torch()
     from_dlpack, to_dlpack = torch.utils.dlpack.from_dlpack, torch.utils.dlpack.to_dlpack
-    cache: dict = {}
 
-    def glue(params_json, output_caps, target_caps):
-        params = _params(cache, params_json)
+    def glue(params, output_caps, target_caps):
         with torch.enable_grad():
             xs = [from_dlpack(c).requires_grad_(True) for c in output_caps]
             ts = [from_dlpack(c) for c in target_caps]
@@ -106,11 +96,9 @@ def _loss_glue(name: str, fn: Callable):
 def _point_term_glue(name: str, fn: Callable):
     torch = _torch()
     from_dlpack, to_dlpack = torch.utils.dlpack.from_dlpack, torch.utils.dlpack.to_dlpack
-    cache: dict = {}
     last = {"native": None, "stage": None}  # the stage of the class being synthesised
 
-    def glue(params_json, moving_caps, frozen_cap, stage):
-        params = _params(cache, params_json)
+    def glue(params, moving_caps, frozen_cap, stage):
         if last["native"] is not stage:
             last["native"] = stage
             last["stage"] = ClassStage(PointSet._from_native(stage["exemplar"]), PointSet._from_native(stage["output"]),
@@ -130,7 +118,7 @@ def _register(native_register, make_glue, name: str, fn: Optional[Callable], def
     def do(f):
         if not callable(f):
             raise TypeError(f"'{name}': expected a callable")
-        native_register(name, make_glue(name, f), json.dumps(dict(defaults or {})), description or (f.__doc__ or "").strip())
+        native_register(name, make_glue(name, f), dict(defaults or {}), description or (f.__doc__ or "").strip())
         return f
     return do if fn is None else do(fn)
 
@@ -232,8 +220,7 @@ def point_term_value_and_grad(name: str, moving, frozen=None, stage: Optional[Cl
     if stage is None:
         ps = PointSet(np.concatenate([moving, frozen]))
         stage = ClassStage(ps, ps, np.arange(len(moving)), np.arange(len(moving), len(ps)), 1)
-    spec = json.dumps({"type": name, **params})
-    v, g = _native.point_term_value_and_grad(spec, stage.exemplar._to_native(), stage.output._to_native(),
+    v, g = _native.point_term_value_and_grad({"type": name, **params}, stage.exemplar._to_native(), stage.output._to_native(),
                                              [int(i) for i in stage.moving], [int(i) for i in stage.frozen],
                                              int(stage.upscale), to_dlpack(torch.from_numpy(moving.copy())),
                                              to_dlpack(torch.from_numpy(frozen.copy())))
@@ -262,5 +249,5 @@ def loss_value_and_grad(name: str, output, target, **params):
     to_dlpack = torch.utils.dlpack.to_dlpack
     caps = [to_dlpack(torch.as_tensor(np.asarray(o)).contiguous().clone()) for o in output]
     tcaps = [to_dlpack(torch.as_tensor(np.asarray(t)).contiguous().clone()) for t in target]
-    v, gs = _native.loss_value_and_grad(json.dumps({"type": name, **params}), caps, tcaps)
+    v, gs = _native.loss_value_and_grad({"type": name, **params}, caps, tcaps)
     return v, [None if g is None else torch.utils.dlpack.from_dlpack(g).numpy().copy() for g in gs]

@@ -1,8 +1,9 @@
 // evaluate(): the evaluation suite of `ppsynth eval` (core/metrics/evaluation.hpp), returned as
-// the same JSON text `eval --json` prints; the package turns its curves into NumPy arrays.
+// the nested dict of what `eval --json` prints; the package makes it a ppsynth.Evaluation.
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "json_python.hpp"
 #include "core/metrics/eval_protocol.hpp"
 #include "core/metrics/evaluation.hpp"
 
@@ -10,7 +11,7 @@ namespace ppsynth::python {
 
 void bind_evaluation(py::module_& m) {
   m.def(
-      "evaluate_json",
+      "evaluate",
       [](const py::dict& exemplar, const py::dict& output, int bins, double r_max, bool periodic_pcf, bool curves,
          bool spectrum, size_t wasserstein_exact_limit, const std::string& protocol, int crops, uint64_t crop_seed,
          double zoom) {
@@ -30,8 +31,12 @@ void bind_evaluation(py::module_& m) {
         const PointSet out = from_python(output, "output");
         validate(ex, "exemplar");
         validate(out, "output");
-        py::gil_scoped_release unlocked;  // seconds on large sets; nothing here touches Python
-        return evaluate(ex, out, opt).dump();
+        nlohmann::json r;
+        {
+          py::gil_scoped_release unlocked;  // seconds on large sets; nothing here touches Python
+          r = evaluate(ex, out, opt);
+        }
+        return r;
       },
       py::arg("exemplar"), py::arg("output"), py::arg("bins"), py::arg("r_max"), py::arg("periodic_pcf"),
       py::arg("curves"), py::arg("spectrum"), py::arg("wasserstein_exact_limit"), py::arg("protocol"), py::arg("crops"),

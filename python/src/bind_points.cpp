@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "bindings.hpp"
+#include "json_python.hpp"
 #include "core/config/defaults_catalog.hpp"
-#include "core/config/json_text.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/generators/generator.hpp"
@@ -154,14 +154,14 @@ void bind_points(py::module_& m) {
   m.def("resolve_data_path", &resolve_data_path, py::arg("path"));
   m.def(
       "generate",
-      [](const std::string& spec_json, long long n, uint64_t seed, const py::tuple& domain, bool periodic) {
+      [](const py::object& spec, long long n, uint64_t seed, const py::tuple& domain, bool periodic) {
         if (n < 0) throw InputError("n must be >= 0");
         return to_python(
-            generate_points(parse_json_text(spec_json, "generator", false), static_cast<size_t>(n), seed,
+            generate_points(from_python_json(spec, "generator"), static_cast<size_t>(n), seed,
                             domain_of(domain, periodic, "generate"), "generator"));
       },
-      py::arg("spec_json"), py::arg("n"), py::arg("seed"), py::arg("domain"), py::arg("periodic"));
-  m.def("defaults_json", [] { return defaults_catalog().dump(); });
+      py::arg("spec"), py::arg("n"), py::arg("seed"), py::arg("domain"), py::arg("periodic"));
+  m.def("defaults", [] { return defaults_catalog(); });
 }
 
 }  // namespace ppsynth::python

@@ -12,10 +12,10 @@
 #include <memory>
 
 #include "bindings.hpp"
+#include "json_python.hpp"
 #include "core/atomic_file.hpp"
 #include "core/checkpoint_file.hpp"
 #include "core/config/config.hpp"
-#include "core/config/json_text.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/formats/text_table.hpp"
@@ -176,17 +176,17 @@ py::dict outcome_dict(const RunOutcome& o) {
   d["exemplar"] = to_python(o.exemplar);
   d["initialization"] = to_python(o.initialization);
   d["output"] = to_python(o.output);
-  d["stats_json"] = o.stats.dump();
-  d["metrics_json"] = o.metrics.dump();
-  d["config_json"] = o.config.dump();
+  d["stats"] = pyjson::from_json(o.stats);
+  d["metrics"] = pyjson::from_json(o.metrics);
+  d["config"] = pyjson::from_json(o.config);
   d["seconds"] = o.seconds;
   return d;
 }
 
-py::dict synthesize_in_memory(const py::dict& exemplar_py, const std::string& spec_json, bool quick,
+py::dict synthesize_in_memory(const py::dict& exemplar_py, const py::object& config, bool quick,
                               const py::object& initialization_py, const py::object& progress,
                               const std::string& checkpoint_dir, int threads) {
-  const json spec = parse_json_text(spec_json, "config", false);
+  const json spec = from_python_json(config, "config");
   const PointSet exemplar = from_python(exemplar_py, "exemplar");
   validate(exemplar, "exemplar");
   std::optional<PointSet> init;
@@ -234,8 +234,8 @@ py::dict synthesize_in_memory(const py::dict& exemplar_py, const std::string& sp
   d["initialization"] = to_python(r.initialization);
   d["stages"] = stage_list(r.stages);
   d["losses"] = loss_rows(losses);
-  d["stats_json"] = r.stats.dump();
-  d["metrics_json"] = r.metrics.dump();
+  d["stats"] = pyjson::from_json(r.stats);
+  d["metrics"] = pyjson::from_json(r.metrics);
   d["seconds"] = r.seconds;
   d["threads"] = used_threads;
   d["processor"] = processor_kind();
@@ -243,7 +243,7 @@ py::dict synthesize_in_memory(const py::dict& exemplar_py, const std::string& sp
   return d;
 }
 
-py::dict run_into_directory(const std::string& spec_json, const std::string& dir, bool quick, bool force,
+py::dict run_into_directory(const py::object& config, const std::string& dir, bool quick, bool force,
                             const py::object& progress, int threads, bool resume) {
   apply_runtime(threads);
   RunRequest req;
@@ -251,7 +251,7 @@ py::dict run_into_directory(const std::string& spec_json, const std::string& dir
   req.quick = quick;
   req.force = force;
   json spec;
-  if (!resume) spec = parse_json_text(spec_json, "config", false);
+  if (!resume) spec = from_python_json(config, "config");
   else spec = read_run_config(dir + "/config.json");
   PythonWatch watch(progress, can_resume(spec));
   req.stop = watch.stop();
@@ -271,27 +271,31 @@ py::dict run_into_directory(const std::string& spec_json, const std::string& dir
 }  // namespace
 
 void bind_synthesis(py::module_& m) {
-  m.def("load_config", [](const std::string& path) { return load_config(path).dump(); }, py::arg("path"));
+  m.def("load_config", [](const std::string& path) { return load_config(path); }, py::arg("path"));
   m.def(
       "resolve_config",
-      [](const std::string& config_json, const std::vector<std::string>& overrides) {
-        return resolve_run_config(parse_json_text(config_json, "config", false), overrides).dump();
+      [](const py::object& config, const std::vector<std::string>& assignments, const py::dict& values) {
+        json c = from_python_json(config, "config");
+        for (auto kv : values) {
+          const std::string key = py::str(kv.first);
+          set_at_key_path(c, key, from_python_json(kv.second, "overrides['" + key + "']"));
+        }
+        return resolve_run_config(std::move(c), assignments);
       },
-      py::arg("config_json"), py::arg("overrides"));
-  m.def("can_resume", [](const std::string& spec_json) { return can_resume(parse_json_text(spec_json, "config", false)); });
-  m.def("load_exemplar", [](const std::string& spec_json) { return to_python(load_exemplar(parse_json_text(spec_json, "config", false))); });
-  m.def("synthesize", &synthesize_in_memory, py::arg("exemplar"), py::arg("spec_json"), py::arg("quick"),
+      py::arg("config"), py::arg("assignments"), py::arg("values"));
+  m.def("load_exemplar", [](const py::object& config) { return to_python(load_exemplar(from_python_json(config, "config"))); });
+  m.def("synthesize", &synthesize_in_memory, py::arg("exemplar"), py::arg("config"), py::arg("quick"),
         py::arg("initialization"), py::arg("progress"), py::arg("checkpoint_dir"), py::arg("threads"));
   m.def(
       "run",
-      [](const std::string& spec_json, const std::string& dir, bool quick, bool force, const py::object& progress, int threads) {
-        return run_into_directory(spec_json, dir, quick, force, progress, threads, false);
+      [](const py::object& config, const std::string& dir, bool quick, bool force, const py::object& progress, int threads) {
+        return run_into_directory(config, dir, quick, force, progress, threads, false);
       },
-      py::arg("spec_json"), py::arg("dir"), py::arg("quick"), py::arg("force"), py::arg("progress"), py::arg("threads"));
+      py::arg("config"), py::arg("dir"), py::arg("quick"), py::arg("force"), py::arg("progress"), py::arg("threads"));
   m.def(
       "resume",
       [](const std::string& dir, const py::object& progress, int threads) {
-        return run_into_directory("", dir, false, false, progress, threads, true);
+        return run_into_directory(py::none(), dir, false, false, progress, threads, true);
       },
       py::arg("dir"), py::arg("progress"), py::arg("threads"));
   m.def("threads", [] { return at::get_num_threads(); }, "the intra-op thread count LibTorch uses now");

@@ -20,7 +20,7 @@
 #include <set>
 
 #include "bindings.hpp"
-#include "core/config/json_text.hpp"
+#include "json_python.hpp"
 #include "core/error.hpp"
 #include "losses/loss.hpp"
 #include "optim/point_term.hpp"
@@ -81,12 +81,12 @@ torch::Tensor from_capsule(const py::handle& h, const std::string& what) {
   return at::fromDLPack(m);  // owns m now
 }
 
-// Calls the glue of part `name`: glue(params_json, [input capsules], *extra()) -> (value,
+// Calls the glue of part `name`: glue(params, [input capsules], *extra()) -> (value,
 // [gradient capsules]) with one gradient per input. The GIL is taken here, for all of it
 // (`extra` builds its Python arguments under it).
 template <class Extra>
 std::pair<double, std::vector<torch::Tensor>> call_python(const std::string& kind, const std::string& name,
-                                                          const py::object& glue, const std::string& params,
+                                                          const py::object& glue, const py::object& params,
                                                           const std::vector<torch::Tensor>& inputs, Extra extra) {
   py::gil_scoped_acquire gil;
   py::list caps;
@@ -114,12 +114,22 @@ py::object glue_of(const std::string& name) {
   return python_parts().at(name);
 }
 
+// A part's parameters as the dict its Python function receives, made once per part.
+py::object params_of(const json& params) {
+  py::gil_scoped_acquire gil;
+  return pyjson::from_json(params);
+}
+
 class PythonFeatureLoss : public FeatureLoss {
  public:
   PythonFeatureLoss(std::string name, const json& params)
-      : name_(std::move(name)), params_(params.dump()), layers_(loss_layers(params, name_)), glue_(glue_of("loss:" + name_)) {}
+      : name_(std::move(name)),
+        layers_(loss_layers(params, name_)),
+        params_(params_of(params)),
+        glue_(glue_of("loss:" + name_)) {}
   ~PythonFeatureLoss() override {
     py::gil_scoped_acquire gil;
+    params_ = py::object();
     glue_ = py::object();
   }
   void set_target(const Features& exemplar, const LossContext&) override {
@@ -138,18 +148,19 @@ class PythonFeatureLoss : public FeatureLoss {
   }
 
  private:
-  std::string name_, params_;
+  std::string name_;
   std::vector<int> layers_;
-  py::object glue_;
+  py::object params_, glue_;
   std::vector<torch::Tensor> targets_;
 };
 
 class PythonPointTerm : public PointTerm {
  public:
   PythonPointTerm(std::string name, const json& params)
-      : name_(std::move(name)), params_(params.dump()), glue_(glue_of("point_term:" + name_)) {}
+      : name_(std::move(name)), params_(params_of(params)), glue_(glue_of("point_term:" + name_)) {}
   ~PythonPointTerm() override {
     py::gil_scoped_acquire gil;
+    params_ = py::object();
     glue_ = py::object();
     stage_ = py::object();
   }
@@ -170,18 +181,18 @@ class PythonPointTerm : public PointTerm {
   }
 
  private:
-  std::string name_, params_;
-  py::object glue_, stage_;
+  std::string name_;
+  py::object params_, glue_, stage_;
 };
 
 // Registers (or redefines) a Python part in `Reg`: `defaults` are merged over `base` (the
 // parameters every part of the kind takes), `bounds` likewise.
 template <class Reg, class Make>
 void register_part(const std::string& kind, const std::string& name, const py::object& glue, json base,
-                   json base_bounds, const std::string& defaults_json, const std::string& description, Make make) {
+                   json base_bounds, const py::object& defaults, const std::string& description, Make make) {
   if (name.empty() || name.find_first_of(" .=\"'") != std::string::npos)
     throw InputError(kind + " name '" + name + "': letters, digits, '_' or '-' only (it is a config key)");
-  const json extra = parse_json_text(defaults_json, kind + " '" + name + "' defaults", false);
+  const json extra = from_python_json(defaults, kind + " '" + name + "' defaults");
   if (!extra.is_object()) throw InputError(kind + " '" + name + "': defaults must be a dict");
   for (auto it = extra.begin(); it != extra.end(); ++it) {
     if (it.key() == "type") throw InputError(kind + " '" + name + "': 'type' is not a parameter");
@@ -206,33 +217,33 @@ void register_part(const std::string& kind, const std::string& name, const py::o
 void bind_terms(py::module_& m) {
   m.def(
       "register_loss",
-      [](const std::string& name, const py::object& glue, const std::string& defaults_json, const std::string& description) {
+      [](const std::string& name, const py::object& glue, const py::object& defaults, const std::string& description) {
         register_part<LossRegistry>(
             "loss", name, glue, json{{"weight", 1.0}, {"layers", {0, 1, 2}}},
-            json{{"weight", "[0, inf)"}, {"layers", "int [0, 15]"}}, defaults_json, description,
+            json{{"weight", "[0, inf)"}, {"layers", "int [0, 15]"}}, defaults, description,
             [](const std::string& n, const json& p) -> std::unique_ptr<FeatureLoss> {
               return std::make_unique<PythonFeatureLoss>(n, p);
             });
       },
-      py::arg("name"), py::arg("glue"), py::arg("defaults_json"), py::arg("description"));
+      py::arg("name"), py::arg("glue"), py::arg("defaults"), py::arg("description"));
   m.def(
       "register_point_term",
-      [](const std::string& name, const py::object& glue, const std::string& defaults_json, const std::string& description) {
+      [](const std::string& name, const py::object& glue, const py::object& defaults, const std::string& description) {
         register_part<PointTermRegistry>(
-            "point_term", name, glue, json{{"weight", 0.0}}, json{{"weight", "[0, inf)"}}, defaults_json, description,
+            "point_term", name, glue, json{{"weight", 0.0}}, json{{"weight", "[0, inf)"}}, defaults, description,
             [](const std::string& n, const json& p) -> std::unique_ptr<PointTerm> {
               return std::make_unique<PythonPointTerm>(n, p);
             });
       },
-      py::arg("name"), py::arg("glue"), py::arg("defaults_json"), py::arg("description"));
+      py::arg("name"), py::arg("glue"), py::arg("defaults"), py::arg("description"));
 
   // Checking a term, compiled or Python, outside a synthesis: its value and gradient through
   // the same C++ path a synthesis takes (inputs and gradients as DLPack capsules).
   m.def(
       "point_term_value_and_grad",
-      [](const std::string& spec_json, const py::dict& exemplar, const py::dict& output, const std::vector<size_t>& moving,
+      [](const py::object& term_spec, const py::dict& exemplar, const py::dict& output, const std::vector<size_t>& moving,
          const std::vector<size_t>& frozen, int upscale, const py::capsule& moving_xy, const py::capsule& frozen_xy) {
-        const json spec = parse_json_text(spec_json, "term", false);
+        const json spec = from_python_json(term_spec, "term");
         auto term = PointTermRegistry::instance().create(spec, "terms");
         const PointSet ex = from_python(exemplar, "exemplar"), out = from_python(output, "output");
         torch::Tensor x = from_capsule(moving_xy, "moving").clone().requires_grad_(true);
@@ -248,8 +259,8 @@ void bind_terms(py::module_& m) {
       });
   m.def(
       "loss_value_and_grad",
-      [](const std::string& spec_json, const py::list& output_caps, const py::list& target_caps) {
-        const json spec = parse_json_text(spec_json, "loss", false);
+      [](const py::object& loss_spec, const py::list& output_caps, const py::list& target_caps) {
+        const json spec = from_python_json(loss_spec, "loss");
         auto loss = LossRegistry::instance().create(spec, "losses");
         Features out, tgt;
         for (auto c : output_caps) out.push_back(from_capsule(c, "output").clone().requires_grad_(true));

@@ -1,11 +1,12 @@
 #pragma once
 // The pybind11 module ppsynth._ppsynth, in parts. The bindings take and return plain Python
-// values -- point sets as dicts of NumPy arrays, configs and metrics as JSON text -- and call
+// values -- point sets as dicts of NumPy arrays, configs, metrics and parameters as dicts
+// (json_python.hpp) -- and call
 // the same library functions as the command; the package's Python files (python/ppsynth)
 // build the documented NumPy-first API on them.
 //
 //   points      read / write / parse / format / validate / generate       bind_points.cpp
-//   evaluation  evaluate (the JSON of `ppsynth eval --json`)             bind_evaluation.cpp
+//   evaluation  evaluate (the dict of `ppsynth eval --json`)             bind_evaluation.cpp
 //   synthesis   resolve a config, synthesize in memory, run / resume a
 //               run directory; progress, Ctrl-C, checkpoints              bind_synthesis.cpp
 //   terms       loss terms written in Python, registered by name          bind_terms.cpp

@@ -31,7 +31,7 @@ def test_works_without_torch(tmp_path):
                  "import ppsynth\n"
                  "ex = ppsynth.read('shared:data/exemplars/gabor-paper/lines.txt')\n"
                  "r = ppsynth.synthesize(ex, quick=True, threads=1)\n"
-                 "print(len(r.output), ppsynth.evaluate(ex, r.output)['all']['pcf_mse'] >= 0)\n"
+                 "print(len(r.output), ppsynth.evaluate(ex, r.output).all.pcf_mse >= 0)\n"
                  "try:\n"
                  "    ppsynth.register_loss('x', lambda o, t, p: o[0].sum())\n"
                  "except ImportError as e:\n"

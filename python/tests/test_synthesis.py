@@ -51,7 +51,7 @@ def test_run_equals_the_command_file_for_file(tmp_path):
     run_cmd = json.loads((tmp_path / "cmd" / "run.json").read_text())
     assert run_py["seed"] == run_cmd["seed"] == 7 and run_py["threads"] == run_cmd["threads"] == 1
     assert run_py["processor"] == run_cmd["processor"] != ""
-    assert r.metrics["all"]["pcf_mse"] == json.loads((tmp_path / "cmd" / "metrics.json").read_text())["all"]["pcf_mse"]
+    assert r.metrics.all.pcf_mse == json.loads((tmp_path / "cmd" / "metrics.json").read_text())["all"]["pcf_mse"]
 
 
 def test_synthesize_in_memory_equals_the_command(tmp_path):
@@ -63,7 +63,7 @@ def test_synthesize_in_memory_equals_the_command(tmp_path):
     assert [s.iterations for s in r.stages] and all(s.iterations > 0 for s in r.stages)
     assert len(r.losses.loss) == sum(s.iterations for s in r.stages)
     assert np.all(np.isfinite(r.losses.loss))
-    assert r.metrics["all"]["pcf"]["r"].shape == (100,)
+    assert r.metrics.all.pcf.r.shape == (100,)
     assert r.config["seed"] == 11 and r.threads == 1 and not r.resumed
     assert r.processor == json.loads((tmp_path / "cmd" / "run.json").read_text())["processor"]
 
@@ -99,6 +99,26 @@ def test_config_errors_carry_the_key_path(tmp_path):
                            "-o", tmp_path / "x", check=False)
     assert code != 0 and "config key 'method.no_such_key'" in err
     assert not (tmp_path / "x").exists()
+
+
+def test_configs_cross_as_python_values_and_their_flaws_name_the_key():
+    # A dict override is a value, not --set text: the string "123" stays a string.
+    c = ppsynth.resolve_config(overrides={"description": "123", "method.max_iterations": np.int64(7)})
+    assert c["description"] == "123" and c["method"]["max_iterations"] == 7
+    with pytest.raises(ValueError, match=r"overrides\['upscale'\]: nan is not a finite number"):
+        ppsynth.resolve_config(overrides={"upscale": float("nan")})
+    with pytest.raises(ValueError, match=r"config\.method\.sigmas\[1\]: inf is not a finite number"):
+        ppsynth.resolve_config({"method": {"type": "gabor", "sigmas": [1.0, float("inf")]}})
+    with pytest.raises(ValueError, match=r"config\.description: a set has no JSON form"):
+        ppsynth.resolve_config({"description": {1, 2}})
+    with pytest.raises(ValueError, match=r"config\.seed: .* is beyond the range of a 64-bit integer"):
+        ppsynth.resolve_config({"seed": 2 ** 70})
+    loop = {}
+    loop["a"] = loop
+    with pytest.raises(ValueError, match="nested deeper than 200 levels"):
+        ppsynth.resolve_config({"method": loop})
+    with pytest.raises(ValueError, match=r"config: the key 1 is not a string"):
+        ppsynth.resolve_config({1: 2})
 
 
 def test_run_refuses_a_foreign_directory(tmp_path):

@@ -45,6 +45,21 @@ TEST_CASE("set_override parses JSON values and paths", "[config]") {
   CHECK(c["losses"][0]["weight"] == 0.5);
   CHECK(c["name"] == "lines");
   CHECK_THROWS_AS(set_override(c, "losses.3.weight=1"), InputError);
+  for (const char* bad : {"a..b=1", ".a=1", "a.=1"})
+    CHECK_THROWS_WITH(set_override(c, bad), Catch::Contains("empty key component") && Catch::Contains(bad));
+}
+
+TEST_CASE("set_at_key_path sets a value (not text) and names the path it cannot follow", "[config]") {
+  json c = {{"losses", json::array({json{{"weight", 1.0}}})}, {"name", "x"}};
+  set_at_key_path(c, "description", "123");  // a string stays a string: no JSON parsing
+  set_at_key_path(c, "losses.0.weight", 2.5);
+  set_at_key_path(c, "method.feature_net.channels", 64);  // objects made on the way
+  CHECK(c["description"] == "123");
+  CHECK(c["losses"][0]["weight"] == 2.5);
+  CHECK(c["method"]["feature_net"]["channels"] == 64);
+  CHECK_THROWS_WITH(set_at_key_path(c, "losses.x", 1), Catch::Contains("'x' is not an array index"));
+  CHECK_THROWS_WITH(set_at_key_path(c, "name.first", 1), Catch::Contains("below a value that is not an object"));
+  CHECK_THROWS_WITH(set_at_key_path(c, "a..b", 1), Catch::Contains("key path 'a..b': empty key component"));
 }
 
 namespace {
