@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import keyword
 import math
-from typing import Any, Dict
+from typing import Any, Dict, Optional
 
 import numpy as np
 
@@ -153,10 +153,10 @@ class Evaluation(Record):
     __slots__ = ()
 
     @property
-    def passed(self) -> bool:
-        """Whether every row of the verdict passed (True when there is no verdict)."""
-        rows = self.verdict.rows if "verdict" in self else []
-        return all(r.pass_ is not False for r in rows)
+    def passed(self) -> Optional[bool]:
+        """Whether every row of the verdict passed; None when no row could be decided."""
+        rows = [r for r in (self.verdict.rows if "verdict" in self else []) if r.pass_ is not None]
+        return None if not rows else all(r.pass_ for r in rows)
 
 
 def evaluate(exemplar, output, bins: int = 100, r_max: float = 0.0, periodic_pcf: bool = False,
