@@ -79,8 +79,11 @@ def card(run_dir):
     with open(os.path.join(run_dir, "exemplar_vs_output.png"), "rb") as f:
         picture = base64.b64encode(f.read()).decode()
     name = run.get("name") or os.path.basename(os.path.normpath(run_dir))
+    config_path = os.path.join(run_dir, "config.json")
+    method = (read_json(config_path).get("method") or {}).get("type", "?") if os.path.exists(config_path) else "?"
     preset = (run.get("preset") or {}).get("name") if isinstance(run.get("preset"), dict) else run.get("preset")
-    settings = "quick settings" if run.get("quick") else (f"preset {preset}" if preset else "the paper's settings")
+    defaults = "the paper's settings" if method == "gabor" else "its defaults"
+    settings = "quick settings" if run.get("quick") else (f"preset {preset}" if preset else defaults)
     rows = []
     a = m.get("all", {})
     if a:
@@ -89,12 +92,17 @@ def card(run_dir):
         for key, label in (("pcf_mse", "PCF MSE"), ("wasserstein", "Wasserstein"), ("chamfer", "Chamfer")):
             if key in a:
                 rows.append((label, f"{a[key]:.3g}"))
-    verdict = m.get("verdict", {})
-    for r in verdict.get("rows", []):
-        if r.get("row") == "all":
-            word = "same K-function" if r.get("pass") else "K-function differs"
-            rows.append(("verdict", f"{word} (p = {r.get('p', float('nan')):.3g})"))
-    rows.append(("settings", f"{settings}, seed {run.get('seed', '?')}"))
+    # The verdict per row: all points, each class, each pair of classes (a multi-class pattern
+    # can pass on all points and fail on a class: the segregation unmarked K cannot see).
+    for r in m.get("verdict", {}).get("rows", []):
+        row = {"all": "all points", "class": f"class {r.get('class')}", "pair": f"classes {r.get('ci')}-{r.get('cj')}"}
+        label = row.get(r.get("row"), str(r.get("row")))
+        if r.get("p") is None:
+            rows.append((f"K test, {label}", "not decided (too few points)"))
+        else:
+            word = "same K-function" if r.get("pass") else "<b>K-function differs</b>"
+            rows.append((f"K test, {label}", f"{word} (p = {r['p']:.3g})"))
+    rows.append(("method", f"{html.escape(method)}, {settings}, seed {run.get('seed', '?')}"))
     threads = run.get("threads", "?")
     rows.append(("time", f"{run.get('total_seconds', 0):.1f} s, {threads} thread{'' if threads == 1 else 's'}, {run.get('processor', '?')}"))
     table = "".join(f"<tr><th>{html.escape(k)}</th><td>{v}</td></tr>" for k, v in rows)

@@ -24,7 +24,8 @@ def test_a_card_per_run_with_its_picture_and_measures(tmp_path):
     text = page.read_text()
     assert len(re.findall(r'<img [^>]*src="data:image/png;base64,[A-Za-z0-9+/=]{1000,}"', text)) == 2  # self-contained
     assert text.index("seed 1") < text.index("seed 2")  # sorted by name, then seed
-    assert text.count("PCF MSE") == 2 and "quick settings" in text
+    assert text.count("PCF MSE") == 2 and "gabor, quick settings" in text
+    assert text.count("K test, all points") == 2
     assert not [f for f in os.listdir(tmp_path) if f.endswith(".partial")]
 
 
