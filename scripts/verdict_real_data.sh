@@ -3,9 +3,10 @@
 # (scripts/spatstat_export.R), each judged against
 #   fitted      realisations of a model spatstat fits to it (scripts/spatstat_fitted.R)
 #   METHOD      ppsynth's outputs of each method given (gabor, tiled_copy, roveri2015, pcf2017)
-# by `ppsynth eval` (its verdict and the PCF MSE the project reports), one row per data set,
-# kind and seed in DIR/results.tsv:
-#   data set, kind, seed, pcf_mse (all), verdict p of each row ("all", "class k", "pair i-j").
+# by `ppsynth eval` (its verdict, the L-function's distance and the PCF MSE the project
+# reports), one row per data set, kind and seed in DIR/results.tsv:
+#   data set, kind, seed, pcf_mse (all), then per row ("all", "class k", "pair i-j") the
+#   verdict's p ("ROW=p") and sup |L_out - L_ex| in mean spacings ("L:ROW=value").
 #
 #   scripts/verdict_real_data.sh DIR "DATA SETS" "METHODS" "SEEDS" [GABOR FLAGS...]
 # GABOR FLAGS go to the gabor method's syntheses (the baselines run with their defaults).
@@ -36,10 +37,13 @@ row() {  # DATA SET KIND SEED EXEMPLAR OUTPUT [EVAL FLAGS...] -> a line of resul
   "$bin" eval -q --exemplar "$ex" --output "$out" --json --no-curves "$@" | /usr/bin/python3 -c '
 import json, sys
 r = json.load(sys.stdin)
+def name(row):
+    return row["row"] if row["row"] == "all" else ("class %d" % row["class"] if row["row"] == "class" else "pair %d-%d" % (row["ci"], row["cj"]))
 cells = sys.argv[1:4] + ["%.6g" % r["all"]["pcf_mse"]]
 for row in r["verdict"]["rows"]:
-    name = row["row"] if row["row"] == "all" else ("class %d" % row["class"] if row["row"] == "class" else "pair %d-%d" % (row["ci"], row["cj"]))
-    cells.append("%s=%s" % (name, "NA" if row["p"] is None else "%.4f" % row["p"]))
+    cells.append("%s=%s" % (name(row), "NA" if row["p"] is None else "%.4f" % row["p"]))
+for row in r["second_order"]["rows"]:
+    cells.append("L:%s=%.4f" % (name(row), row["l_sup_spacings"]))
 print("\t".join(cells))
 ' "$set" "$kind" "$seed"
 }
@@ -69,24 +73,28 @@ for set in $sets; do
   done
 done
 echo "results: $results"
-# Per data set and kind: the pass rate (p >= 0.05) and median p of each row, the median PCF MSE.
+# Per data set and kind: the pass rate (p >= 0.05) of each row, the median of sup |L_out - L_ex|
+# in mean spacings per row (smaller is closer), the median PCF MSE.
 /usr/bin/python3 - "$results" <<'EOF'
 import sys, collections, statistics
 rows = collections.OrderedDict()
 for line in open(sys.argv[1]):
     f = line.rstrip("\n").split("\t")
     s, kind, seed, pcf = f[:4]
-    ps = dict(x.split("=") for x in f[4:])
-    rows.setdefault((s, kind), collections.OrderedDict())[seed] = (seed, float(pcf), ps)  # a rerun's line replaces
+    cells = dict(x.split("=") for x in f[4:])
+    ps = {k: v for k, v in cells.items() if not k.startswith("L:")}
+    ls = {k[2:]: float(v) for k, v in cells.items() if k.startswith("L:")}
+    rows.setdefault((s, kind), collections.OrderedDict())[seed] = (seed, float(pcf), ps, ls)  # a rerun's line replaces
 rows = collections.OrderedDict((k, list(v.values())) for k, v in rows.items())
-print("| data set | output | seeds | pass rate at 5 % per row | median p per row | median PCF MSE (all) |")
+print("| data set | output | seeds | pass rate at 5 % per row | median sup L distance per row (mean spacings) | median PCF MSE (all) |")
 print("|---|---|---|---|---|---|")
 for (s, kind), runs in rows.items():
     names = list(runs[0][2].keys())
-    pr, mp = [], []
+    pr, ml = [], []
     for n in names:
         vals = [float(r[2][n]) for r in runs if r[2].get(n, "NA") != "NA"]
         pr.append("%s %d/%d" % (n, sum(v >= 0.05 for v in vals), len(vals)))
-        mp.append("%s %.3f" % (n, statistics.median(vals)) if vals else n + " -")
-    print("| %s | %s | %s | %s | %s | %.4f |" % (s, kind, ",".join(r[0] for r in runs), ", ".join(pr), ", ".join(mp), statistics.median(r[1] for r in runs)))
+        lv = [r[3][n] for r in runs if n in r[3]]
+        ml.append("%s %.3f" % (n, statistics.median(lv)) if lv else n + " -")
+    print("| %s | %s | %s | %s | %s | %.4f |" % (s, kind, ",".join(r[0] for r in runs), ", ".join(pr), ", ".join(ml), statistics.median(r[1] for r in runs)))
 EOF
