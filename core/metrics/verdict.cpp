@@ -30,6 +30,19 @@ std::vector<Domain> sub_windows(const Domain& d, double ax, double ay, double gu
   return w;
 }
 
+// Sub-windows of size a_x x a_y (guard shrinks each cell) on a block of at most
+// max_x x max_y cells of `d`'s grid, the block placed by the seed (all of `d` when it holds no
+// more cells than that).
+std::vector<Domain> sub_windows(const Domain& d, double ax, double ay, double guard, int max_x, int max_y,
+                                uint64_t seed) {
+  const int nx = static_cast<int>(std::floor(d.width() / ax + 1e-9)), ny = static_cast<int>(std::floor(d.height() / ay + 1e-9));
+  const int bx = std::min(nx, max_x), by = std::min(ny, max_y);
+  std::mt19937_64 rng(seed * 0xD1B54A32D192ED03ull + static_cast<uint64_t>(nx) * 1000003u + static_cast<uint64_t>(ny));
+  const int i0 = nx > bx ? static_cast<int>(rng() % static_cast<uint64_t>(nx - bx + 1)) : 0;
+  const int j0 = ny > by ? static_cast<int>(rng() % static_cast<uint64_t>(ny - by + 1)) : 0;
+  return sub_windows(Domain{d.x0 + i0 * ax, d.y0 + j0 * ay, d.x0 + (i0 + bx) * ax, d.y0 + (j0 + by) * ay}, ax, ay, guard);
+}
+
 // What a row measures on one sub-window's points: K of all, of a class, or of a class pair.
 struct RowSpec {
   std::string row;  // "all", "class", "pair"
@@ -99,7 +112,8 @@ json verdict(const PointSet& exemplar, const PointSet& output, const VerdictOpti
   const PointSet out = output.mapped_to(Domain{0, 0, O.width() / zoom, O.height() / zoom});
   const double ax = E.width() / opt.split, ay = E.height() / opt.split;
   const std::vector<Domain> ex_w = sub_windows(ex.domain(), ax, ay, opt.guard);
-  const std::vector<Domain> out_w = sub_windows(out.domain(), ax, ay, opt.guard);
+  const int block = kOutputBlockPerExemplarSide * opt.split;
+  const std::vector<Domain> out_w = sub_windows(out.domain(), ax, ay, opt.guard, block, block, opt.seed);
   const double sw = ax * (1 - opt.guard), sh = ay * (1 - opt.guard);
   const double r_max = 0.25 * std::min(sw, sh);
   Curve r(static_cast<size_t>(opt.r_values)), dr(r.size(), r_max / opt.r_values);

@@ -10,10 +10,13 @@
 //
 //   1. Both patterns in exemplar units: the output's coordinates divided by the zoom (output
 //      units per exemplar unit; given, or from the densities, crops.hpp).
-//   2. Units: the exemplar's window cut into split x split cells; the output cut into as many
-//      cells of that size as fit (from its corner). Each cell is shrunk by guard / 2 of its
-//      side on every side (guard = the share of a cell's side left between two sub-windows),
-//      so that neighbouring sub-windows share less of a cluster or of a hard core's reach.
+//   2. Units: the exemplar's window cut into split x split cells; the output cut into cells of
+//      that size from its corner, of which a block of at most kOutputBlockPerExemplarSide x
+//      split cells a side takes part (placed by the seed): the test of a larger output is the
+//      test of the default output's size, at a place in it. Each cell is shrunk by guard / 2
+//      of its side on every side (guard = the share of a cell's side left between two
+//      sub-windows), so that neighbouring sub-windows share less of a cluster or of a hard
+//      core's reach.
 //   3. Per sub-window, K with the translation correction (second_order.hpp) on r_values
 //      radii in (0, r_max], r_max = a quarter of the sub-window's shorter side (spatstat's
 //      rule); "all" takes every point, "class k" its points, "pair (i, j)" K_ij of i to j
@@ -35,6 +38,15 @@
 #include "core/point_set.hpp"
 
 namespace ppsynth {
+
+// The output's block of sub-windows is at most this many exemplar windows a side: the default
+// output's (2 x 2 copies), where the test's calibration is measured. Over more output
+// sub-windows than that, against the exemplar's few, a reassignment often leaves the small
+// group with alike sub-windows and a tiny variance, Hahn's T of such reassignments swamps
+// the observed one, and the power against a clustered exemplar falls as the output grows;
+// sub-windows scattered over a larger output instead make the test reject a clustered
+// process's own realisations too often (docs/verdict.md, "Power against the output's size").
+inline constexpr int kOutputBlockPerExemplarSide = 2;
 
 struct VerdictOptions {
   int split = 2;            // the exemplar in split x split sub-windows
