@@ -7,6 +7,8 @@
 // default's size, so its power does not fall as it grows.
 #include <catch2/catch.hpp>
 
+#include <utility>
+
 #include "core/error.hpp"
 #include "core/generators/matern_cluster.hpp"
 #include "core/generators/poisson_disk.hpp"
@@ -27,6 +29,17 @@ VerdictOptions fast_options() {
   return o;
 }
 
+// How many of `draws` (exemplar, output) pairs made by `pair(d)` the verdict rejects on all points.
+template <class MakePair>
+int rejected_of(int draws, const VerdictOptions& o, MakePair pair) {
+  int rejected = 0;
+  for (int d = 0; d < draws; ++d) {
+    const auto [ex, out] = pair(d);
+    if (p_all(verdict(ex, out, o)) < o.alpha) ++rejected;
+  }
+  return rejected;
+}
+
 PointSet two_classes(const PointSet& a, const PointSet& b) {
   PointSet ps(a.domain());
   for (size_t i = 0; i < a.size(); ++i) ps.add(a[i], 0);
@@ -37,14 +50,10 @@ PointSet two_classes(const PointSet& a, const PointSet& b) {
 }  // namespace
 
 TEST_CASE("verdict: uniform against uniform passes at about the nominal rate", "[metrics][verdict]") {
-  const VerdictOptions o = fast_options();
-  int rejected = 0;
   const int draws = 200;
-  for (int d = 0; d < draws; ++d) {
-    const PointSet ex = uniform_points(80, 1000 + d);
-    const PointSet out = uniform_points(320, 5000 + d, Domain{0, 0, 2, 2});
-    if (p_all(verdict(ex, out, o)) < o.alpha) ++rejected;
-  }
+  const int rejected = rejected_of(draws, fast_options(), [](int d) {
+    return std::pair{uniform_points(80, 1000 + d), uniform_points(320, 5000 + d, Domain{0, 0, 2, 2})};
+  });
   // Binomial(200, 0.05): 10 expected, 3..18 holds 99.5 % of the draws of a calibrated test.
   INFO(rejected << " of " << draws << " rejected");
   CHECK(rejected >= 3);
@@ -52,14 +61,10 @@ TEST_CASE("verdict: uniform against uniform passes at about the nominal rate", "
 }
 
 TEST_CASE("verdict: a Poisson-disk exemplar against uniform outputs of its count fails", "[metrics][verdict]") {
-  const VerdictOptions o = fast_options();
-  int rejected = 0;
   const int draws = 20;
-  for (int d = 0; d < draws; ++d) {
-    const PointSet ex = poisson_disk_points(80, 100 + d);
-    const PointSet out = uniform_points(320, 500 + d, Domain{0, 0, 2, 2});
-    if (p_all(verdict(ex, out, o)) < o.alpha) ++rejected;
-  }
+  const int rejected = rejected_of(draws, fast_options(), [](int d) {
+    return std::pair{poisson_disk_points(80, 100 + d), uniform_points(320, 500 + d, Domain{0, 0, 2, 2})};
+  });
   INFO(rejected << " of " << draws << " rejected");
   CHECK(rejected >= 18);
 }
@@ -70,25 +75,24 @@ TEST_CASE("verdict: a large output is tested on a block of the default output's 
   // the small group alike swamp the statistic, and on real clustered exemplars the power
   // against CSR fell to 0 as the output grew; docs/verdict.md), and the test keeps its power.
   const VerdictOptions o = fast_options();
-  int rejected = 0;
-  const int draws = 6;
-  for (int d = 0; d < draws; ++d) {
-    const PointSet ex = matern_cluster_points(100, 300 + d);
-    const PointSet out = uniform_points(1600, 700 + d, Domain{0, 0, 4, 4});
-    const nlohmann::json v = verdict(ex, out, o);
-    CHECK(v["rows"][0]["units"][0] == 4);
-    CHECK(v["rows"][0]["units"][1] == 16);
-    if (p_all(v) < o.alpha) ++rejected;
-  }
-  INFO(rejected << " of " << draws << " rejected");
-  CHECK(rejected >= 4);
-  // The block's place is the seed's: another seed, another block, the same count.
-  VerdictOptions other = o;
-  other.seed = 2;
   const PointSet ex = matern_cluster_points(100, 300);
   const PointSet out = uniform_points(1600, 700, Domain{0, 0, 4, 4});
-  CHECK(verdict(ex, out, other)["rows"][0]["units"][1] == 16);
-  CHECK(verdict(ex, out, o) == verdict(ex, out, o));
+  const nlohmann::json v = verdict(ex, out, o);
+  CHECK(v["rows"][0]["units"][0] == 4);
+  CHECK(v["rows"][0]["units"][1] == 16);
+  // The block's place is the seed's: another seed, another block of as many sub-windows.
+  VerdictOptions other = o;
+  other.seed = 2;
+  const nlohmann::json w = verdict(ex, out, other);
+  CHECK(w["rows"][0]["units"][1] == 16);
+  CHECK(w["rows"][0]["statistic"] != v["rows"][0]["statistic"]);
+  CHECK(verdict(ex, out, o) == v);
+  const int draws = 6;
+  const int rejected = rejected_of(draws, o, [](int d) {
+    return std::pair{matern_cluster_points(100, 300 + d), uniform_points(1600, 700 + d, Domain{0, 0, 4, 4})};
+  });
+  INFO(rejected << " of " << draws << " rejected");
+  CHECK(rejected >= 4);
 }
 
 TEST_CASE("verdict: rows per class and pair, the same p for the same inputs, untestable rows say why",
