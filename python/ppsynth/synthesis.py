@@ -8,7 +8,6 @@ after writing a checkpoint, raising KeyboardInterrupt.
 """
 from __future__ import annotations
 
-import copy
 import csv
 import json
 import numbers
@@ -196,7 +195,7 @@ def resolve_config(config: ConfigLike = None, seed: Optional[int] = None, overri
     elif isinstance(config, (str, os.PathLike)):
         c = _native.load_config(os.fspath(config))
     elif isinstance(config, Mapping):
-        c = copy.deepcopy(dict(config))
+        c = dict(config)  # only "seed" is set here; the binding copies the rest as it converts it
     else:
         raise TypeError(f"config: expected None, a dict or a file name, not {type(config).__name__}")
     if seed is not None:
