@@ -21,7 +21,7 @@
 // "pad": null or "auto" = 2 mean nearest-neighbour distances of the exemplar, or a length in
 // exemplar units (docs/lab/large_outputs.md).
 //
-// Torch-free: every method (optim/method.hpp) gets one in its SynthesisContext.
+// Torch-free: every method (optim/method/method.hpp) gets one in its SynthesisContext.
 #include <string>
 #include <vector>
 

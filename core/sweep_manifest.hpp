@@ -1,5 +1,5 @@
 #pragma once
-// A sweep's plan on disk (DIR/manifest.json; optim/sweep/sweep_plan.hpp plans it): one row per
+// A sweep's plan on disk (DIR/manifest.json; experiments/plan/sweep_plan.hpp plans it): one row per
 // run, and what a task needs to run it. Read back, every value is checked before anything uses
 // it -- the executors build job scripts and run directories from it -- so that an edited or
 // crafted manifest is an InputError naming the file and the key, never a shell line, a path

@@ -46,7 +46,7 @@ struct GaborMapsOptions {
   double upscale = 1.0;    // u
   int k = 30;              // neighbours per grid position
   // Each position's sum over its neighbours is divided by this; 0: by the neighbours summed,
-  // min(k, N). A tile of the output (optim/random_tiles.hpp) holding fewer points than the
+  // min(k, N). A tile of the output (optim/gabor/random_tiles.hpp) holding fewer points than the
   // exemplar's k takes the exemplar's divisor, so that a point weighs in it what it weighs
   // in the exemplar's maps, whatever the tile's count.
   int divisor = 0;

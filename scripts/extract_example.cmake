@@ -1,6 +1,6 @@
 # Writes the C++ example of docs/ARCHITECTURE.md (the ```cpp block after the line
 # "<!-- example: compiled and run by the tests -->") to OUT, so the example a reader sees is
-# the code the build compiles and a test runs (tests/optim/test_library_example.cpp).
+# the code the build compiles and a test runs (tests/optim/run/test_library_example.cpp).
 # Usage: cmake -DIN=docs/ARCHITECTURE.md -DOUT=file.cpp -P scripts/extract_example.cmake
 file(READ "${IN}" text)
 string(FIND "${text}" "<!-- example: compiled and run by the tests -->" at)

@@ -1,7 +1,7 @@
 #pragma once
 // Strip plots: one column per group (a configuration, a method), one dot per sample (a seed),
 // over a box from the first to the third quartile with the median, whiskers to the extremes.
-// Made for statistics over seeds (optim/sweep/gather.hpp), where five dots say more than a
+// Made for statistics over seeds (experiments/gather/gather.hpp), where five dots say more than a
 // mean: the reader sees the spread and every outlier. An optional reference value (a published
 // output's) and a bound (e.g. 1.25 x the reference) are drawn as horizontal lines across all
 // groups. Non-finite values are left out of the column (and counted in its label). Labels too

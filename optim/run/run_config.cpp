@@ -10,7 +10,7 @@
 #include "core/output_shape.hpp"
 #include "core/run_directory.hpp"
 #include "core/run_json.hpp"
-#include "optim/method.hpp"
+#include "optim/method/method.hpp"
 #include "optim/run/presets.hpp"
 #include "optim/run/runtime.hpp"
 

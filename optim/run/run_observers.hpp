@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "optim/method.hpp"
+#include "optim/method/method.hpp"
 
 namespace ppsynth {
 

@@ -16,7 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/point_set.hpp"
-#include "optim/method.hpp"
+#include "optim/method/method.hpp"
 
 namespace ppsynth {
 

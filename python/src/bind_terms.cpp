@@ -1,6 +1,6 @@
 // Loss terms written in Python, registered under a name like any compiled part:
 //   a feature loss  (LossRegistry, losses/loss.hpp): method.losses [{"type": NAME, ...}]
-//   a point term    (PointTermRegistry, optim/point_term.hpp): method.terms {NAME: {...}}
+//   a point term    (PointTermRegistry, optim/terms/point_term.hpp): method.terms {NAME: {...}}
 //
 // Tensors cross without copies through DLPack: Debian's python3-torch is the same LibTorch
 // build as libtorch-dev, so a capsule of a C++ tensor is a torch.Tensor on the same memory.
@@ -23,7 +23,7 @@
 #include "json_python.hpp"
 #include "core/error.hpp"
 #include "losses/loss.hpp"
-#include "optim/point_term.hpp"
+#include "optim/terms/point_term.hpp"
 
 namespace ppsynth::python {
 

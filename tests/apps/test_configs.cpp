@@ -16,12 +16,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include "optim/reproduce/reproduce_config.hpp"
-#include "optim/reproduce/reproduce_runner.hpp"
+#include "experiments/plan/reproduce_config.hpp"
+#include "experiments/reproduce/reproduce_runner.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/run/run_synthesis.hpp"
-#include "optim/sweep/sweep_plan.hpp"
-#include "optim/sweep/sweep_runs.hpp"
+#include "experiments/plan/sweep_plan.hpp"
+#include "experiments/execute/sweep_runs.hpp"
 #include "core/config/config.hpp"
 #include "core/log.hpp"
 #include "core/procedural/pptbf.hpp"

@@ -12,7 +12,7 @@
 #include <regex>
 
 #include "core/formats/text_table.hpp"
-#include "optim/sweep/sweep_plan.hpp"
+#include "experiments/plan/sweep_plan.hpp"
 #include "tests/support/child_process.hpp"
 #include "tests/support/run_command.hpp"
 #include "tests/support/run_compare.hpp"

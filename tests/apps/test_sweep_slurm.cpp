@@ -16,7 +16,7 @@
 #include <thread>
 
 #include "core/formats/text_table.hpp"
-#include "optim/sweep/sweep_plan.hpp"
+#include "experiments/plan/sweep_plan.hpp"
 #include "tests/support/run_command.hpp"
 #include "tests/support/run_compare.hpp"
 #include "tests/support/scratch_dir.hpp"

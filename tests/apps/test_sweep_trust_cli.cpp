@@ -13,7 +13,7 @@
 #include "core/atomic_file.hpp"
 #include "core/formats/text_table.hpp"
 #include "core/run_directory.hpp"
-#include "optim/sweep/sweep_plan.hpp"
+#include "experiments/plan/sweep_plan.hpp"
 #include "tests/support/child_process.hpp"
 #include "tests/support/run_command.hpp"
 #include "tests/support/scratch_dir.hpp"

@@ -7,12 +7,12 @@
 #include "losses/loss.hpp"
 #include "models/feature_net.hpp"
 #include "models/rasterizer.hpp"
-#include "optim/initializer.hpp"
-#include "optim/method.hpp"
-#include "optim/map_term.hpp"
-#include "optim/point_term.hpp"
-#include "optim/position_optimizer.hpp"
-#include "optim/stopping_rule.hpp"
+#include "optim/steps/initializer.hpp"
+#include "optim/method/method.hpp"
+#include "optim/gabor/map_term.hpp"
+#include "optim/terms/point_term.hpp"
+#include "optim/steps/position_optimizer.hpp"
+#include "optim/steps/stopping_rule.hpp"
 
 namespace {
 

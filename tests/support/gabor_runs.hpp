@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "optim/method.hpp"
+#include "optim/method/method.hpp"
 
 namespace ppsynth::test {
 

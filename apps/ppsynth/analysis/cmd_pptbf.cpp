@@ -14,7 +14,7 @@
 #include "core/config/config.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
-#include "core/procedural/gray_png.hpp"
+#include "core/render/gray_png.hpp"
 #include "core/procedural/pptbf.hpp"
 #include "core/procedural/pptbf_points.hpp"
 #include "core/render/image_grid.hpp"

@@ -2,13 +2,13 @@
 //                 [--protocol quadrants|crops|auto] [--stage N ...] [--force]`
 // Statistics over seeds of every finished run under the directories (sweeps, run directories,
 // folders of them): prints the table; with -o writes gather.csv, gather.md, gather.json,
-// per_seed.csv and index.html (strip plots). The library: optim/sweep/gather.hpp.
+// per_seed.csv and index.html (strip plots). The library: experiments/gather/gather.hpp.
 #include <iostream>
 
 #include "apps/ppsynth/command.hpp"
 #include "core/config/config.hpp"
 #include "core/error.hpp"
-#include "optim/sweep/gather.hpp"
+#include "experiments/gather/gather.hpp"
 
 namespace {
 

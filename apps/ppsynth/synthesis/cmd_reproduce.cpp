@@ -2,14 +2,14 @@
 // `ppsynth reproduce --list` | `ppsynth reproduce --check [NAME...]`
 // Re-runs a published experiment (a figure, table or ablation of Huang et al. 2022) from its
 // config in configs/paper/ and writes a self-contained report (reports/NAME/index.html, plus
-// CSV/Markdown tables). Schema: optim/reproduce/reproduce_config.hpp, docs/howto/reproduce_a_figure.md.
+// CSV/Markdown tables). Schema: experiments/plan/reproduce_config.hpp, docs/howto/reproduce_a_figure.md.
 #include <filesystem>
 #include <iostream>
 
 #include "apps/ppsynth/command.hpp"
 #include "apps/ppsynth/option_checks.hpp"
-#include "optim/reproduce/reproduce_config.hpp"
-#include "optim/reproduce/reproduce_runner.hpp"
+#include "experiments/plan/reproduce_config.hpp"
+#include "experiments/reproduce/reproduce_runner.hpp"
 #include "core/error.hpp"
 
 namespace {

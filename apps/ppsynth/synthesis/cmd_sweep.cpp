@@ -3,7 +3,7 @@
 // `ppsynth sweep run DIR --slurm [--dry-run]` the same as a SLURM job array
 // `ppsynth sweep status DIR [--json]`         done / running / interrupted / failed / pending
 // `ppsynth sweep task DIR --row ID [--manifest HASH]`  one row, by its id (what every executor runs)
-// The library: optim/sweep (plan, runs, executors). Statistics: `ppsynth gather`.
+// The library: experiments/plan (sweep_plan), experiments/execute (runs, executors). Statistics: `ppsynth gather`.
 #include <filesystem>
 #include <iostream>
 
@@ -12,8 +12,8 @@
 #include "apps/ppsynth/stop_signals.hpp"
 #include "core/error.hpp"
 #include "optim/run/run_synthesis.hpp"
-#include "optim/sweep/sweep_executors.hpp"
-#include "optim/sweep/sweep_runs.hpp"
+#include "experiments/execute/sweep_executors.hpp"
+#include "experiments/execute/sweep_runs.hpp"
 
 namespace {
 

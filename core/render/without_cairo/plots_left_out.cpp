@@ -1,6 +1,6 @@
 // A build without cairo (cmake -DPPSYNTH_WITH_CAIRO=OFF, for a machine that has no cairo
 // headers, such as a GPU node that cannot install packages): compiled instead of the drawing
-// files of core/render (and core/procedural/gray_png.cpp). Every figure is left out: the
+// files of core/render. Every figure is left out: the
 // first one says so as a warning, naming the option; each left-out file is logged at debug
 // level. Everything else a command does (point files, run.json, metrics) is written as usual.
 // The layout helpers answer as if every plot fitted: they only size figures that are not drawn.
@@ -8,7 +8,7 @@
 #include <atomic>
 
 #include "core/log.hpp"
-#include "core/procedural/gray_png.hpp"
+#include "core/render/gray_png.hpp"
 #include "core/render/image_file.hpp"
 #include "core/render/image_grid.hpp"
 #include "core/render/plot_curves.hpp"

@@ -23,7 +23,7 @@
 #include "core/log.hpp"
 #include "optim/baselines/pcf2017/local_pcf.hpp"
 #include "optim/baselines/pcf2017/pcf_synthesizer.hpp"
-#include "optim/method.hpp"
+#include "optim/method/method.hpp"
 
 namespace ppsynth::pcf2017 {
 

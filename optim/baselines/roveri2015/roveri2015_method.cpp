@@ -26,7 +26,7 @@
 #include "optim/baselines/roveri2015/patch_init.hpp"
 #include "optim/baselines/roveri2015/solver.hpp"
 #include "optim/baselines/roveri2015/synthesis_state.hpp"
-#include "optim/method.hpp"
+#include "optim/method/method.hpp"
 
 namespace ppsynth::roveri2015 {
 

@@ -2,7 +2,7 @@
 // Neighbourhood similarity of thesis Eq. 3.2 / 3.5 / A.6 and the sampling error of Eq. 3.7,
 // with analytic gradients (Appendix A.1.2; the appendix's equations are missing from the
 // text, they are re-derived in docs/explanation/roveri2015.md and checked against finite differences in
-// tests/baselines/test_roveri2015.cpp).
+// tests/optim/baselines/test_roveri2015.cpp).
 //
 // A neighbourhood is given by the points near its centre as RELATIVE positions: output
 // points u_i = x_i - q (around a quadrature point q) with channels a_i, exemplar points

@@ -16,7 +16,7 @@
 
 #include "core/config/config.hpp"
 #include "core/error.hpp"
-#include "optim/method.hpp"
+#include "optim/method/method.hpp"
 
 namespace ppsynth {
 

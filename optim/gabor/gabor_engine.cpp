@@ -1,0 +1,695 @@
+#include "optim/gabor/gabor_engine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <sstream>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "core/checkpoint_file.hpp"
+#include "core/memory_budget.hpp"
+#include "core/metrics/border.hpp"
+#include "models/gabor_feature_maps.hpp"
+#include "models/point_tensor.hpp"
+#include "optim/steps/initializer.hpp"
+#include "optim/gabor/random_tiles.hpp"
+
+namespace ppsynth {
+
+namespace {
+
+double since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// A canvas's start in blocks of about the paper's output (2 x 2 exemplar units), each
+// initialised on its own with its share of the points: the paper's best-candidate start
+// costs O(n^2) (m * i candidates for the i-th point), 4 minutes for 12,000 points, while
+// blocks keep it linear in the area. Only the start: block edges vanish in the synthesis.
+PointSet initialize_in_blocks(const Initializer& init, size_t n, int cls, uint64_t seed, const Domain& canvas,
+                              const SynthesisContext& ctx) {
+  const int bx = std::max(1, static_cast<int>(std::lround(canvas.width() / 2))),
+            by = std::max(1, static_cast<int>(std::lround(canvas.height() / 2)));
+  PointSet all(canvas);
+  size_t placed = 0;
+  for (int j = 0; j < by; ++j)
+    for (int i = 0; i < bx; ++i) {
+      const int b = j * bx + i;  // equal blocks: the cumulative share, rounded, sums to n
+      const size_t upto = static_cast<size_t>(std::llround(static_cast<double>(n) * (b + 1) / (bx * by)));
+      const Domain d{canvas.x0 + canvas.width() * i / bx, canvas.y0 + canvas.height() * j / by,
+                     canvas.x0 + canvas.width() * (i + 1) / bx, canvas.y0 + canvas.height() * (j + 1) / by};
+      if (upto == placed) continue;
+      ctx.poll();
+      const PointSet part = init.initialize(upto - placed, cls, seed + 7777777ull * b, d);
+      for (size_t k = 0; k < part.size(); ++k) all.add(part[k]);
+      placed = upto;
+    }
+  return all;
+}
+
+// The output before optimisation: per class, u^2 points per exemplar point (the paper's
+// unit square) or the density's count over the canvas (rectangles); attributes tiled from
+// the class's exemplar points (radius divided by u on the unit square); positions from the
+// initialiser or an explicit initialisation.
+PointSet initial_output(const PointSet& ex, const SynthesisContext& ctx, const Initializer& init,
+                        std::vector<std::vector<size_t>>& index_of_class) {
+  const OutputShape& shape = ctx.output;
+  const int u = shape.upscale, K = ex.num_classes();
+  const Domain canvas = shape.canvas(), area = shape.moving_area();
+  PointSet out(canvas);
+  out.set_class_labels(ex.class_labels());
+  for (auto& n : ex.attribute_names()) out.add_attribute(n);
+  const auto radius_col = ex.attribute_index("radius");
+  const auto counts = shape.class_counts(ex, area);
+  index_of_class.assign(K, {});
+  for (int c = 0; c < K; ++c) {
+    PointSet ex_c = ex.subset_class(c);
+    if (ex_c.empty()) continue;
+    const size_t n = shape.rectangle ? counts[c] : ex_c.size() * static_cast<size_t>(u * u);
+    PointSet start;
+    if (ctx.initialization) {
+      start = ctx.initialization->subset_class(c);
+      if (start.size() != n)
+        throw InputError("the initialisation has " + std::to_string(start.size()) + " points of class " +
+                         std::to_string(c) + "; the synthesis needs " + std::to_string(n));
+      for (size_t i = 0; i < n; ++i)
+        if (!area.contains(start[i]))
+          throw InputError("the initialisation's point " + std::to_string(i + 1) + " of class " + std::to_string(c) +
+                           " lies outside the synthesis domain [" + std::to_string(area.x0) + ", " + std::to_string(area.x1) +
+                           "] x [" + std::to_string(area.y0) + ", " + std::to_string(area.y1) + "]");
+    } else if (!shape.rectangle) {
+      start = init.initialize(n, c, ctx.seed + 1000003ull * (c + 1), canvas);
+    } else {
+      start = initialize_in_blocks(init, n, c, ctx.seed + 1000003ull * (c + 1), area, ctx);
+    }
+    for (size_t i = 0; i < n; ++i) {
+      auto attrs = ex_c.attributes_of(i % ex_c.size());
+      if (radius_col && !shape.rectangle) attrs[*radius_col] /= u;
+      index_of_class[c].push_back(out.size());
+      out.add(start[i], c, attrs);
+    }
+  }
+  return out;
+}
+
+// "border": "context": the pad around the rectangle holds copies of the exemplar, tiled from
+// the rectangle's corner, appended after the points to synthesise. They never move (final
+// from the start): the rectangle's points meet a pattern of the exemplar's own statistics
+// at the rectangle's edge instead of an empty border to fill, and the count is exact (a
+// cropped padded canvas loses 5-10 % of Tree1's points to its border). Measured, it helps
+// only exemplars like lines; on poisson, Tree1 and lemon it is worse than the crop
+// (docs/lab/large_outputs.md, "Context borders"), which is why "clean" stays the default.
+// The tiles are centred on the rectangle's corner (shifted by half a tile): a pad narrower
+// than half the exemplar then shows the exemplar's inside, not the seam of two copies, where
+// an exemplar whose points keep off its own border (lines) leaves an empty strip that the
+// rectangle's points would move to fill.
+void add_exemplar_pad(PointSet& out, const PointSet& ex, const OutputShape& shape) {
+  const Domain inner = shape.domain(), E = ex.domain();
+  const PointSet tiles = ex.tiled_over(shape.canvas(), Vec2{inner.x0 + 0.5 * E.width(), inner.y0 + 0.5 * E.height()});
+  for (size_t i = 0; i < tiles.size(); ++i)
+    if (!inner.contains(tiles[i])) out.add(tiles[i], tiles.cls(i), tiles.attributes_of(i));
+}
+
+std::vector<size_t> concat(const std::vector<size_t>& a, const std::vector<size_t>& b) {
+  std::vector<size_t> v = a;
+  v.insert(v.end(), b.begin(), b.end());
+  return v;
+}
+
+bool inside(const Domain& d, const Vec2& p) { return p.x >= d.x0 && p.x <= d.x1 && p.y >= d.y0 && p.y <= d.y1; }
+
+Domain intersection(const Domain& a, const Domain& b) {
+  return Domain{std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
+}
+
+// Every layer cut to the part {x0, y0, x1, y1} of the grid (fractions; x along columns, y
+// along rows, as the maps lie): the losses then measure that part only. Gram matrices
+// average over the positions they get and the deep correlation normalises by its overlap,
+// so a part is measured as a smaller grid would be.
+Features measured_part(const Features& f, const std::vector<double>& part) {
+  if (part.empty()) return f;
+  Features cut;
+  for (const auto& F : f) {
+    const int64_t H = F.size(2), W = F.size(3);
+    auto range = [](double a, double b, int64_t n) {
+      const int64_t i0 = std::clamp<int64_t>(std::llround(a * n), 0, n - 1);
+      return std::make_pair(i0, std::clamp<int64_t>(std::llround(b * n), i0 + 1, n));
+    };
+    const auto [c0, c1] = range(part[0], part[2], W);
+    const auto [r0, r1] = range(part[1], part[3], H);
+    cut.push_back(F.slice(3, c0, c1).slice(2, r0, r1));
+  }
+  return cut;
+}
+
+}  // namespace
+
+GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const SynthesisContext& ctx)
+    : p_(params), exemplar_(exemplar), shape_(ctx.output), ctx_(ctx), device_(ctx.device),
+      jitter_rng_(ctx.seed ^ 0x9e3779b97f4a7c15ull) {
+  validate(exemplar, "exemplar");
+  s_ = resolve_gabor_settings(p_, exemplar, shape_, ctx.quick);
+  if (shape_.rectangle && !p_["terms"].empty())  // they assume the unit torus (optim/terms/point_term.hpp)
+    throw config_error("method.terms", "point terms work on the paper's u x u outputs only, not with \"output\"");
+  if (shape_.rectangle && !p_["map_terms"].empty())
+    throw config_error("method.map_terms", "map terms work on the paper's u x u outputs only, not with \"output\"");
+  pipe_ = std::make_unique<GaborPipeline>(p_, s_, ctx.seed, device_);
+  map_terms_ = create_map_terms(p_["map_terms"]);
+  for (auto& t : map_terms_) t.term->begin_run(MapTermRun{p_, s_, exemplar, ctx.seed, device_});
+  terms_ = create_point_terms(p_["terms"]);
+  if (s_.relax_iterations > 0)
+    relax_terms_ = create_weighted_terms<PointTerm>(
+        json{{"separation", {{"weight", p_["border_relax"]["separation"]}}}}, "method.border_relax");
+  rule_ = StoppingRuleRegistry::instance().create(p_["convergence"], "method.convergence");
+  OptimizerRegistry::instance().entry(p_["optimizer"].value("type", ""), "method.optimizer.type");
+  auto init = InitializerRegistry::instance().create(p_["init"], "method.init");
+  init->set_poll([&ctx] { ctx.poll(); });
+  std::vector<std::vector<size_t>> out_index;
+  out_ = initial_output(exemplar, ctx, *init, out_index);
+  pad_begin_ = out_.size();
+  if (shape_.exemplar_pad) add_exemplar_pad(out_, exemplar, shape_);
+  if (!shape_.rectangle) {
+    plan_ = class_sigma_plan(exemplar, s_, out_index);
+  } else {
+    layout_ = window_layout(shape_.canvas(), shape_.moving_area(), s_.out_scale, s_.window_margin, 3 * s_.sigmas.front(),
+                            "method.window");
+    plan_ = window_plan(exemplar, s_, layout_);
+    state_.final_points.assign(out_.size(), 0);
+    std::fill(state_.final_points.begin() + static_cast<std::ptrdiff_t>(pad_begin_), state_.final_points.end(), 1);
+  }
+  stats_ = {{"grid_res", s_.res}, {"output_grid_res", s_.out_res}, {"grid_res_per_sigma", s_.sigma_res},
+            {"output_grid_res_per_sigma", s_.sigma_out_res}, {"k", s_.k}, {"sigmas", s_.sigmas},
+            {"mean_nn_distance", s_.mean_nn_distance},
+            {"map_terms", json::object()}, {"terms", json::object()}, {"runtime", runtime_record()}};
+  if (shape_.rectangle) {
+    const Domain c = shape_.canvas();
+    stats_["output"] = shape_.describe();
+    stats_["canvas"] = {c.x0, c.y0, c.x1, c.y1};
+    stats_["canvas_points"] = out_.size();
+    stats_["frozen_pad_points"] = out_.size() - pad_begin_;
+    stats_["windows"] = {{"nx", layout_.nx}, {"ny", layout_.ny}, {"side", layout_.side}, {"margin", layout_.margin},
+                         {"grid", s_.out_res}};
+  }
+  for (const auto& t : map_terms_) stats_["map_terms"][t.name] = t.weight;
+  for (const auto& t : terms_) stats_["terms"][t.name] = t.weight;
+  for (const auto& t : relax_terms_) stats_["border_relax_terms"][t.name] = t.weight;
+}
+
+void GaborEngine::restore(const std::string& bytes) {
+  const std::string& source = ctx_.resume_source;
+  state_ = deserialize_state(bytes, source);
+  if (!ctx_.checkpoint_key.is_null())
+    if (const std::string differs = checkpoint_key_difference(ctx_.checkpoint_key, state_.key); !differs.empty())
+      throw checkpoint_error(source, "made for another synthesis: " + differs);
+  check_restored(source);
+  for (size_t i = 0; i < out_.size(); ++i) out_[i] = state_.positions[i];
+  // The time and phases of the processes before this one (0 in checkpoints without them).
+  const json& ph = state_.phase_seconds;
+  seconds_before_ = ph.value("wall", 0.0);
+  phases_ = Phases{ph.value("targets", 0.0), ph.value("maps_forward", 0.0), ph.value("net_forward", 0.0),
+                   ph.value("loss_forward", 0.0), ph.value("backward", 0.0), ph.value("optimizer_step", 0.0)};
+  std::istringstream rng(state_.rng);
+  rng >> jitter_rng_;
+  if (!rng) throw checkpoint_error(source, "an unreadable generator state");
+  std::vector<ProgressEvent> earlier;
+  for (const auto& r : state_.history) {
+    ProgressEvent ev;
+    ev.stage = plan_[r.stage].label;
+    ev.stage_index = r.stage;
+    ev.stage_count = static_cast<int>(plan_.size());
+    ev.iteration = r.iteration;
+    ev.max_iterations = iteration_cap(plan_[r.stage]);
+    ev.loss = r.loss;
+    ev.seconds = r.seconds;
+    ev.window = plan_[r.stage].window.index;
+    ev.windows = plan_[r.stage].window.count;
+    earlier.push_back(ev);
+  }
+  ctx_.resumed(earlier);
+}
+
+void GaborEngine::check_restored(const std::string& source) const {
+  auto refuse = [&](const std::string& what) {
+    return checkpoint_error(source, what + " (a damaged checkpoint, or one of another synthesis)");
+  };
+  const SynthesisState& s = state_;
+  const size_t n = out_.size();
+  const int stages = static_cast<int>(plan_.size());
+  if (s.positions.size() != n)
+    throw refuse("it holds " + std::to_string(s.positions.size()) + " points; this synthesis has " + std::to_string(n));
+  const Domain area = shape_.canvas();
+  const double slack = 1e-6 * std::max(area.width(), area.height());  // float positions mapped back
+  for (size_t i = 0; i < n; ++i)
+    if (!area.contains(s.positions[i], slack)) throw refuse("point " + std::to_string(i) + " lies outside the synthesis domain");
+  if (s.stage > stages) throw refuse("stage " + std::to_string(s.stage) + " of a plan of " + std::to_string(stages));
+  if (s.stages.size() != static_cast<size_t>(s.stage))
+    throw refuse(std::to_string(s.stages.size()) + " finished stages recorded at stage " + std::to_string(s.stage));
+  const int cap = s.stage < stages ? iteration_cap(plan_[s.stage]) : 0;
+  if (s.iteration > cap) throw refuse("iteration " + std::to_string(s.iteration) + " of a stage of " + std::to_string(cap));
+  if (s.stage_losses.size() != static_cast<size_t>(s.iteration))
+    throw refuse(std::to_string(s.stage_losses.size()) + " losses recorded at iteration " + std::to_string(s.iteration));
+  if (!(s.stage_scale == -1 || s.stage_scale >= 0)) throw refuse("a negative loss scale");
+  for (const auto& r : s.history)
+    if (r.stage > s.stage || r.stage >= stages || r.iteration >= iteration_cap(plan_[r.stage]))
+      throw refuse("a loss recorded at stage " + std::to_string(r.stage) + ", iteration " + std::to_string(r.iteration));
+  if (s.final_points.size() != (shape_.rectangle ? n : 0)) throw refuse("final flags for another number of points");
+  for (uint8_t f : s.final_points)
+    if (f > 1) throw refuse("a final flag that is neither 0 nor 1");
+  if (!s.moving.defined()) {
+    if (s.stage_best.defined() || !s.optimizer.empty()) throw refuse("an optimiser state or best iterate without positions");
+    return;
+  }
+  if (s.stage >= stages) throw refuse("moving positions after the last stage");
+  const Stage& stage = plan_[s.stage];
+  if (s.moving.size(0) != static_cast<int64_t>(s.group_moving.size()))
+    throw refuse(std::to_string(s.moving.size(0)) + " moving positions for " + std::to_string(s.group_moving.size()) + " moving points");
+  if (s.stage_best.defined() && s.stage_best.sizes() != s.moving.sizes()) throw refuse("a best iterate of another shape");
+  // The group's points: indices into the output, each once, of the stage's classes (its own
+  // class moves); the paper's plan names them itself.
+  std::vector<char> seen(n, 0);
+  auto check_points = [&](const std::vector<int64_t>& idx, bool moving) {
+    for (int64_t i : idx) {
+      if (i < 0 || static_cast<size_t>(i) >= n) throw refuse("point index " + std::to_string(i) + " of " + std::to_string(n));
+      if (seen[i]++) throw refuse("point " + std::to_string(i) + " twice in its group");
+      const int c = out_.cls(static_cast<size_t>(i));
+      const bool ok = moving && stage.own_class >= 0 ? c == stage.own_class
+                             : std::find(stage.target_classes.begin(), stage.target_classes.end(), c) != stage.target_classes.end();
+      if (!ok) throw refuse("point " + std::to_string(i) + " (class " + std::to_string(c) + ") is not of " + stage.label);
+    }
+  };
+  check_points(s.group_moving, true);
+  check_points(s.group_frozen, false);
+  auto same = [](const std::vector<int64_t>& a, const std::vector<size_t>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](int64_t x, size_t y) { return static_cast<size_t>(x) == y; });
+  };
+  if (stage.window.torus && (!same(s.group_moving, stage.moving) || !same(s.group_frozen, stage.frozen)))
+    throw refuse("points other than those of " + stage.label);
+}
+
+PointSet GaborEngine::synthesised() const {
+  std::vector<size_t> idx(pad_begin_);
+  std::iota(idx.begin(), idx.end(), size_t{0});
+  PointSet p = out_.subset(idx);
+  p.set_domain(shape_.moving_area());
+  return p;
+}
+
+json GaborEngine::runtime_record() const {
+  const bool cuda = device_.is_cuda();
+  const std::string net = s_.feature_net.value("precision", "float32");
+  json r = {{"device", device_.str()},
+            // the network's arithmetic: bfloat16 as the net asks, else float32, on TF32 tensor cores where runtime.tf32 applies
+            {"precision", net != "float32" ? net : (cuda && ctx_.tf32 ? "tf32" : "float32")},
+            {"deterministic", cuda ? ctx_.deterministic : true}};
+  const std::string rasterizer = p_["rasterizer"].value("type", "");
+  if (rasterizer == "gabor" || rasterizer == "spatial")
+    r["gabor_maps"] = gabor_maps_path_name(gabor_maps_path(GaborMapsPath::automatic, device_));
+  return r;
+}
+
+json GaborEngine::phase_seconds() const {
+  return {{"targets", phases_.targets}, {"maps_forward", phases_.maps}, {"net_forward", phases_.net},
+          {"loss_forward", phases_.loss}, {"backward", phases_.backward}, {"optimizer_step", phases_.step}};
+}
+
+PointSet GaborEngine::run() {
+  run_start_ = Clock::now();
+  // The start as `--init` takes it back: a frozen exemplar pad is not part of it.
+  ctx_.start(shape_.exemplar_pad ? synthesised() : out_);
+  if (ctx_.resume_state) restore(*ctx_.resume_state);
+  last_checkpoint_ = Clock::now();
+  for (; state_.stage < static_cast<int>(plan_.size());) {
+    ctx_.poll();  // a stop between stages (a window's set-up, its empty stages) goes back to the last checkpoint
+    const Stage& stage = plan_[state_.stage];
+    if (stage.group != group_) enter_group(stage);
+    if (moving_idx_.empty()) {  // a window without points of this class left to move
+      stage_start_ = Clock::now();
+      finish_stage(stage);
+      continue;
+    }
+    enter_stage(stage);
+    run_stage(stage);
+    finish_stage(stage);
+    save_checkpoint();  // every stage boundary, the last one included
+  }
+  stats_["stages"] = state_.stages;
+  stats_["phase_seconds"] = phase_seconds();
+  stats_["seconds_before_resume"] = seconds_before_;
+  stats_["resolved"] = pipe_->resolved();
+  if (ctx_.stats) *ctx_.stats = stats_;
+  if (!shape_.rectangle) return out_;
+  // "context": the synthesised points, all inside the rectangle (the pad is the exemplar's).
+  // "clean": the canvas's border band (the pad) holds the points that parked on its border.
+  PointSet out = shape_.exemplar_pad ? synthesised() : out_.crop(shape_.domain());
+  out.set_domain(shape_.domain());
+  return out;
+}
+
+void GaborEngine::enter_group(const Stage& stage) {
+  group_ = stage.group;
+  window_ = stage.window;
+  const int K = exemplar_.num_classes(), class_step = group_ % K;  // window plans: K groups per window
+  if (p_["fresh_net_per_class"].get<bool>() && group_ > 0)
+    pipe_->redraw_network(class_step == 0 ? ctx_.seed : ctx_.seed + 7919ull * class_step);
+  // A group continues one optimisation: its points and positions come from the checkpoint
+  // when resumed inside it, else from the plan (or the window's choice) and the output.
+  const bool fresh = !state_.moving.defined();
+  if (fresh && window_.torus) {
+    state_.group_moving.assign(stage.moving.begin(), stage.moving.end());
+    state_.group_frozen.assign(stage.frozen.begin(), stage.frozen.end());
+  } else if (fresh) {
+    choose_window_points(stage);
+  }
+  moving_idx_.assign(state_.group_moving.begin(), state_.group_moving.end());
+  frozen_idx_.assign(state_.group_frozen.begin(), state_.group_frozen.end());
+  // The group's tensors go to the device once, here (and back at the stage's end).
+  frozen_ = to_local(out_.subset(frozen_idx_)).to(device_);
+  out_weights_ = s_.attr_cols.empty() ? torch::Tensor()
+                                      : map_weights(concat(frozen_idx_, moving_idx_), stage.target_classes).to(device_);
+  // Fresh: from the output; resumed: the checkpoint's (read on the CPU).
+  state_.moving = (fresh ? to_local(out_.subset(moving_idx_)) : state_.moving).to(device_);
+  if (state_.stage_best.defined()) state_.stage_best = state_.stage_best.to(device_);
+  state_.moving.set_requires_grad(true);
+  if (!window_.torus) {
+    const Domain& g = window_.grid;
+    const auto& m = window_.movable;
+    const auto local = torch::TensorOptions().dtype(state_.moving.scalar_type()).device(device_);
+    lo_ = torch::tensor({{(m.x0 - g.x0) / g.width(), (m.y0 - g.y0) / g.height()}}, torch::kFloat64).to(local);
+    hi_ = torch::tensor({{(m.x1 - g.x0) / g.width(), (m.y1 - g.y0) / g.height()}}, torch::kFloat64).to(local);
+  }
+  measured_.clear();
+  if (!window_.torus && s_.statistics_in_output) {
+    const Domain& g = window_.grid;
+    const Domain o = intersection(g, shape_.domain());
+    measured_ = {(o.x0 - g.x0) / g.width(), (o.y0 - g.y0) / g.height(), (o.x1 - g.x0) / g.width(), (o.y1 - g.y0) / g.height()};
+  }
+  for (auto* terms : {&terms_, &relax_terms_})
+    for (auto& t : *terms) t.term->begin_class(ClassStage{exemplar_, out_, moving_idx_, frozen_idx_, s_.upscale, device_});
+  for (auto& t : map_terms_) t.term->begin_group(stage, out_);
+}
+
+void GaborEngine::choose_window_points(const Stage& stage) {
+  std::vector<char> in_play(exemplar_.num_classes(), 0);
+  for (int c : stage.target_classes) in_play[c] = 1;
+  state_.group_moving.clear();
+  state_.group_frozen.clear();
+  for (size_t i = 0; i < out_.size(); ++i) {
+    if (i % 65536 == 0) ctx_.poll();
+    const int c = out_.cls(i);
+    if (c < 0 || c >= static_cast<int>(in_play.size()) || !in_play[c]) continue;
+    if (c == stage.own_class && !state_.final_points[i] && inside(window_.movable, out_[i]))
+      state_.group_moving.push_back(static_cast<int64_t>(i));
+    else if (inside(window_.context, out_[i]))
+      state_.group_frozen.push_back(static_cast<int64_t>(i));
+  }
+}
+
+torch::Tensor GaborEngine::to_local(const PointSet& points) const {
+  if (window_.torus) return positions_tensor(points);  // the unit square is its own grid
+  auto xy = positions_tensor(points, torch::kFloat64);
+  const Domain& g = window_.grid;
+  xy = (xy - torch::tensor({{g.x0, g.y0}}, torch::kFloat64)) / g.width();
+  return xy.to(torch::kFloat32);
+}
+
+torch::Tensor GaborEngine::confined(const torch::Tensor& moving) const {
+  if (window_.torus) return wrap_unit(moving);
+  // Kept inside the movable rectangle with an identity gradient (as wrap_unit's): a point
+  // pushed past the edge sits on it, and the loss can still pull it back.
+  return moving + (torch::max(torch::min(moving, hi_), lo_) - moving).detach();
+}
+
+torch::Tensor GaborEngine::map_weights(const std::vector<size_t>& rows, const std::vector<int>& classes) const {
+  // Each column divided by its maximum over every output point of the stage's classes (the
+  // paper's plan: exactly `rows`; a window sees only part of them, the scale stays global).
+  std::vector<char> in_play(exemplar_.num_classes(), 0);
+  for (int c : classes) in_play[c] = 1;
+  const int64_t n = static_cast<int64_t>(rows.size()), A = static_cast<int64_t>(s_.attr_cols.size());
+  auto w = torch::ones({n, A}, torch::kFloat64);
+  auto acc = w.accessor<double, 2>();
+  for (int64_t a = 0; a < A; ++a) {
+    const auto& col = out_.attribute_column(s_.attr_cols[a]);
+    double mx = -std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < out_.size(); ++i)
+      if (in_play[out_.cls(i)]) mx = std::max(mx, col[i]);
+    if (!(mx > 0)) continue;
+    for (int64_t r = 0; r < n; ++r) acc[r][a] = col[rows[r]] / mx;
+  }
+  return w.to(torch::kFloat32);
+}
+
+void GaborEngine::enter_stage(const Stage& stage) {
+  const int A = static_cast<int>(s_.attr_cols.size());
+  const auto t0 = Clock::now();
+  pipe_->set_neighbours(stage.k);
+  pipe_->set_grid(stage.sigma_index);
+  const PointSet ex_active = exemplar_.subset_classes(stage.target_classes);
+  pipe_->set_targets(positions_tensor(ex_active), A > 0 ? normalized_attributes(ex_active, s_.attr_cols) : torch::Tensor(),
+                     stage.sigma);
+  rule_->begin_stage(ex_active);
+  for (auto& t : map_terms_) t.term->begin_stage(stage);
+  phases_.targets += since(t0);
+  relax_mask_ = torch::Tensor();
+  if (stage.border_relax) {
+    relax_parked_ = parked_over_uniform();
+    // A class the relax leaves alone (method.border_relax.parked) keeps every point where it is.
+    relax_mask_ = (relax_this_class() ? border_band() : torch::zeros({static_cast<int64_t>(moving_idx_.size()), 1}, torch::kBool))
+                      .to(device_);
+  }
+  json optimizer = p_["optimizer"];
+  if (stage.border_relax && s_.relax_lr > 0) optimizer["lr"] = json::array({s_.relax_lr});
+  optimizer_ = OptimizerRegistry::instance().create(optimizer, "method.optimizer", state_.moving, stage.sigma_index);
+  if (!state_.optimizer.empty()) optimizer_->load_state(state_.optimizer, ctx_.resume_source);  // resumed inside the stage
+  stage_start_ = Clock::now();
+  // Resumed inside the stage: its clock goes on from the last iteration recorded before.
+  if (state_.iteration > 0 && !state_.history.empty() && state_.history.back().stage == state_.stage)
+    stage_start_ -= std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(state_.history.back().seconds));
+  if (state_.iteration == 0) {
+    ProgressEvent begin = event(stage);
+    if (stage.border_relax)  // why a relax moves nothing, where the user watches
+      begin.note = fmt::format("{:.2f} x uniform points' share within 1 % of the edge (method.border_relax.parked {:g}): {}",
+                               relax_parked_, s_.relax_parked, relax_mask_.any().item<bool>() ? "relaxing its band" : "nothing to move");
+    ctx_.stage_begin(begin);
+  }
+}
+
+int GaborEngine::iteration_cap(const Stage& stage) const {
+  return stage.border_relax ? s_.relax_iterations : s_.max_iterations;
+}
+
+bool GaborEngine::relax_this_class() const {
+  if (s_.relax_parked <= 0 || relax_parked_ > s_.relax_parked) return true;
+  // An earlier class parked and was relaxed: this one is relaxed too, parked or not. Its
+  // sigma stages measured the unrolled grid, where its pairs with the relaxed classes
+  // across the seam were never seen (lemon_4c_v2's later classes: docs/lab/large_outputs.md).
+  // state_.stages is the checkpoint's, so a resumed run decides as the uninterrupted one.
+  return std::any_of(state_.stages.begin(), state_.stages.end(), [](const json& s) { return s.value("relaxed", false); });
+}
+
+double GaborEngine::parked_over_uniform() const {
+  PointSet own;  // the u x u torus's unit square
+  for (size_t i : moving_idx_) own.add(out_[i]);
+  return moving_idx_.empty() ? 0.0 : border_fraction(own) / uniform_border_fraction(own.domain());
+}
+
+torch::Tensor GaborEngine::border_band() const {
+  // From the positions the stage starts from (out_ changes only at stage ends, and a
+  // checkpoint holds it), so a run resumed inside the stage moves the same points.
+  const double b = s_.relax_band;
+  auto mask = torch::zeros({static_cast<int64_t>(moving_idx_.size()), 1}, torch::kBool);
+  auto m = mask.accessor<bool, 2>();
+  for (size_t i = 0; i < moving_idx_.size(); ++i) {
+    const Vec2 p = out_[moving_idx_[i]];
+    m[static_cast<int64_t>(i)][0] = p.x < b || p.x > 1 - b || p.y < b || p.y > 1 - b;
+  }
+  return mask;
+}
+
+ProgressEvent GaborEngine::event(const Stage& stage) const {
+  ProgressEvent ev;
+  ev.stage = stage.label;
+  ev.stage_index = state_.stage;
+  ev.stage_count = static_cast<int>(plan_.size());
+  ev.iteration = state_.iteration;
+  ev.max_iterations = iteration_cap(stage);
+  ev.seconds = since(stage_start_);
+  ev.window = stage.window.index;
+  ev.windows = stage.window.count;
+  if (!stage.window.torus) ev.window_grid = stage.window.grid;
+  const size_t next = static_cast<size_t>(state_.stage) + 1;
+  ev.window_ends = stage.window.count <= 1 || next >= plan_.size() || plan_[next].window.index != stage.window.index;
+  return ev;
+}
+
+torch::Tensor GaborEngine::measure(const torch::Tensor& points, const torch::Tensor& weights, const torch::Tensor& jitter,
+                                   const Stage& stage, bool tile) {
+  const auto ta = Clock::now();
+  auto maps = tile ? pipe_->tile_maps(points, weights, stage.sigma, jitter) : pipe_->output_maps(points, weights, stage.sigma, jitter);
+  const auto tb = Clock::now();
+  auto feats = measured_part(pipe_->features(maps), measured_);
+  const auto tc = Clock::now();
+  auto l = pipe_->loss(feats);
+  phases_.maps += std::chrono::duration<double>(tb - ta).count();
+  phases_.net += std::chrono::duration<double>(tc - tb).count();
+  phases_.loss += since(tc);
+  return l;
+}
+
+torch::Tensor GaborEngine::evaluate(const Stage& stage) {
+  const auto mv = confined(relax_mask_.defined() ? torch::where(relax_mask_, state_.moving, state_.moving.detach()) : state_.moving);
+  auto pts = frozen_.size(0) > 0 ? torch::cat({frozen_, mv}) : mv;
+  torch::Tensor l, jitter;
+  if (s_.measure_tiles()) {  // the mean over the tiles of the cut (optim/gabor/random_tiles.hpp)
+    const int u = s_.upscale;
+    const auto tiles = cut_into_tiles(pts, u, tile_offset(ctx_.seed, state_.stage, state_.iteration, u));
+    for (const auto& t : tiles) {
+      const auto w = out_weights_.defined() ? out_weights_.index_select(0, t.rows) : torch::Tensor();
+      const auto v = measure(t.local, w, pipe_->draw_jitter(jitter_rng_, true), stage, true) / static_cast<double>(u * u);
+      l = l.defined() ? l + v : v;
+    }
+  } else {
+    if (s_.measure == GaborSettings::Measure::rolled || stage.border_relax) pts = roll_torus(pts, tile_offset(ctx_.seed, state_.stage, state_.iteration, 1));
+    jitter = pipe_->draw_jitter(jitter_rng_);
+    l = measure(pts, out_weights_, jitter, stage, false);
+  }
+  const auto tc = Clock::now();
+  for (auto& t : map_terms_) {  // beside the paper's (optim/gabor/map_term.hpp); their maps and nets count as loss time
+    const auto v = t.term->evaluate(mv, jitter, stage);
+    if (v.defined()) l = l + t.weight * v;
+  }
+  // The paper's loss (+ map terms) at the stage's first evaluation: the unit of the point
+  // terms, so one weight serves every scene and sigma (optim/terms/point_term.hpp).
+  const bool relax_terms = stage.border_relax && !relax_terms_.empty();
+  if ((!terms_.empty() || relax_terms) && state_.stage_scale < 0) state_.stage_scale = l.item<double>();
+  for (auto& t : terms_) l = l + t.weight * state_.stage_scale * t.term->evaluate(mv, frozen_);
+  if (relax_terms)
+    for (auto& t : relax_terms_) l = l + t.weight * state_.stage_scale * t.term->evaluate(mv, frozen_);
+  const auto td = Clock::now();
+  l.backward();
+  phases_.loss += std::chrono::duration<double>(td - tc).count();
+  phases_.backward += since(td);
+  return l;
+}
+
+void GaborEngine::run_stage(const Stage& stage) {
+  // The rule's verdict on the points as they are after iteration `it`; a new best is kept
+  // (optim/steps/stopping_rule.hpp). True: the stage has converged.
+  auto judge = [&](int it) {
+    const StopVerdict v =
+        rule_->judge(StageView{state_.stage_losses, it, [this] { return points_in_play(); }, window_.torus,
+                               window_.torus ? 1.0 / s_.upscale : 1.0},
+                     state_.stage_watch);
+    if (v.best) state_.stage_best = state_.moving.detach().clone();
+    return v.stop;
+  };
+  // A border relax runs its fixed count: its pattern is the finished stage's, judged already.
+  const bool judged = !stage.border_relax;
+  // A relax with no point to move (its class does not park, or none is near the edge) ends at
+  // once: its iterations would leave every point where it is.
+  if (stage.border_relax && !relax_mask_.any().item<bool>()) return;
+  if (judged && state_.iteration == 0) judge(-1);  // the stage's start, a candidate to end on (a stop there is ignored)
+  while (state_.iteration < iteration_cap(stage)) {
+    const int it = state_.iteration;
+    const auto ts = Clock::now();
+    const double inner_before = phases_.maps + phases_.net + phases_.loss + phases_.backward;
+    const double lv = optimizer_->step([&] { return evaluate(stage); });
+    phases_.step += since(ts) - (phases_.maps + phases_.net + phases_.loss + phases_.backward - inner_before);
+    if (!std::isfinite(lv))
+      throw InputError("the loss became " + std::to_string(lv) + " at " + stage.label + ", iteration " + std::to_string(it));
+    state_.stage_losses.push_back(lv);
+    state_.iteration = it + 1;
+    ProgressEvent ev = event(stage);
+    ev.iteration = it;
+    ev.loss = lv;
+    state_.history.push_back({state_.stage, it, lv, ev.seconds});
+    ctx_.iteration(ev);
+    if (judged && judge(it)) break;
+    if (ctx_.stop_requested()) {
+      save_checkpoint();
+      throw SynthesisInterrupted();
+    }
+    if (ctx_.save_checkpoint && since(last_checkpoint_) >= ctx_.checkpoint_seconds) save_checkpoint();
+  }
+}
+
+void GaborEngine::finish_stage(const Stage& stage) {
+  {  // the stage's positions, wrapped, into the output (snapshots and later stages see them)
+    torch::NoGradGuard ng;
+    // A rule that keeps the stage's best iterate: the stage ends there (the group's next
+    // stage starts from it too, as `moving` is the tensor it goes on with).
+    if (state_.stage_best.defined()) state_.moving.copy_(state_.stage_best);
+    auto w = confined(state_.moving).to(torch::kCPU, torch::kFloat64);
+    auto a = w.accessor<double, 2>();
+    for (size_t i = 0; i < moving_idx_.size(); ++i) out_[moving_idx_[i]] = to_output(window_, a[i][0], a[i][1]);
+  }
+  ProgressEvent ev = event(stage);
+  state_.stages.push_back({{"stage", stage.label}, {"class", stage.own_class}, {"sigma", stage.sigma}, {"k", stage.k},
+                           {"iterations", state_.iteration},
+                           {"final_loss", state_.stage_losses.empty() ? 0.0 : state_.stage_losses.back()},
+                           {"seconds", ev.seconds}});
+  if (stage.border_relax) {  // what decided it
+    state_.stages.back()["parked_over_uniform"] = relax_parked_;
+    state_.stages.back()["relaxed"] = state_.iteration > 0;
+  }
+  ctx_.stage_end(ev, out_);
+  // The next stage starts: a fresh optimiser and convergence window; a new group also
+  // starts from the wrapped output positions.
+  ++state_.stage;
+  state_.iteration = 0;
+  state_.stage_losses.clear();
+  state_.stage_watch.clear();
+  state_.stage_best = torch::Tensor();
+  state_.stage_scale = -1;
+  state_.optimizer.clear();
+  optimizer_.reset();
+  relax_mask_ = torch::Tensor();
+  if (state_.stage >= static_cast<int>(plan_.size()) || plan_[state_.stage].group != stage.group) {
+    if (!window_.torus)  // the window's own part is done: no later window moves it
+      for (size_t i : moving_idx_)
+        if (inside(window_.interior, out_[i])) state_.final_points[i] = 1;
+    state_.moving = torch::Tensor();
+  }
+  // A window is done: its buffers go back to the kernel, so that the heap kept for speed
+  // within a window (optim/run/runtime.hpp) does not grow window after window.
+  if (!window_.torus && ev.window_ends) release_freed_memory();
+}
+
+PointSet GaborEngine::points_in_play() const {
+  torch::NoGradGuard ng;
+  const auto mv = confined(state_.moving);
+  const auto local = (frozen_.size(0) > 0 ? torch::cat({frozen_, mv}) : mv).to(torch::kCPU, torch::kFloat64);
+  const auto a = local.accessor<double, 2>();
+  const Domain& g = window_.grid;
+  // A window's pattern is its grid's part of where points move: a frozen exemplar pad
+  // ("context") is the exemplar's, and counting it would hide how the moving points change.
+  PointSet ps(window_.torus ? Domain{} : intersection(g, shape_.moving_area()));
+  const int64_t frozen = frozen_.size(0);
+  for (int64_t i = 0; i < local.size(0); ++i) {
+    // Moving points as finish_stage writes them (held inside the movable part); a window's
+    // frozen ones where they are, which may be past the grid (the filter below leaves those
+    // out). On the torus both are the positions themselves.
+    const bool frozen_in_window = i < frozen && !window_.torus;
+    const Vec2 p = frozen_in_window ? Vec2{g.x0 + g.width() * a[i][0], g.y0 + g.height() * a[i][1]} : to_output(window_, a[i][0], a[i][1]);
+    if (inside(ps.domain(), p)) ps.add(p);  // a window's frozen context beyond its grid is not its pattern
+  }
+  return ps;
+}
+
+void GaborEngine::save_checkpoint() {
+  last_checkpoint_ = Clock::now();
+  if (!ctx_.save_checkpoint) return;
+  state_.positions = out_.positions();
+  state_.optimizer = optimizer_ ? optimizer_->save_state() : OptimizerState();
+  state_.key = ctx_.checkpoint_key.is_null() ? json::object() : ctx_.checkpoint_key;
+  std::ostringstream rng;
+  rng << jitter_rng_;
+  state_.rng = rng.str();
+  // Wall time so far over every process of the run: a resumed run reports its whole time.
+  state_.phase_seconds = phase_seconds();
+  state_.phase_seconds["wall"] = seconds_before_ + since(run_start_);
+  ctx_.save_checkpoint(serialize_state(state_));
+}
+
+}  // namespace ppsynth

@@ -1,0 +1,351 @@
+#include "optim/gabor/gabor_pipeline.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/config/param_bounds.hpp"
+#include "core/memory_budget.hpp"
+#include "core/metrics/nearest_neighbor.hpp"
+#include "models/feature_grid.hpp"
+#include "models/gabor_feature_maps.hpp"
+#include "optim/gabor/sigma_schedule.hpp"
+#include "optim/gabor/window_plan.hpp"
+
+namespace ppsynth {
+
+// method.border_relax.iterations "auto" on the u x u square: the count the clean-border
+// criterion was measured with (docs/lab/large_outputs.md).
+constexpr int k_auto_relax_iterations = 60;
+
+json gabor_defaults() {
+  return json{
+      {"c1", 1.0},
+      {"c2", 2.6},
+      {"num_sigmas", 4},
+      // res 0 = clamp(round(9/d), min_res, max_res); per_sigma: coarser grids at the coarser
+      // sigmas (GaborSettings::sigma_res), the finest stage's grid unchanged
+      {"grid", {{"res", 0}, {"min_res", 128}, {"max_res", 256}, {"per_sigma", false}}},
+      {"k", GaborMapsOptions{}.k},                                 // neighbours: min(M, k)
+      // M = the exemplar points of the classes in play at a class stage (the published disk
+      // and multi-attribute optimisers); false: M = all exemplar points (its point optimiser).
+      {"k_per_stage", true},
+      {"jitter", true},
+      {"rasterizer", {{"type", "gabor"}}},
+      {"feature_net", {{"type", "random"}}},
+      {"losses", json::array({json{{"type", "gram"}, {"layers", {0, 1, 2}}, {"weight", 0.08}},
+                              json{{"type", "correlation"}, {"layers", {2}}, {"weight", 1.0}}})},
+      {"optimizer", {{"type", "adam"}}},
+      {"max_iterations", 500},
+      // When a sigma stage stops before max_iterations (optim/steps/stopping_rule.hpp): "loss" (the
+      // paper's) or "pattern" (the PCF stops improving).
+      {"convergence", {{"type", "loss"}}},
+      {"init", {{"type", "best_candidate"}}},
+      {"class_order", json::array()},  // empty = file order
+      {"map_attributes", nullptr},  // null or "auto": every non-constant attribute; or a list of names ([] = none)
+      {"fresh_net_per_class", false},
+      // Not in the paper: losses on maps of their own (optim/gabor/map_term.hpp), by registered
+      // name: {"class_own": {"weight": 1}}. Empty = the paper.
+      {"map_terms", json::object()},
+      // Not in the paper: losses on the positions themselves (optim/terms/point_term.hpp), by
+      // registered name: {"separation": {"weight": 1}, "pcf_match": {"weight": 10}}. Empty = the paper.
+      {"terms", json::object()},
+      // Where the losses measure the output of the paper's u x u square: "grid" (its whole
+      // grid, as published: points park on its border), "tiles" (u x u tiles of the
+      // exemplar's size cut at a random offset every iteration, each rasterised and measured
+      // as the exemplar is) or "rolled" (the whole grid of the torus rolled by a random offset
+      // every iteration: the grid's edge never stays where a point could park on it;
+      // optim/gabor/random_tiles.hpp).
+      {"measure", "grid"},
+      // Not in the paper: after each class's sigma stages on the u x u torus, `iterations` more
+      // at the finest sigma that move only that class's points within `band` mean
+      // nearest-neighbour spacings (of the output) of the grid's edge, the rest frozen, with the
+      // grid rolled by a random offset every iteration as "rolled" does: the points the
+      // published grid parked on its edge go back into the pattern around them (Adam at `lr`,
+      // null: the finest sigma's rate). 0 iterations: the paper's border. `separation`: the
+      // weight of the separation point term (optim/terms/separation_term.hpp) in the relax stages
+      // only, beside any method.terms: across the rolled seam the Gabor losses pull a class's
+      // close pairs into one point (lemon_4c_v2's class 0: docs/lab/large_outputs.md), and the
+      // term keeps the exemplar's spacing while the sigma stages stay the paper's. 0: off.
+      // `parked`: a class is relaxed only when more of its points lie within 1 % of the
+      // grid's edge (the border band) than `parked` x what uniform points put there
+      // (1.5: the bound; 0: every class), or when an earlier class was relaxed (its
+      // pairs with that class across the seam were never measured). Where no class parks
+      // there is no pile to take apart, and a relax would only spread the band (it keeps the
+      // band's count): poisson_n64c2_point at the full settings parks nowhere and came out
+      // thinner at the seam (docs/lab/large_outputs.md). `after`: "all" puts the relaxes after
+      // every class's sigma stages, which then are the paper's bit for bit as on a one-class
+      // exemplar: class by class in class order, its band moving, every other point of every
+      // class frozen, against the targets of all classes. "class" puts each class's relax
+      // right after its own sigma stages, so the later classes are synthesised beside the
+      // relaxed ones: lemon_4c_v2 scored worse so (docs/lab/large_outputs.md). One class: the same.
+      // `iterations` null or "auto" (the default: the clean border, the published one
+      // kept as an option): 60 on the u x u square measured as one grid without map_terms, 0 where
+      // there is no fixed grid edge to relax (rectangles take output.border instead; "tiles"
+      // and "rolled" move the edge). 0: the paper's border, as the shipped configs/runs set it
+      // to reproduce the paper (configs/paper runs them).
+      {"border_relax", {{"iterations", nullptr}, {"band", 1.0}, {"lr", nullptr}, {"separation", 1.0}, {"parked", 1.5}, {"after", "all"}}},
+      // Rectangle outputs ("output": {"size"} or {"points"}) run window by window
+      // (optim/gabor/window_plan.hpp): windows of at most `pixels` grid positions across; a margin
+      // of 3 sigma_max + `receptive_field` positions (the network's half-width) on each side
+      // of an interior (null or "auto"), or a length in exemplar units. `statistics`: where
+      // the losses measure the output's features: "grid" (the whole window grid, as the paper
+      // measures its square) or "output" (the grid's part inside the output rectangle: the
+      // pad of a clean or context border is seen by the maps but not measured, so its outer
+      // edge, where plane maps lose a point's influence, asks nothing of the rectangle).
+      {"window", {{"pixels", 384}, {"margin", nullptr}, {"receptive_field", 16}, {"statistics", "grid"}}},
+      // --quick: every knob that sets the cost, shrunk (tests and smoke runs).
+      {"quick", {{"res", 24}, {"channels", 8}, {"max_iterations", 4}, {"num_sigmas", 2}}},
+  };
+}
+
+json gabor_bounds() {
+  return json{
+      {"c1", "(0, inf)"},
+      {"c2", "(0, inf)"},
+      {"num_sigmas", "int [1, 64]"},
+      {"grid", {{"res", "int [0, 8192]"}, {"min_res", "int [8, 8192]"}, {"max_res", "int [8, 8192]"}}},
+      {"k", "int [1, 1000000]"},
+      {"max_iterations", "int [1, 1000000000]"},
+      {"class_order", "int [0, 1000000]"},
+      {"window", {{"pixels", "int [16, 8192]"}, {"receptive_field", "int [0, 1000]"}}},
+      {"border_relax", {{"band", "(0, inf)"}, {"separation", "[0, inf)"}, {"parked", "[0, 1000]"}}},
+      {"quick", {{"res", "int [8, 8192]"}, {"channels", "int [1, 4096]"}, {"max_iterations", "int [1, 1000000000]"},
+                 {"num_sigmas", "int [1, 64]"}}},
+  };
+}
+
+torch::Tensor wrap_unit(const torch::Tensor& x) {
+  auto y = torch::where(x > 1, x - torch::floor(x), x);
+  return torch::where(y < 0, y + torch::ceil(torch::abs(y)), y);
+}
+
+std::vector<int> map_attribute_columns(const PointSet& ex, const json& spec) {
+  std::vector<int> cols;
+  if (spec.is_null() || (spec.is_string() && spec.get<std::string>() == "auto")) {
+    for (size_t a = 0; a < ex.num_attributes(); ++a) {
+      const auto& c = ex.attribute_column(a);
+      if (!c.empty() && *std::max_element(c.begin(), c.end()) > *std::min_element(c.begin(), c.end()))
+        cols.push_back(static_cast<int>(a));
+    }
+    return cols;
+  }
+  if (!spec.is_array()) throw config_error("method.map_attributes", "expected \"auto\" or a list of attribute names");
+  for (auto& n : spec) {
+    if (!n.is_string()) throw config_error("method.map_attributes", "expected attribute names");
+    auto idx = ex.attribute_index(n.get<std::string>());
+    if (!idx) throw config_error("method.map_attributes", "the exemplar has no attribute '" + n.get<std::string>() + "'");
+    cols.push_back(*idx);
+  }
+  return cols;
+}
+
+GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, const OutputShape& shape, bool quick) {
+  GaborSettings s;
+  if (shape.upscale < 1) throw config_error("upscale", "must be >= 1");
+  s.upscale = shape.rectangle ? 1 : shape.upscale;
+  const int K = exemplar.num_classes();
+  s.mean_nn_distance = mean_nn_distance(exemplar);
+  s.res = get_int(p["grid"], "res", "method.grid");
+  if (s.res == 0)
+    s.res = grid_resolution_for(s.mean_nn_distance, get_int(p["grid"], "min_res", "method.grid"),
+                                get_int(p["grid"], "max_res", "method.grid"));
+  if (s.res < 8) throw config_error("method.grid.res", "must be >= 8 (or 0 for automatic)");
+  int num_sigmas = get_int(p, "num_sigmas", "method");
+  s.max_iterations = get_int(p, "max_iterations", "method");
+  s.feature_net = with_channels_for_classes(p["feature_net"], K, "method.feature_net");
+  const int full_res = s.res, full_num_sigmas = num_sigmas;  // the window margin's (below)
+  if (quick) {
+    s.res = std::min(s.res, get_int(p["quick"], "res", "method.quick"));
+    s.max_iterations = std::min(s.max_iterations, get_int(p["quick"], "max_iterations", "method.quick"));
+    num_sigmas = std::min(num_sigmas, get_int(p["quick"], "num_sigmas", "method.quick"));
+    if (s.feature_net.value("type", "") == "random") s.feature_net["channels"] = get_int(p["quick"], "channels", "method.quick");
+  }
+  if (s.max_iterations < 1) throw config_error("method.max_iterations", "must be >= 1");
+  s.sigmas = sigma_schedule(s.mean_nn_distance, get_number(p, "c1", "method"), get_number(p, "c2", "method"), num_sigmas);
+  const int k = get_int(p, "k", "method");
+  if (k < 1) throw config_error("method.k", "must be >= 1");
+  s.k = static_cast<int>(std::min<size_t>(exemplar.size(), static_cast<size_t>(k)));
+  s.k_per_stage = p["k_per_stage"].get<bool>();
+  s.attr_cols = map_attribute_columns(exemplar, p["map_attributes"]);
+  s.jitter = p["jitter"].get<bool>();
+  const bool per_sigma = get_bool(p["grid"], "per_sigma", "method.grid");
+  auto grid_per_sigma = [&](const std::vector<double>& sigmas, int res) {  // at most res; the finest sigma gets res itself
+    std::vector<int> r;
+    for (double sigma : sigmas) r.push_back(per_sigma ? std::max(8, static_cast<int>(std::ceil(res * sigmas.back() / sigma - 1e-9))) : res);
+    return r;
+  };
+  s.sigma_res = grid_per_sigma(s.sigmas, s.res);
+  const json& measure = p["measure"];
+  if (!measure.is_string() || (measure != "grid" && measure != "tiles" && measure != "rolled"))
+    throw config_error("method.measure", "expected \"grid\", \"tiles\" or \"rolled\", got " + measure.dump());
+  s.measure = measure == "tiles" ? GaborSettings::Measure::tiles
+              : measure == "rolled" ? GaborSettings::Measure::rolled : GaborSettings::Measure::grid;
+  const std::string named = "\"" + measure.get<std::string>() + "\"";
+  if (s.measure != GaborSettings::Measure::grid && shape.rectangle)
+    throw config_error("method.measure", named + " measures the paper's u x u square; a rectangle output "
+                                         "(output.size or output.points) takes output.border instead");
+  if (s.measure != GaborSettings::Measure::grid && !p["map_terms"].empty())
+    throw config_error("method.measure", named + " does not combine with method.map_terms (their maps are the unrolled grid's)");
+  {
+    const json& r = p["border_relax"];
+    const json& iterations = r["iterations"];
+    const bool relax_auto = iterations.is_null() || iterations == "auto";
+    // A count is bounded as every other parameter is; gabor_bounds() cannot hold it, since it
+    // would refuse "auto".
+    if (!relax_auto) check_bounds(r, json{{"iterations", "int [0, 1000000000]"}}, "method.border_relax");
+    // Where "auto" relaxes: the paper's square, its whole grid measured, no maps of other terms.
+    const bool has_grid_edge = !shape.rectangle && s.measure == GaborSettings::Measure::grid && p["map_terms"].empty();
+    s.relax_iterations = relax_auto ? (has_grid_edge ? k_auto_relax_iterations : 0) : get_int(r, "iterations", "method.border_relax");
+    if (quick) s.relax_iterations = std::min(s.relax_iterations, s.max_iterations);
+    s.relax_band = get_number(r, "band", "method.border_relax") * s.mean_nn_distance / s.upscale;
+    s.relax_parked = get_number(r, "parked", "method.border_relax");
+    const json& after = r["after"];
+    if (after != "class" && after != "all")
+      throw config_error("method.border_relax.after", "expected \"class\" (after each class's sigma stages) or \"all\" "
+                                                      "(after every class's), not " + after.dump());
+    s.relax_after_all = after == "all";
+    const json& lr = r["lr"];
+    if (!lr.is_null() && !(lr.is_number() && lr.get<double>() > 0))
+      throw config_error("method.border_relax.lr", "expected null (the finest sigma's rate) or a number > 0");
+    s.relax_lr = lr.is_null() ? 0.0 : lr.get<double>();
+    if (s.relax_iterations > 0 && shape.rectangle)
+      throw config_error("method.border_relax", "relaxes the border of the paper's u x u square; a rectangle output "
+                                                "(output.size or output.points) takes output.border instead");
+    if (s.relax_iterations > 0 && s.measure != GaborSettings::Measure::grid)
+      throw config_error("method.border_relax", "needs method.measure \"grid\" (the other measures have no grid edge to park on)");
+    if (s.relax_iterations > 0 && !p["map_terms"].empty())
+      throw config_error("method.border_relax", "does not combine with method.map_terms (their maps are the unrolled grid's)");
+  }
+  if (!shape.rectangle) {
+    s.out_res = s.upscale * s.res;
+    s.out_scale = s.upscale;
+    for (int r : s.sigma_res) s.sigma_out_res.push_back(s.upscale * r);
+  } else {  // a window: at most `pixels` across, at most the canvas
+    const Domain c = shape.canvas();
+    const double side = std::min({get_int(p["window"], "pixels", "method.window") / static_cast<double>(s.res), c.width(), c.height()});
+    s.out_res = std::max(8, static_cast<int>(std::lround(side * s.res)));
+    s.out_scale = side;
+    for (int r : s.sigma_res) s.sigma_out_res.push_back(std::max(8, static_cast<int>(std::lround(side * r))));
+    const json& m = p["window"]["margin"];
+    if (m.is_null() || (m.is_string() && m.get<std::string>() == "auto")) {
+      // The maps' reach plus the network's receptive field, at the stage where they reach farthest.
+      const int rf = get_int(p["window"], "receptive_field", "method.window");
+      auto reach = [&](const std::vector<double>& sigmas, const std::vector<int>& res) {
+        double r = 0;
+        for (size_t i = 0; i < sigmas.size(); ++i) r = std::max(r, 3 * sigmas[i] + rf / static_cast<double>(res[i]));
+        return r;
+      };
+      s.window_margin = reach(s.sigmas, s.sigma_res);
+      // --quick's coarser grid reaches farther than the full settings' (lines: 1.14 against
+      // 0.60 exemplar units); where its margin leaves the windows no interior, the full
+      // settings' is taken, so that a smoke run takes every output the real run takes.
+      if (quick && !windows_fit(c, side, s.window_margin)) {
+        const auto sigmas = sigma_schedule(s.mean_nn_distance, get_number(p, "c1", "method"), get_number(p, "c2", "method"),
+                                           full_num_sigmas);
+        s.window_margin = std::min(s.window_margin, reach(sigmas, grid_per_sigma(sigmas, full_res)));
+      }
+    } else if (m.is_number() && m.get<double>() >= 0)
+      s.window_margin = m.get<double>();
+    else
+      throw config_error("method.window.margin", "expected null (\"auto\") or a length >= 0 in exemplar units");
+    const json& st = p["window"]["statistics"];
+    if (!st.is_string() || (st != "grid" && st != "output"))
+      throw config_error("method.window.statistics", "expected \"grid\" or \"output\", got " + st.dump());
+    s.statistics_in_output = st == "output";
+  }
+  {  // one iteration keeps the output grid's maps and every layer's activations and gradients
+    const double cells = std::pow(static_cast<double>(s.out_res), 2);
+    auto number_or = [&](const char* key, double fallback) {  // the net's own registry checks the types later
+      return s.feature_net.contains(key) && s.feature_net[key].is_number() ? s.feature_net[key].get<double>() : fallback;
+    };
+    const double in_ch = 10.0 * (1 + s.attr_cols.size()), net_ch = number_or("channels", 120), layers = number_or("depth", 3);
+    check_memory(cells * 4.0 * (3 * in_ch + 6 * net_ch * layers + s.k * in_ch),
+                 "an output grid of " + std::to_string(s.out_res) + " x " + std::to_string(s.out_res) +
+                     (shape.rectangle ? " (method.window.pixels)"
+                                      : " (method.grid.res " + std::to_string(s.res) + " x upscale " + std::to_string(s.upscale) + ")"));
+  }
+  for (auto& c : p["class_order"]) {
+    if (!c.is_number_integer() || c.get<int>() < 0 || c.get<int>() >= K)
+      throw config_error("method.class_order", "class ids are 0.." + std::to_string(K - 1));
+    s.class_order.push_back(c.get<int>());
+  }
+  if (s.class_order.empty())
+    for (int c = 0; c < K; ++c) s.class_order.push_back(c);
+  auto sorted = s.class_order;
+  std::sort(sorted.begin(), sorted.end());
+  for (int c = 0; c < K; ++c)
+    if (static_cast<int>(sorted.size()) != K || sorted[c] != c)
+      throw config_error("method.class_order", "must list every class 0.." + std::to_string(K - 1) + " once");
+  return s;
+}
+
+GaborPipeline::GaborPipeline(const json& p, const GaborSettings& s, uint64_t seed, torch::Device device)
+    : p_(p), s_(s), seed_(seed), device_(device), loss_(p["losses"], "method.losses"), res_(s.sigma_res.at(0)), out_res_(s.sigma_out_res.at(0)) {
+  build_rasterizers();
+  in_channels_ = ex_rast_->channels(static_cast<int>(s.attr_cols.size()));
+  redraw_network(seed);
+}
+
+void GaborPipeline::build_rasterizers() {
+  RasterizerArgs ex_args{res_, 1.0, s_.k}, out_args{out_res_, s_.out_scale, s_.k, true};
+  ex_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", ex_args, &resolved_rast_);
+  out_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", out_args);
+  if (s_.measure_tiles()) {
+    RasterizerArgs tile_args = ex_args;
+    tile_args.divisor = tile_divisor_;
+    tile_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", tile_args);
+  }
+  for (auto* r : {&ex_rast_, &out_rast_, &tile_rast_})
+    if (*r) (*r)->to(device_);
+}
+
+void GaborPipeline::set_neighbours(int k) {
+  if (k == s_.k) return;
+  s_.k = k;
+  build_rasterizers();
+}
+
+void GaborPipeline::set_grid(int sigma_index) {
+  const int r = s_.sigma_res.at(sigma_index), o = s_.sigma_out_res.at(sigma_index);
+  if (r == res_ && o == out_res_) return;
+  res_ = r;
+  out_res_ = o;
+  build_rasterizers();
+}
+
+void GaborPipeline::redraw_network(uint64_t seed) {
+  net_ = FeatureNetRegistry::instance().create(s_.feature_net, "method.feature_net", in_channels_, seed, &resolved_net_);
+  resolved_net_.update(net_->choices());
+  net_->to(device_);  // drawn on the CPU from the seed: the same network on every device
+}
+
+void GaborPipeline::set_targets(const torch::Tensor& ex_points, const torch::Tensor& ex_weights, double sigma) {
+  torch::NoGradGuard ng;
+  // A tile's maps divide as the exemplar's do: by its neighbours summed, min(k, its points).
+  const int divisor = static_cast<int>(std::min<int64_t>(s_.k, ex_points.size(0)));
+  if (s_.measure_tiles() && divisor != tile_divisor_) {
+    tile_divisor_ = divisor;
+    build_rasterizers();
+  }
+  const auto weights = ex_weights.defined() ? ex_weights.to(device_) : ex_weights;
+  auto f = net_->forward(ex_rast_->forward(ex_points.to(device_), weights, sigma, {}));
+  // Tiles are the exemplar's size: their features match the targets' one to one.
+  loss_.set_target(f, LossContext{s_.measure_tiles() ? 1 : s_.upscale, seed_});
+}
+
+torch::Tensor GaborPipeline::draw_jitter(std::mt19937_64& rng, bool tile) const {
+  if (!s_.jitter || !out_rast_->uses_jitter()) return {};
+  const int64_t R = tile ? res_ : out_res_;
+  const float amp = 1.0f / static_cast<float>(R + 1);
+  std::uniform_real_distribution<float> unif(-1.0f, 1.0f);
+  auto j = torch::empty({R * R, 2});
+  float* ptr = j.data_ptr<float>();
+  for (int64_t i = 0; i < j.numel(); ++i) ptr[i] = unif(rng) * amp;
+  return j.to(device_);
+}
+
+json GaborPipeline::resolved() const {
+  return {{"rasterizer", resolved_rast_}, {"feature_net", resolved_net_}, {"losses", loss_.resolved()}};
+}
+
+}  // namespace ppsynth

@@ -1,5 +1,0 @@
-#include "optim/method.hpp"
-
-#include "core/config/defaults_catalog.hpp"
-
-PPSYNTH_DEFAULTS_KIND("method", ppsynth::MethodRegistry)

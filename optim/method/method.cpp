@@ -1,0 +1,5 @@
+#include "optim/method/method.hpp"
+
+#include "core/config/defaults_catalog.hpp"
+
+PPSYNTH_DEFAULTS_KIND("method", ppsynth::MethodRegistry)

@@ -1,0 +1,49 @@
+#pragma once
+// The config shape shared by the optional loss terms beside the paper's (point terms,
+// optim/terms/point_term.hpp; map terms, optim/gabor/map_term.hpp):
+//   "<key>": {"<registered name>": {"weight": w, ...params}, ...}
+// A term is on when its weight is > 0; unknown names, unknown keys and a missing or negative
+// weight are refused, naming the key path (method.<key>.<name>...).
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/config/config.hpp"
+#include "core/registry.hpp"
+
+namespace ppsynth {
+
+template <class Term>
+struct WeightedTerm {
+  std::string name;
+  double weight = 0;
+  std::unique_ptr<Term> term;
+};
+
+// The terms `terms` switches on, in name order.
+template <class Term>
+std::vector<WeightedTerm<Term>> create_weighted_terms(const nlohmann::json& terms, const std::string& key) {
+  std::vector<WeightedTerm<Term>> out;
+  if (terms.is_null()) return out;
+  if (!terms.is_object()) throw config_error(key, "expected an object {\"name\": {\"weight\": w, ...}}");
+  for (auto it = terms.begin(); it != terms.end(); ++it) {
+    const std::string kp = key + "." + it.key();
+    nlohmann::json spec = it.value().is_null() ? nlohmann::json::object() : it.value();
+    if (!spec.is_object()) throw config_error(kp, "expected an object {\"weight\": w, ...}");
+    if (spec.contains("type")) throw config_error(kp + ".type", "the term's name is its key here");
+    spec["type"] = it.key();
+    nlohmann::json resolved;
+    auto term = Registry<Term>::instance().create(spec, kp, &resolved);
+    if (!resolved.contains("weight") || !resolved["weight"].is_number())
+      throw config_error(kp + ".weight", "every term needs a numeric weight");
+    const double w = resolved["weight"].get<double>();
+    if (!(w >= 0) || !std::isfinite(w)) throw config_error(kp + ".weight", "must be >= 0");
+    if (w > 0) out.push_back({it.key(), w, std::move(term)});
+  }
+  return out;
+}
+
+}  // namespace ppsynth

@@ -1,0 +1,127 @@
+// runtime.device (optim/run/runtime.hpp): its values and the errors naming the key, what a
+// process without CUDA does with each, what the method records (run.json's method_stats),
+// and, where this process sees a CUDA device, a synthesis there: the same bits twice, and one
+// evaluation (loss and gradient) equal to the CPU's within float32 rounding. Tagged [device]:
+// scripts/gpu_check.sh runs these on the GPU machine.
+#include <catch2/catch.hpp>
+
+#include <torch/cuda.h>
+
+#include <iostream>
+
+#include "models/gabor_feature_maps.hpp"
+#include "models/point_tensor.hpp"
+#include "optim/gabor/gabor_pipeline.hpp"
+#include "optim/run/run_config.hpp"
+#include "optim/run/runtime.hpp"
+#include "optim/run/synthesize.hpp"
+#include "tests/support/gabor_runs.hpp"
+#include "tests/support/same_bits.hpp"
+#include "tests/support/small_exemplar.hpp"
+
+using namespace ppsynth;
+using Catch::Contains;
+
+namespace {
+
+json runtime(const json& device) {
+  json r = runtime_defaults();
+  r["device"] = device;
+  return r;
+}
+
+bool cuda_here() {
+  if (torch::cuda::is_available()) return true;
+  WARN("skipped: this process sees no CUDA device (torch::cuda::is_available() is false)");
+  std::cout << "skipped (no CUDA device): " << Catch::getResultCapture().getCurrentTestName() << "\n";
+  return false;
+}
+
+// A --quick synthesis of the small exemplar through the run library, on `device`.
+SynthesisResult quick_run(const std::string& device, const std::vector<std::string>& sets = {}) {
+  auto sets_all = sets;
+  sets_all.push_back("runtime.device=" + device);
+  sets_all.push_back("evaluate=false");
+  const json spec = resolve_run_config(json::object(), sets_all);
+  SynthesisOptions o;
+  o.quick = true;
+  return synthesize(test::small_exemplar(1, false), spec, o);
+}
+
+}  // namespace
+
+TEST_CASE("runtime.device takes cpu, cuda, cuda:N and auto; any other value is an error naming the key", "[optim][device]") {
+  for (const char* v : {"cpu", "cuda", "cuda:0", "cuda:12", "auto"}) CHECK_NOTHROW(check_runtime(runtime(v)));
+  for (const json& v : {json("gpu"), json("cuda:"), json("cuda:x"), json("CUDA"), json(0), json("cuda:123456"), json("cpu:0")}) {
+    INFO(v.dump());
+    CHECK_THROWS_WITH(check_runtime(runtime(v)), Contains("runtime.device") && Contains("expected \"cpu\", \"cuda\""));
+  }
+  // A run config: the defaults, --set reaching the key, and the same refusal at resolution.
+  CHECK(resolve_run_config(json::object(), {})["runtime"] == runtime_defaults());
+  CHECK(resolve_run_config(json::object(), {"runtime.device=auto"})["runtime"]["device"] == "auto");
+  CHECK_THROWS_WITH(resolve_run_config(json::object(), {"runtime.device=gpu"}), Contains("runtime.device"));
+  CHECK_THROWS_WITH(resolve_run_config(json{{"runtime", {{"devices", "cpu"}}}}, {}), Contains("runtime.devices"));
+  CHECK_THROWS_WITH(resolve_run_config(json{{"runtime", {{"tf32", "yes"}}}}, {}), Contains("runtime.tf32"));
+}
+
+TEST_CASE("Without CUDA, cpu and auto run on the CPU and cuda is refused naming the key", "[optim][device]") {
+  if (torch::cuda::is_available()) {
+    WARN("skipped: this process sees a CUDA device, so cuda is not refused");
+    return;
+  }
+  CHECK(apply_device_settings(runtime("cpu")).device == "cpu");
+  CHECK(apply_device_settings(runtime("auto")).device == "cpu");
+  for (const char* v : {"cuda", "cuda:1"})
+    CHECK_THROWS_AS(apply_device_settings(runtime(v)), InputError);
+  CHECK_THROWS_WITH(apply_device_settings(runtime("cuda")), Contains("runtime.device") && Contains("\"cuda\" asks for a CUDA device"));
+  // synthesize() applies it before the method starts.
+  CHECK_THROWS_WITH(quick_run("cuda"), Contains("runtime.device"));
+}
+
+TEST_CASE("The method's stats (run.json) record the device, the network's precision and the maps' path", "[optim][device]") {
+  const auto r = quick_run("cpu");
+  const json& rt = r.stats.at("runtime");
+  CHECK(rt.at("device") == "cpu");
+  CHECK(rt.at("precision") == "float32");
+  CHECK(rt.at("deterministic") == true);
+  CHECK(rt.at("gabor_maps") == gabor_maps_path_name(gabor_maps_path(GaborMapsPath::automatic, torch::kCPU)));
+  // TF32 is a CUDA mode: on the CPU the float32 network stays float32.
+  CHECK(quick_run("cpu", {"runtime.tf32=true"}).stats.at("runtime").at("precision") == "float32");
+  CHECK(quick_run("auto", {"method.feature_net.precision=bfloat16"}).stats.at("runtime").at("precision") == "bfloat16");
+  // No Gabor maps, no path to record.
+  CHECK_FALSE(quick_run("cpu", {"method.rasterizer.type=pixel_splat"}).stats.at("runtime").contains("gabor_maps"));
+}
+
+TEST_CASE("On CUDA, the same config and seed give the same output, twice", "[optim][device][cuda]") {
+  if (!cuda_here()) return;
+  const auto a = quick_run("cuda"), b = quick_run("cuda");
+  CHECK(a.stats.at("runtime").at("device") == "cuda:0");
+  CHECK(a.stats.at("runtime").at("gabor_maps") == "tensor_ops");
+  CHECK(test::same_bits(a.output, b.output));
+}
+
+TEST_CASE("On CUDA, one evaluation's loss and gradient equal the CPU's within float32 rounding", "[optim][device][cuda]") {
+  if (!cuda_here()) return;
+  apply_device_settings(runtime("cuda"));  // IEEE float32 (no TF32), deterministic
+  const PointSet ex = test::small_exemplar(1, false);
+  json p = test::method_params(json{{"type", "gabor"}, {"jitter", false}});
+  p["grid"]["res"] = 32;
+  p["feature_net"]["channels"] = 16;
+  OutputShape shape;
+  shape.upscale = 2;
+  const GaborSettings s = resolve_gabor_settings(p, ex, shape, false);
+  auto start = positions_tensor(test::small_exemplar(1, false, 64));
+  std::vector<double> loss;
+  std::vector<torch::Tensor> grad;
+  for (const torch::Device device : {torch::Device(torch::kCPU), torch::Device("cuda:0")}) {
+    GaborPipeline pipe(p, s, 9, device);
+    pipe.set_targets(positions_tensor(ex), {}, s.sigmas.back());
+    auto x = start.to(device).set_requires_grad(true);
+    auto l = pipe.loss(pipe.features(pipe.output_maps(wrap_unit(x), {}, s.sigmas.back(), {})));
+    l.backward();
+    loss.push_back(l.item<double>());
+    grad.push_back(x.grad().cpu());
+  }
+  CHECK(loss[1] == Approx(loss[0]).epsilon(1e-4));
+  CHECK((grad[1] - grad[0]).abs().max().item<double>() < 1e-3 * grad[0].abs().max().item<double>());
+}

@@ -1,0 +1,88 @@
+// Presets (optim/run/presets.hpp): layered under the config's own keys, over the defaults;
+// named in the resolved config; a variant per processor class where a preset has one; unknown
+// names and other methods refused with the key.
+#include <catch2/catch.hpp>
+
+#include "core/config/config.hpp"
+#include "core/processor.hpp"
+#include "models/feature_net.hpp"
+#include "optim/gabor/gabor_pipeline.hpp"
+#include "optim/run/presets.hpp"
+#include "optim/run/run_config.hpp"
+#include "tests/support/gabor_runs.hpp"
+#include "tests/support/small_exemplar.hpp"
+
+using namespace ppsynth;
+
+TEST_CASE("the fast preset sets its keys under the config's own", "[optim][config][preset]") {
+  const json plain = resolve_run_config(json::object(), {});
+  CHECK(plain["preset"].is_null());
+  CHECK(plain["method"]["feature_net"] == json{{"type", "random"}});  // the network's own defaults apply when it is made
+  CHECK(plain["method"]["convergence"]["type"] == "loss");
+
+  const json fast = resolve_run_config(json{{"preset", "fast"}}, {});
+  const json frag = preset_fragment("fast")["method"];
+  CHECK(fast["preset"] == "fast");
+  for (auto it = frag.begin(); it != frag.end(); ++it) {
+    INFO("method." << it.key());
+    // every key the preset names arrives in the resolved method, merged with the defaults
+    CHECK(merge(fast["method"][it.key()], it.value()) == fast["method"][it.key()]);
+  }
+  CHECK(fast["method"]["feature_net"]["type"] == "random");  // the defaults fill the rest
+  CHECK(fast["method"]["c1"] == plain["method"]["c1"]);
+
+  // The config's own keys and --set win over the preset.
+  const json own = resolve_run_config(json{{"preset", "fast"}, {"method", {{"feature_net", {{"channels", 24}}}}}},
+                                      {"method.convergence.window=70"});
+  CHECK(own["method"]["feature_net"]["channels"] == 24);
+  CHECK(own["method"]["feature_net"]["precision"] == frag["feature_net"]["precision"]);
+  CHECK(own["method"]["convergence"]["window"] == 70);
+  CHECK(own["method"]["convergence"]["type"] == frag["convergence"]["type"]);
+  // --set preset=fast is the same as the key in the config
+  CHECK(resolve_run_config(json::object(), {"preset=fast"}) == fast);
+}
+
+TEST_CASE("the fast preset by processor class: auto precision, and its float32 variant where bf16 is emulated", "[optim][config][preset][isa]") {
+  const json with_units = preset_fragment("fast", true)["method"], without = preset_fragment("fast", false)["method"];
+  // One fragment for both but the knobs that buy back bf16's time.
+  CHECK(with_units["feature_net"]["precision"] == "auto");
+  CHECK(without["feature_net"]["precision"] == "auto");
+  CHECK(with_units["convergence"] == without["convergence"]);
+  CHECK(with_units["grid"] == without["grid"]);
+  CHECK_FALSE(with_units["feature_net"].contains("channels"));  // the paper's 120 filters where bf16 is native
+  // Without them, fewer float32 filters for one class; a multi-class exemplar keeps 120.
+  CHECK(with_channels_for_classes(without["feature_net"], 1, "f")["channels"].get<int>() < 120);
+  CHECK(with_channels_for_classes(without["feature_net"], 2, "f")["channels"] == 120);
+  // This process takes the variant of its own processor, and run.json says which and why.
+  CHECK(preset_fragment("fast") == preset_fragment("fast", cpu_isa().native_bf16));
+  const json record = preset_record(resolve_run_config(json{{"preset", "fast"}}, {}));
+  CHECK(record["name"] == "fast");
+  CHECK(record["variant"] == (cpu_isa().native_bf16 ? "every processor" : "without bf16 units"));
+  CHECK(record["reason"].get<std::string>().find(processor_kind()) != std::string::npos);
+  CHECK(preset_record(resolve_run_config(json::object(), {})).is_null());
+}
+
+TEST_CASE("the fast preset's float32 variant: 64 filters for a one-class exemplar, 120 for a multi-class one", "[optim][config][preset]") {
+  // The variant as the run resolves it (whatever this processor is), down to the settings the
+  // pipeline makes its network from.
+  json method = merge(json{{"type", "gabor"}}, preset_fragment("fast", false)["method"]);
+  method["grid"]["res"] = 32;
+  const json p = test::method_params(method);
+  OutputShape shape;
+  shape.upscale = 2;
+  CHECK(resolve_gabor_settings(p, test::small_exemplar(1, false), shape, false).feature_net["channels"] == 64);
+  CHECK(resolve_gabor_settings(p, test::small_exemplar(2, false), shape, false).feature_net["channels"] == 120);
+  // A config's own number holds for both.
+  json own = method;
+  own["feature_net"]["channels"] = 24;
+  const json q = test::method_params(own);
+  CHECK(resolve_gabor_settings(q, test::small_exemplar(2, false), shape, false).feature_net["channels"] == 24);
+}
+
+TEST_CASE("presets: unknown names and other methods are errors naming the key", "[optim][config][preset]") {
+  CHECK_THROWS_WITH(resolve_run_config(json{{"preset", "fastest"}}, {}), Catch::Contains("preset") && Catch::Contains("fast"));
+  CHECK_THROWS_WITH(resolve_run_config(json{{"preset", 3}}, {}), Catch::Contains("preset"));
+  CHECK_THROWS_WITH(resolve_run_config(json{{"preset", "fast"}, {"method", {{"type", "tiled_copy"}}}}, {}),
+                    Catch::Contains("preset") && Catch::Contains("tiled_copy"));
+  CHECK_THROWS_WITH(preset_fragment("fastest"), Catch::Contains("preset"));
+}
