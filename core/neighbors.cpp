@@ -32,7 +32,7 @@ double wrap_into(double v, double lo, double w) {
 // Periodic results: `idx` holds image indices (block * n + i) in increasing distance. Keeps
 // the first (nearest) image of each point, in the original order, as point indices. Cost
 // O(k log k) in the number of results: the former per-query table of n flags made every
-// query O(n), so n queries (nearest neighbours of every point) were O(n^2).
+// query O(n), so n queries (nearest neighbors of every point) were O(n^2).
 void keep_nearest_images(std::vector<size_t>& idx, std::vector<double>& d2, size_t n) {
   std::vector<size_t> order(idx.size());
   for (size_t t = 0; t < idx.size(); ++t) {

@@ -1,5 +1,5 @@
 #pragma once
-// NeighborIndex: k-nearest and fixed-radius neighbour queries on a set of 2-D points, backed
+// NeighborIndex: k-nearest and fixed-radius neighbor queries on a set of 2-D points, backed
 // by a nanoflann k-d tree (KDTreeSingleIndexAdaptor with L2_Simple_Adaptor; the library
 // works in squared distances, this class returns plain Euclidean distances).
 //

@@ -12,13 +12,13 @@
 //   {"points": N}:              a square of the area that holds N points at the exemplar's
 //                               density (the exemplar's shape when it is not square: W/H kept).
 //
-// "border" (rectangles only): "clean" synthesises on a canvas padded by "pad" exemplar units
+// "border" (rectangles only): "clean" synthesizes on a canvas padded by "pad" exemplar units
 // on every side and keeps the crop (the points that park on a synthesis border are cut off;
 // counts are then the density's expectation, not exact); "context" pads the same way but
 // fills the pad with the exemplar's own points, tiled and frozen, and moves only the
 // rectangle's points (the Gabor method; exact counts: nothing parks, nothing is cut off);
-// "published" synthesises on the rectangle itself and keeps the method's border behaviour.
-// "pad": null or "auto" = 2 mean nearest-neighbour distances of the exemplar, or a length in
+// "published" synthesizes on the rectangle itself and keeps the method's border behavior.
+// "pad": null or "auto" = 2 mean nearest-neighbor distances of the exemplar, or a length in
 // exemplar units (docs/lab/large_outputs.md).
 //
 // Torch-free: every method (optim/method/method.hpp) gets one in its SynthesisContext.
@@ -36,13 +36,13 @@ struct OutputShape {
   bool rectangle = false;      // true: "size" or "points" given, or a rectangular exemplar (exemplar units)
   bool from_upscale = false;   // the rectangle is u x u copies of a rectangular exemplar (no "output" given)
   double width = 0, height = 0;  // the output rectangle's size (exemplar units; rectangle only)
-  bool clean_border = true;    // rectangle only: synthesise padded, keep the crop
+  bool clean_border = true;    // rectangle only: synthesize padded, keep the crop
   bool exemplar_pad = false;   // "context": the pad holds the tiled exemplar, frozen
   double pad = 0;              // resolved pad (exemplar units; 0 when !clean_border)
 
   // The domain of the output: the unit square, or [0, W] x [0, H].
   Domain domain() const;
-  // The domain actually synthesised: domain() grown by `pad` on every side (rectangles with
+  // The domain actually synthesized: domain() grown by `pad` on every side (rectangles with
   // clean borders), else domain().
   Domain canvas() const;
   // Where the synthesis moves points: the rectangle ("context": the pad is frozen), else canvas().

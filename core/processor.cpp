@@ -94,7 +94,7 @@ std::string CpuIsa::kind() const {
   std::string k = (model.empty() ? std::string("unknown model") : model) + " (" + widest;
   std::vector<std::string> caps;
   if (effective != widest) caps.push_back("oneDNN to " + effective + " by ONEDNN_MAX_CPU_ISA=" + onednn_cap);
-  // ATen's own vectorised kernels: avx512 where the CPU has AVX-512, avx2 below it.
+  // ATen's own vectorized kernels: avx512 where the CPU has AVX-512, avx2 below it.
   const std::string aten_native = class_level(widest) >= onednn_level("AVX512_CORE") ? "avx512"
                                   : widest == "avx2"                                  ? "avx2"
                                                                                       : "default";

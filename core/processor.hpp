@@ -9,7 +9,7 @@
 // that one machine can run as another class would (the test suite runs its ISA-sensitive
 // cases both ways, scripts/test.sh):
 //   ONEDNN_MAX_CPU_ISA (or DNNL_MAX_CPU_ISA)  oneDNN's convolutions: AVX2, AVX512_CORE, ...
-//   ATEN_CPU_CAPABILITY                       ATen's vectorised kernels: default, avx2, avx512
+//   ATEN_CPU_CAPABILITY                       ATen's vectorized kernels: default, avx2, avx512
 // Both are read by the libraries once, at their first use; the kind below includes them.
 #include <functional>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // Registry<Base, Args...>: name -> factory, one per kind of pluggable part (rasterizers,
-// feature nets, losses, optimisers, initialisers, synthesis methods, generators, commands).
+// feature nets, losses, optimizers, initializers, synthesis methods, generators, commands).
 //
 // A part registers itself at the end of its own .cpp with PPSYNTH_REGISTER, giving its
 // config name, its default parameters (JSON; the only place those defaults live), the

@@ -21,7 +21,7 @@
 //   anything else (a file, a directory
 //   with other files, ".", a parent of
 //   the current directory)              -> refused; --force does not change that
-// Paths are normalised first: "runs/a/" and "runs/./a" are "runs/a".
+// Paths are normalized first: "runs/a/" and "runs/./a" are "runs/a".
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -32,7 +32,7 @@ namespace ppsynth {
 // in file names must be such names, so that no config can make ppsynth write elsewhere.
 bool is_safe_name(const std::string& name);
 
-// `path` lexically normalised, without a trailing slash. Refuses (InputError naming `option`)
+// `path` lexically normalized, without a trailing slash. Refuses (InputError naming `option`)
 // an empty path, the current directory, the root and every parent of the current directory.
 std::string normalize_output_dir(const std::string& path, const std::string& option);
 

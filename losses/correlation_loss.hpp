@@ -1,6 +1,6 @@
 #pragma once
 // Deep-correlation loss (paper Eq. 3-4, method.md §4): the mean over channels and kept lags
-// of (C_out - C_exemplar)^2, where C is the normalised autocorrelation of each channel of
+// of (C_out - C_exemplar)^2, where C is the normalized autocorrelation of each channel of
 // the layer, cropped to the exemplar layer's q x q central lags for both. Captures the
 // global (regular, long-range) structure. "gradient": "exact" (default) or "published".
 #include "losses/autocorrelation.hpp"

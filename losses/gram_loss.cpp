@@ -1,5 +1,5 @@
 // "gram": L = sum over layers of sum_{t1,t2} (G_out - G_exemplar)^2, G = F F^T / (C H W)
-// (paper §3.1; the published code's normalisation). Captures local structure.
+// (paper §3.1; the published code's normalization). Captures local structure.
 #include "losses/gram_loss.hpp"
 
 namespace ppsynth {

@@ -15,7 +15,7 @@ struct FeatureGrid {
   std::vector<float> positions() const;
 };
 
-// res = clamp(round(9/d), lo, hi), d = mean nearest-neighbour distance of the exemplar.
+// res = clamp(round(9/d), lo, hi), d = mean nearest-neighbor distance of the exemplar.
 int grid_resolution_for(double mean_nn_distance, int lo = 128, int hi = 256);
 
 }  // namespace ppsynth

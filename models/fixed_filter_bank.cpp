@@ -6,8 +6,8 @@ namespace ppsynth {
 
 namespace {
 
-torch::Tensor centred(const std::vector<std::vector<double>>& small, int K) {
-  // Embeds an odd n x n kernel at the centre of a K x K one.
+torch::Tensor centered(const std::vector<std::vector<double>>& small, int K) {
+  // Embeds an odd n x n kernel at the center of a K x K one.
   const int n = static_cast<int>(small.size()), off = (K - n) / 2;
   auto t = torch::zeros({K, K}, torch::kFloat64);
   for (int r = 0; r < n; ++r)
@@ -27,13 +27,13 @@ std::vector<torch::Tensor> gaussians(int K) {
 }
 
 std::vector<torch::Tensor> sobels(int K) {
-  return {centred({{-1, 0, 1}, {-2, 0, 2}, {-1, 0, 1}}, K), centred({{-1, -2, -1}, {0, 0, 0}, {1, 2, 1}}, K),
-          centred({{0, 1, 2}, {-1, 0, 1}, {-2, -1, 0}}, K), centred({{-2, -1, 0}, {-1, 0, 1}, {0, 1, 2}}, K)};
+  return {centered({{-1, 0, 1}, {-2, 0, 2}, {-1, 0, 1}}, K), centered({{-1, -2, -1}, {0, 0, 0}, {1, 2, 1}}, K),
+          centered({{0, 1, 2}, {-1, 0, 1}, {-2, -1, 0}}, K), centered({{-2, -1, 0}, {-1, 0, 1}, {0, 1, 2}}, K)};
 }
 
 std::vector<torch::Tensor> derivatives(int K) {
-  return {centred({{0, 0, 0}, {1, -2, 1}, {0, 0, 0}}, K), centred({{0, 1, 0}, {0, -2, 0}, {0, 1, 0}}, K),
-          centred({{0.25, 0, -0.25}, {0, 0, 0}, {-0.25, 0, 0.25}}, K), centred({{0, 1, 0}, {1, -4, 1}, {0, 1, 0}}, K)};
+  return {centered({{0, 0, 0}, {1, -2, 1}, {0, 0, 0}}, K), centered({{0, 1, 0}, {0, -2, 0}, {0, 1, 0}}, K),
+          centered({{0.25, 0, -0.25}, {0, 0, 0}, {-0.25, 0, 0.25}}, K), centered({{0, 1, 0}, {1, -4, 1}, {0, 1, 0}}, K)};
 }
 
 class FixedBankNet : public FeatureNet {

@@ -82,7 +82,7 @@ struct Phases {
   }
 };
 
-// Per-neighbour terms shared by forward and backward.
+// Per-neighbor terms shared by forward and backward.
 template <typename T>
 struct Term {
   T e, dx, dy;

@@ -12,21 +12,21 @@
 //
 // Exact gradients w.r.t. the positions come from a custom autograd function with an
 // analytic backward, so no k x res^2 x C intermediates are stored (the published code keeps
-// several): memory is the output maps plus the res^2 x k neighbour indices.
+// several): memory is the output maps plus the res^2 x k neighbor indices.
 // Cost: k-NN O(res^2 (log N + k)); forward and backward O(res^2 k C), independent of N
 // beyond the search.
 //
 // Two implementations of the same sum and backward (GaborMapsPath): a CPU kernel (threads
 // over grid positions, nanoflann's k-NN), and LibTorch operations that run where the tensors
-// are, a CUDA device included (gather the k neighbours, exp and cos on res^2 x k values per
+// are, a CUDA device included (gather the k neighbors, exp and cos on res^2 x k values per
 // channel, the backward scattered with index_add; the k-NN by brute force on that device,
 // res^2 x N distances in chunks). tests/models/test_gabor_maps_paths.cpp holds them equal on
 // the CPU. PPSYNTH_GABOR_MAPS=tensor_ops makes CPU tensors take the operations too, so the
 // whole test suite can run the arithmetic a CUDA run takes on a machine without one. Sigma is given in exemplar units and divided by u (the output is the
-// exemplar zoomed out by u). The k neighbours are searched in the plane (not on the torus),
+// exemplar zoomed out by u). The k neighbors are searched in the plane (not on the torus),
 // as in the published code, unless `periodic`: then the domain is the unit torus, each grid
 // position sees the nearest image of every point and p - g is the minimum image. The
-// optimiser already wraps positions toroidally; periodic OUTPUT maps make the maps agree
+// optimizer already wraps positions toroidally; periodic OUTPUT maps make the maps agree
 // with that, so a point near x = 1 is seen by grid positions near x = 0 and the border
 // stops being a place where points lose half their influence (where they park otherwise).
 // The "gabor" rasterizer sets the flag per raster: `periodic_output` for the output's,
@@ -44,8 +44,8 @@ enum class GaborMapsPath { automatic, cpu_kernel, tensor_ops };
 struct GaborMapsOptions {
   int res = 128;           // grid positions per axis (the output grid is u * exemplar res)
   double upscale = 1.0;    // u
-  int k = 30;              // neighbours per grid position
-  // Each position's sum over its neighbours is divided by this; 0: by the neighbours summed,
+  int k = 30;              // neighbors per grid position
+  // Each position's sum over its neighbors is divided by this; 0: by the neighbors summed,
   // min(k, N). A tile of the output (optim/gabor/random_tiles.hpp) holding fewer points than the
   // exemplar's k takes the exemplar's divisor, so that a point weighs in it what it weighs
   // in the exemplar's maps, whatever the tile's count.
@@ -94,7 +94,7 @@ TORCH_MODULE(GaborFeatureMaps);
 torch::Tensor grid_knn(const torch::Tensor& points, const torch::Tensor& grid, int k, bool periodic = false);
 torch::Tensor grid_knn_tensor_ops(const torch::Tensor& points, const torch::Tensor& grid, int k, bool periodic = false);
 
-// Reference evaluation of Eq. 5 with plain tensor ops (every point a neighbour when k >= N).
+// Reference evaluation of Eq. 5 with plain tensor ops (every point a neighbor when k >= N).
 // For tests only: O(res^2 N C) memory.
 torch::Tensor gabor_maps_reference(const torch::Tensor& points, const torch::Tensor& weights,
                                    const torch::Tensor& grid, double sigma_out, double frequency,

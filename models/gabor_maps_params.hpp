@@ -20,7 +20,7 @@ struct MapsParams {
   double sigma = 0;        // output-grid sigma (already divided by u)
   double frequency = 0;    // f = base_frequency u
   int k = 0;
-  int divisor = 0;  // each grid position's sum over its k neighbours is divided by this
+  int divisor = 0;  // each grid position's sum over its k neighbors is divided by this
   bool periodic = false;
   std::vector<GaborChannel> channels;
 
@@ -48,7 +48,7 @@ struct MapsParams {
 };
 
 // The maps (C x G, G grid positions) of `points` (N x 2, may require grad) with weights
-// (N x A, or 0 x 0 for none) at `grid` (G x 2) from the neighbour indices `idx` (G x k),
+// (N x A, or 0 x 0 for none) at `grid` (G x 2) from the neighbor indices `idx` (G x k),
 // differentiable in the points through an analytic backward.
 // The CPU kernel: CPU tensors only (gabor_feature_maps.cpp).
 torch::Tensor gabor_maps_cpu_kernel(const torch::Tensor& points, const torch::Tensor& weights, const torch::Tensor& grid,

@@ -1,9 +1,9 @@
 // The Gabor maps (paper Eq. 5) with LibTorch operations, on the device the tensors are on:
 // the path a CUDA run takes (models/gabor_feature_maps.hpp). The same sum and the same
-// analytic backward as the CPU kernel in gabor_feature_maps.cpp, organised for a device
-// instead of a thread: the k neighbours of every grid position are gathered once into
+// analytic backward as the CPU kernel in gabor_feature_maps.cpp, organized for a device
+// instead of a thread: the k neighbors of every grid position are gathered once into
 // res^2 x k offsets, each channel is a few element-wise operations over them, and the
-// backward scatters the per-neighbour gradients into the points with one index_add (whose
+// backward scatters the per-neighbor gradients into the points with one index_add (whose
 // CUDA implementation is deterministic when deterministic algorithms are on, as a CUDA run
 // sets them: optim/run/runtime.hpp). Memory: a few res^2 x k tensors at a time, not
 // res^2 x k x C; nothing but the inputs is kept for the backward, which gathers again.
@@ -19,22 +19,22 @@ namespace {
 using torch::autograd::AutogradContext;
 using torch::autograd::variable_list;
 
-// The offsets d = p_i - g of the k neighbours of every grid position (G x k per axis, the
+// The offsets d = p_i - g of the k neighbors of every grid position (G x k per axis, the
 // minimum image on the torus), their Gaussian e = exp(-|d|^2 / 2 sigma^2), and the weight
 // columns gathered the same way (one G x k tensor per attribute).
-struct Neighbourhood {
+struct Neighborhood {
   torch::Tensor dx, dy, e;
   std::vector<torch::Tensor> w;
 };
 
-Neighbourhood gather(const torch::Tensor& P, const torch::Tensor& W, const torch::Tensor& grid, const torch::Tensor& idx,
+Neighborhood gather(const torch::Tensor& P, const torch::Tensor& W, const torch::Tensor& grid, const torch::Tensor& idx,
                      const MapsParams& mp) {
   const int64_t G = idx.size(0), k = idx.size(1);
   const auto flat = idx.reshape({-1});
   auto d = P.index_select(0, flat).view({G, k, 2}) - grid.unsqueeze(1);
   // round() is half to even, as the kernel's nearbyint: the same image at exactly half a period.
   if (mp.periodic) d = d - torch::round(d);
-  Neighbourhood n;
+  Neighborhood n;
   n.dx = d.select(2, 0);
   n.dy = d.select(2, 1);
   n.e = torch::exp((n.dx * n.dx + n.dy * n.dy) * (-1.0 / (2.0 * mp.sigma * mp.sigma)));
@@ -43,7 +43,7 @@ Neighbourhood gather(const torch::Tensor& P, const torch::Tensor& W, const torch
 }
 
 // nu . d for the channel's frequency nu = (nx, ny), nx and ny in {-1, 0, 1} (undefined for nu = 0).
-torch::Tensor dot_nu(const Neighbourhood& n, int nx, int ny) {
+torch::Tensor dot_nu(const Neighborhood& n, int nx, int ny) {
   torch::Tensor t;
   if (nx != 0) t = nx > 0 ? n.dx : -n.dx;
   if (ny != 0) t = !t.defined() ? (ny > 0 ? n.dy : -n.dy) : (ny > 0 ? t + n.dy : t - n.dy);
@@ -61,7 +61,7 @@ class GaborMapsTensorOpsFunction : public torch::autograd::Function<GaborMapsTen
     const auto G = grid.to(P.scalar_type());
     // No weights travel as a 0 x 0 tensor: autograd functions take no undefined inputs.
     const auto W = weights.numel() > 0 ? weights.to(P.scalar_type()) : torch::empty({0, 0}, P.options());
-    const Neighbourhood n = gather(P, W, G, idx, mp);
+    const Neighborhood n = gather(P, W, G, idx, mp);
     const double w2pi = kTwoPi * mp.frequency;
     std::vector<torch::Tensor> maps;
     for (const auto& ch : mp.channels) {
@@ -77,13 +77,13 @@ class GaborMapsTensorOpsFunction : public torch::autograd::Function<GaborMapsTen
   }
 
   // d/dp [e] = -e d / sigma^2 ; d/dp [e cos th] = -e cos th d / sigma^2 - e sin th 2 pi f nu.
-  // Summed over the channels per neighbour first (three G x k accumulators), then scattered.
+  // Summed over the channels per neighbor first (three G x k accumulators), then scattered.
   static variable_list backward(AutogradContext* ctx, variable_list grad_out) {
     const auto saved = ctx->get_saved_variables();
     const MapsParams mp = MapsParams::load(ctx);
     const auto &P = saved[0], &W = saved[1], &G = saved[2], &idx = saved[3];
     const auto gout = grad_out[0].to(P.scalar_type());
-    const Neighbourhood n = gather(P, W, G, idx, mp);
+    const Neighborhood n = gather(P, W, G, idx, mp);
     const double w2pi = kTwoPi * mp.frequency;
     auto radial = torch::zeros_like(n.e), along_x = torch::zeros_like(n.e), along_y = torch::zeros_like(n.e);
     for (size_t c = 0; c < mp.channels.size(); ++c) {

@@ -1,5 +1,5 @@
 // "pixel_splat": points splatted into a res x res image with bilinear weights, so the image
-// is differentiable in the positions (Fig. 12c: random filters on pixelised points, no
+// is differentiable in the positions (Fig. 12c: random filters on pixelized points, no
 // Gabor maps). One channel per weight column (1 without attributes); the pixel value is
 // the summed weight, i.e. a point density.
 #include "core/config/defaults_catalog.hpp"
@@ -15,7 +15,7 @@ class PixelSplatRasterizer : public Rasterizer {
   torch::Tensor forward(const torch::Tensor& points, const torch::Tensor& weights, double,
                         const torch::Tensor&) override {
     const int64_t R = res_;
-    // Pixel centres at the Gabor grid positions: u = (x - b) / (1 - 2b) * (R - 1).
+    // Pixel centers at the Gabor grid positions: u = (x - b) / (1 - 2b) * (R - 1).
     const double b = 1.0 / (R + 1);
     auto uv = (points - b) / (1.0 - 2.0 * b) * static_cast<double>(R - 1);
     auto uv0 = torch::floor(uv.detach());

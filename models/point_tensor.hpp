@@ -7,7 +7,7 @@
 namespace ppsynth {
 
 torch::Tensor positions_tensor(const PointSet& ps, torch::Dtype dtype = torch::kFloat32);
-// Copies N x 2 positions back into `ps` (same size), e.g. after optimisation.
+// Copies N x 2 positions back into `ps` (same size), e.g. after optimization.
 void set_positions(PointSet& ps, const torch::Tensor& xy);
 // Attribute columns `columns` as N x A, each divided by its maximum over the set (the
 // weights w_i of Eq. 5; method.md section 2). An all-zero column gives weight 1.

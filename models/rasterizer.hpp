@@ -23,9 +23,9 @@ class Rasterizer : public torch::nn::Module {
 struct RasterizerArgs {
   int res = 128;        // grid positions per axis of THIS raster (output: u * exemplar res)
   double upscale = 1;   // u
-  int k = 0;            // neighbours (Gabor): the method's "k", which defaults to GaborMapsOptions::k
-  bool output = false;  // the raster of the synthesised points (not the exemplar's)
-  int divisor = 0;      // Gabor: GaborMapsOptions::divisor (0: the neighbours summed)
+  int k = 0;            // neighbors (Gabor): the method's "k", which defaults to GaborMapsOptions::k
+  bool output = false;  // the raster of the synthesized points (not the exemplar's)
+  int divisor = 0;      // Gabor: GaborMapsOptions::divisor (0: the neighbors summed)
 };
 
 using RasterizerRegistry = Registry<Rasterizer, RasterizerArgs>;

@@ -4,7 +4,7 @@
 #   .deps/debs/    the header-only Debian packages ppsynth builds with, as .deb files
 #                  (apt-get download: nanoflann, nlohmann-json, CLI11, Catch2, spdlog, fmt)
 #   .deps/root/    their headers, unpacked (usr/include): cmake -DPPSYNTH_DEPS_DIR=$PWD/.deps/root
-#   .deps/shared/  the exemplars scripts/gpu_check.sh synthesises (PPSYNTH_SHARED there)
+#   .deps/shared/  the exemplars scripts/gpu_check.sh synthesizes (PPSYNTH_SHARED there)
 # .deps/ is ignored by git; the device tool takes it along when its `carry` names it.
 # Usage: scripts/carry_deps.sh   (on a Debian machine with ../shared beside the checkout)
 set -euo pipefail

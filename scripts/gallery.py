@@ -5,7 +5,7 @@
     scripts/gallery.py -o gallery.html --preset fast    # the same at the fast preset (minutes each)
     scripts/gallery.py -o gallery.html --runs DIR...    # finished run directories (a sweep's runs/*)
 
-Without --runs, it synthesises each base config of configs/runs (one per shipped exemplar: the
+Without --runs, it synthesizes each base config of configs/runs (one per shipped exemplar: the
 configs whose parent, if any, is a method fragment) into a scratch directory, `--quick` unless
 --preset is given (quick settings show the pipeline, not the method's quality). Each card shows
 the exemplar beside the output (the run's exemplar_vs_output.png), the point counts, PCF MSE,
@@ -49,7 +49,7 @@ def base_configs():
     return out
 
 
-def synthesise(configs, work, preset, threads):
+def synthesize(configs, work, preset, threads):
     dirs = []
     for i, cfg in enumerate(configs, 1):
         d = os.path.join(work, os.path.splitext(os.path.basename(cfg))[0])
@@ -127,7 +127,7 @@ th {{ text-align: left; color: #666; font-weight: normal; padding-right: 1em; }}
 <body>
 <h1>ppsynth gallery</h1>
 <p class="lead">Each exemplar (left), the points the synthesis started from (middle), and the pattern
-ppsynth synthesised from it (right, 2 x 2 the exemplar's area). {what}</p>
+ppsynth synthesized from it (right, 2 x 2 the exemplar's area). {what}</p>
 <main>
 {cards}
 </main>
@@ -140,7 +140,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("-o", "--out", required=True, help="the HTML page to write")
     ap.add_argument("--runs", nargs="+", metavar="RUN_DIR", help="finished run directories instead of new syntheses")
-    ap.add_argument("--preset", help="synthesise at this preset (e.g. fast) instead of --quick")
+    ap.add_argument("--preset", help="synthesize at this preset (e.g. fast) instead of --quick")
     ap.add_argument("--work", help="keep the syntheses in this new directory (default: a scratch directory, removed)")
     ap.add_argument("--threads", type=int, default=0, help="threads per synthesis (default: PPSYNTH_THREADS or every core)")
     ap.add_argument("--force", action="store_true", help="replace an existing page")
@@ -160,7 +160,7 @@ def main():
         what = "Finished runs."
     else:
         work = args.work or (scratch := tempfile.TemporaryDirectory(prefix="ppsynth-gallery-")).name
-        dirs = synthesise(base_configs(), work, args.preset, args.threads)
+        dirs = synthesize(base_configs(), work, args.preset, args.threads)
         what = ("At the " + args.preset + " preset." if args.preset else
                 "At quick settings (tiny grids, few iterations): they show every exemplar through the "
                 "pipeline, not the method's quality; <code>--preset fast</code> or <code>--runs</code> for that.")

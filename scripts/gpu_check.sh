@@ -113,7 +113,7 @@ for prec in float32 tf32; do
   ppsynth bench "$lines" --device "$device" --reps "$reps" --skip-setup --set runtime.tf32=$tf32 "${bench_sizes[@]}" \
     --json "$out/bench_$prec.json" > "$work/bench_$prec.txt" 2>&1 || { cat "$work/bench_$prec.txt"; fail "bench ($prec)"; }
   say "bench, $prec:"
-  grep -E "^ppsynth bench|ONE|Gabor|network|loss|neighbour" "$work/bench_$prec.txt" | tee -a "$summary"
+  grep -E "^ppsynth bench|ONE|Gabor|network|loss|neighbor" "$work/bench_$prec.txt" | tee -a "$summary"
 done
 
 # --- 5. whole runs -------------------------------------------------------------------------

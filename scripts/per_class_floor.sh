@@ -2,12 +2,12 @@
 # What the per-class quadrant PCF MSE can tell apart on a scene (docs/lab/method_measurements.md, "What the
 # per-class criterion measures"). Over seeds 1..N it evaluates two reference patterns against
 # the exemplar with `ppsynth eval`:
-#   init  - each class drawn alone by the synthesiser's initialiser (best candidate, u^2 x
-#           the class's exemplar count): the baseline of "half the initialisation"
+#   init  - each class drawn alone by the synthesizer's initializer (best candidate, u^2 x
+#           the class's exemplar count): the baseline of "half the initialization"
 #   copy  - the exemplar tiled u x u at a seeded random torus offset (method "tiled_copy"):
 #           locally the exemplar itself, the best any structure-preserving method can do
 # and prints, per class and for all classes, the median of each and the fraction of copies
-# whose MSE is at most half the median initialisation's. A class where even the copy rarely
+# whose MSE is at most half the median initialization's. A class where even the copy rarely
 # meets that bound is one the metric cannot judge at this exemplar size.
 #
 #   scripts/per_class_floor.sh EXEMPLAR [N=40] [UPSCALE=2]

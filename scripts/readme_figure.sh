@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Makes the README's picture: the paper's `lines` exemplar (20 points) beside a synthesis of
-# it (80 points), docs/images/readme_lines.png. Synthesises configs/runs/lines.json (seed 95)
+# it (80 points), docs/images/readme_lines.png. Synthesizes configs/runs/lines.json (seed 95)
 # with the `fast` preset, which stops each stage once its pattern stops improving, then plots
 # the run's exemplar and output side by side. A few minutes on one core.
 # Usage: scripts/readme_figure.sh [RUN_DIR] (default runs/readme_lines; an earlier run of this

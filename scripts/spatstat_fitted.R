@@ -1,6 +1,6 @@
 # What a statistician would do instead of ppsynth: fit a point process model to an exemplar with
 # spatstat (ppm for Gibbs and Poisson models, kppm for cluster models) and simulate it on the
-# output's window. The realisations are the "fitted model" column of docs/verdict.md's
+# output's window. The realizations are the "fitted model" column of docs/verdict.md's
 # real-data table: eval's verdict should pass them at its nominal rate when the model is
 # right.
 #
@@ -12,7 +12,7 @@
 #   poisson        ppm(X ~ 1)                        (multitype: ~ marks)
 #   strauss        ppm(X ~ 1, StraussHard(r)): Strauss with a hard core (estimated by
 #                  spatstat from the closest pair), r by profile likelihood over 20 values
-#                  in [0.2, 2] x the mean nearest-neighbour distance
+#                  in [0.2, 2] x the mean nearest-neighbor distance
 #   thomas         kppm(X ~ 1, "Thomas")              (minimum contrast on K)
 #   multistrauss   ppm(X ~ marks, MultiStraussHard(r)), hard cores per type pair estimated,
 #                  one r for pairs of a type and another for pairs of two types, by profile
@@ -85,7 +85,7 @@ cat(sprintf("%s: model %s\n", args[1], model))
 print(fit)
 
 # Gibbs models are simulated on the window grown by a margin and clipped: on the window alone
-# the points at its edge miss the neighbours beyond it, and crowd there (a free boundary),
+# the points at its edge miss the neighbors beyond it, and crowd there (a free boundary),
 # where the exemplar is a window cut out of a larger pattern. Cluster models simulate their
 # parents beyond the window themselves.
 margin <- 0.25 * min(diff(W$xrange), diff(W$yrange))

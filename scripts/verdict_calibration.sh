@@ -2,10 +2,10 @@
 # Calibration and power of eval's verdict (core/metrics/verdict.hpp; docs/verdict.md): known
 # processes simulated by spatstat (scripts/verdict_simulate.R), judged by `ppsynth eval`.
 # Prints, per process and per kind of output, the share of draws whose p < 0.05 in each row:
-#   same     an independent realisation: the share should be 0.05 (calibration)
+#   same     an independent realization: the share should be 0.05 (calibration)
 #   csr      uniform points of the same count per class (power)
 #   ssi      a Poisson-disk pattern of the same count per class (power)
-#   relabel  the realisation with its labels permuted (power; multitype only)
+#   relabel  the realization with its labels permuted (power; multitype only)
 #
 #   scripts/verdict_calibration.sh DIR DRAWS [U=2] [FIRST=1] [EVAL FLAGS...]
 #   e.g. scripts/verdict_calibration.sh /tmp/verdict 200 2 201 --verdict-guard 0.1

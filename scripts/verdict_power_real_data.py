@@ -7,7 +7,7 @@ process are told apart from it, per data set (docs/verdict.md, "Real data").
 
 EXEMPLAR_DIR holds the exported data sets (scripts/spatstat_export.R). For each data set and
 draw, three kinds of output of K x K the exemplar's window (default 2, the size ppsynth
-synthesises by default) and K^2 x its points per class, in exemplar units (judged with zoom 1,
+synthesizes by default) and K^2 x its points per class, in exemplar units (judged with zoom 1,
 as eval judges ppsynth's outputs); a larger K shows how the power grows with the output:
     csr      uniform points (complete spatial randomness), each class its count;
     ssi      a Poisson-disk pattern of all the points (dart throwing at 0.65 of the densest

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The real-data table of docs/verdict.md: spatstat.data's patterns as exemplars
 # (scripts/spatstat_export.R), each judged against
-#   fitted      realisations of a model spatstat fits to it (scripts/spatstat_fitted.R)
+#   fitted      realizations of a model spatstat fits to it (scripts/spatstat_fitted.R)
 #   METHOD      ppsynth's outputs of each method given (gabor, tiled_copy, roveri2015, pcf2017)
 # by `ppsynth eval` (its verdict, the L-function's distance and the PCF MSE the project
 # reports), one row per data set, kind and seed in DIR/results.tsv:

@@ -6,8 +6,8 @@
 # For each process and draw d = FIRST..FIRST+DRAWS-1 (seeded by d: the same files for the same
 # arguments; another FIRST gives fresh draws),
 # OUT_DIR/PROCESS/ gets, as plain point files (core/formats/plain_text_format.hpp):
-#   dNNN_exemplar.txt  a realisation on the exemplar window (the unit square)
-#   dNNN_same.txt      an independent realisation on [0, U] x [0, U] (exemplar units, zoom 1):
+#   dNNN_exemplar.txt  a realization on the exemplar window (the unit square)
+#   dNNN_same.txt      an independent realization on [0, U] x [0, U] (exemplar units, zoom 1):
 #                      the null hypothesis, what a perfect synthesis would give
 #   dNNN_csr.txt       uniform points, as many (per class) as dNNN_same.txt: no structure
 #   dNNN_ssi.txt       a Poisson-disk pattern (simple sequential inhibition, rSSI) of the same

@@ -1,5 +1,5 @@
 #pragma once
-// The catalogue behind `ppsynth config --defaults`: each registry adds itself under its
+// The catalog behind `ppsynth config --defaults`: each registry adds itself under its
 // kind name ("loss", "rasterizer", ...) so one command prints every default of the project.
 #include <functional>
 #include <string>

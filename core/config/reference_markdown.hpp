@@ -1,7 +1,7 @@
 #pragma once
 // Every config key of every registered part as Markdown: the generated half of the reference
 // (docs/reference_generated.md, written by `ppsynth config --markdown`). It is made from the
-// same catalogue as `ppsynth config --defaults` (core/config/defaults_catalog.hpp), so the page
+// same catalog as `ppsynth config --defaults` (core/config/defaults_catalog.hpp), so the page
 // says what the registries hold; a test fails when the committed page differs.
 #include <string>
 

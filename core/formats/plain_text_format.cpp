@@ -79,7 +79,7 @@ PointSet parse_plain_text(const std::string& text, const std::string& source) {
         have_labels = true;
       } else if (tok.size() >= 2 && tok[0] == "x" && tok[1] == "y") {
         if (started) throw file_error(source, line, "the column header must precede the first point");
-        // A parenthesised remark ends the names: "# x y  (Poisson-disk initialisation ...)",
+        // A parenthesized remark ends the names: "# x y  (Poisson-disk initialization ...)",
         // as in the published code's reference files.
         auto remark = std::find_if(tok.begin(), tok.end(), [](const std::string& t) { return !t.empty() && t[0] == '('; });
         tok.erase(remark, tok.end());

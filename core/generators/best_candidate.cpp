@@ -26,7 +26,7 @@ PointSet best_candidate_points(size_t n, uint64_t seed, Domain d, const BestCand
     Vec2 best = gen_detail::uniform_in(rng, window);
     double best_d = -1;
     if (count > 0) {
-      // Search radius that usually contains a neighbour; doubled when it does not.
+      // Search radius that usually contains a neighbor; doubled when it does not.
       const double start = 2 * std::sqrt(d.area() / count);
       for (size_t c = 0; c < candidates; ++c) {
         if (opt.poll && ++since_poll >= 4096) since_poll = 0, opt.poll();
@@ -60,7 +60,7 @@ PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "best_candidate",
                  (nlohmann::json{{"m", 10.0}, {"margin", 0.01}}),
                  (nlohmann::json{{"m", "(0, 10000]"}, {"margin", "[0, 0.5)"}}),
                  "Mitchell best-candidate (toroidal distances, m * count candidates; margin 0.01 = "
-                 "the published initialisation's [0.01, 0.99]^2)",
+                 "the published initialization's [0.01, 0.99]^2)",
                  [](const nlohmann::json& p) {
                    auto g = std::make_unique<ppsynth::BestCandidateGen>();
                    g->opt.m = p["m"].get<double>();

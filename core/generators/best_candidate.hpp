@@ -3,7 +3,7 @@
 // uniform candidates (at least 1), "best" = farthest from its nearest accepted point,
 // measured toroidally over the full domain so the pattern tiles. The candidates are drawn in
 // the sub-window shrunk by `margin` on every side (as a fraction of width/height); the
-// published code initialises with n points in [0.01, 0.99]^2, i.e. margin = 0.01 (the
+// published code initializes with n points in [0.01, 0.99]^2, i.e. margin = 0.01 (the
 // default). margin = 0 gives the classic toroidal best-candidate pattern.
 // Registered as "best_candidate" {m, margin}.
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// Seeded classic point processes ("generators"), used as exemplars, initialisations and
+// Seeded classic point processes ("generators"), used as exemplars, initializations and
 // metric baselines. Each process is a free function `PointSet f(size_t n, uint64_t seed,
 // Domain d = {}, ...params)` in its own header, plus a PointGenerator registered in
 // GeneratorRegistry under its config name, so configs and `ppsynth generate` can say

@@ -133,7 +133,7 @@ PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "jittered_grid", (nlohmann::json{{"
                  })
 PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "regular_grid", nlohmann::json::object(),
                  nlohmann::json::object(),
-                 "cell centres of a regular grid",
+                 "cell centers of a regular grid",
                  [](const nlohmann::json&) { return std::make_unique<ppsynth::RegularGen>(); })
 PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "hexagonal_lattice", (nlohmann::json{{"random_offset", false}}),
                  nlohmann::json::object(),

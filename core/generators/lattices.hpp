@@ -3,8 +3,8 @@
 // - jittered_grid: the domain is cut into a c x r grid of cells (c*r >= n, c/r close to the
 //   domain's aspect ratio, c = ceil(sqrt(n*W/H))); n cells (all when c*r == n, else a seeded
 //   random subset) each get one point uniform within the cell scaled by `jitter` (1 = full
-//   cell, 0 = cell centre). Registered as "jittered_grid" {jitter}.
-// - regular_grid: the same cells' centres, no randomness except which cells are used when
+//   cell, 0 = cell center). Registered as "jittered_grid" {jitter}.
+// - regular_grid: the same cells' centers, no randomness except which cells are used when
 //   c*r > n. Registered as "regular_grid".
 // - hexagonal_lattice: a perfect triangular (hexagonal-packing) lattice with `cols` points a
 //   row and an even number of rows, rows offset by half a spacing; the row spacing is chosen

@@ -27,7 +27,7 @@ PointSet matern_cluster_points(size_t n, uint64_t seed, Domain d, const MaternCl
   std::poisson_distribution<long> n_children(opt.mean_children);
   std::uniform_real_distribution<double> u01(0, 1);
   std::vector<Vec2> pts;
-  // Realisations until at least n children exist (conditioning on n).
+  // Realizations until at least n children exist (conditioning on n).
   for (int round = 0; pts.size() < n; ++round) {
     if (round > 10000) throw InputError("matern_cluster: cannot produce n points with these parameters");
     const long parents = std::max(1L, n_parents(rng));

@@ -1,5 +1,5 @@
 #pragma once
-// Points parked on the border: the Gabor method's known artefact (its maps are not periodic,
+// Points parked on the border: the Gabor method's known artifact (its maps are not periodic,
 // the positions wrap), so evaluate() reports the share of points in a band along the border.
 //
 // The band is 1 % of the domain's SHORTER side, the same width on all four edges: on the
@@ -26,7 +26,7 @@ double border_fraction(const PointSet& ps);
 double uniform_border_fraction(const Domain& d);
 
 // The border's density at several band widths, each over what uniform points put there
-// (1 = uniform). border_fraction is one band; a profile tells the two artefacts apart that it
+// (1 = uniform). border_fraction is one band; a profile tells the two artifacts apart that it
 // mixes: the published method's pile (points parked within a fraction of a spacing of the
 // edge: > 1 in the narrowest bands) and a thin seam behind it or left by a relax that moved
 // the pile away (< 1). On the unit square the published poisson_n64c2_point output is 1.14 at

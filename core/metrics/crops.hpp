@@ -9,7 +9,7 @@
 // (all classes counted), so a crop holds about as many points as the exemplar: z = 1 for
 // outputs in exemplar units, 1/2 for the paper's u = 2 unit square. The zoom is read from the
 // two sets' densities when nothing else is known, so any pair of files can be evaluated; a run
-// knows its own (OutputShape::zoom(): the scale it synthesised at) and passes it, so that an
+// knows its own (OutputShape::zoom(): the scale it synthesized at) and passes it, so that an
 // output made at another density than the exemplar's domain's (output.density "bounds") is
 // cut at its own scale and not rescaled back to the domain's density.
 // Placement: lower-left corners uniform in [x0, x1 - w] x [y0, y1 - h] of the output domain,

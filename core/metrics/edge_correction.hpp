@@ -6,7 +6,7 @@
 //   translation  e(h) = |W| / |W ∩ (W + h)| = w h / ((w - |h_x|) (h - |h_y|)) for the pair
 //                vector h; symmetric in the pair.
 //   isotropic    e(x, r) = 1 / (share of the circle of radius r around x that lies in W)
-//   (Ripley)     for the pair (x, y) with r = |y - x|; centred on the first point, so the
+//   (Ripley)     for the pair (x, y) with r = |y - x|; centered on the first point, so the
 //                two orders of a pair weigh differently.
 //
 // Both are capped as spatstat caps them: the translation weight at 100 (its option
@@ -24,7 +24,7 @@ const char* edge_correction_name(EdgeCorrection c);
 inline constexpr double kMaxEdgeWeight = 100.0;
 
 double translation_weight(const Domain& w, double dx, double dy);
-double isotropic_weight(const Domain& w, Vec2 centre, double r);
+double isotropic_weight(const Domain& w, Vec2 center, double r);
 
 // The weight of the ordered pair (a, b) under `c`.
 inline double edge_weight(EdgeCorrection c, const Domain& w, Vec2 a, Vec2 b, double d) {

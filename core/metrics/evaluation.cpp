@@ -30,7 +30,7 @@ constexpr size_t kProgressPoints = 50000;
 
 // The metrics square distances (k-d tree, PCF) and map each set onto the unit square: a
 // domain side outside 1e-100..1e100 overflows or underflows them (a 1e300-wide domain lost
-// every neighbour, a 1e-310-wide one turned positions into NaN and hung the assignment).
+// every neighbor, a 1e-310-wide one turned positions into NaN and hung the assignment).
 void check_domain(const PointSet& ps, const char* which) {
   const Domain& d = ps.domain();
   for (double side : {d.width(), d.height()})
@@ -167,7 +167,7 @@ json evaluate(const PointSet& exemplar, const PointSet& output, const EvalOption
   check_domain(exemplar, "exemplar");
   check_domain(output, "output");
   const Progress progress(exemplar.size() + output.size() >= kProgressPoints);
-  progress("{} exemplar and {} output points: nearest neighbours", exemplar.size(), output.size());
+  progress("{} exemplar and {} output points: nearest neighbors", exemplar.size(), output.size());
   json r;
   r["exemplar"] = set_summary(exemplar);
   r["output"] = set_summary(output);

@@ -42,7 +42,7 @@
 //              frequency over the median of its ring; tiled copies and lattices score high)
 //   "second_order": the field's K, L, g per row and the mark correlations, exemplar and
 //              output in exemplar units (second_order_report.hpp; unless second_order is false)
-//   "verdict": the two-sample test per row, "is the output a plausible realisation of the
+//   "verdict": the two-sample test per row, "is the output a plausible realization of the
 //              exemplar's process?" (verdict.hpp; unless verdict is false)
 //   "options": the PCF options used (and wasserstein_exact_pairs).
 // Wasserstein per row: "wasserstein_method" "exact" | "subsample". Beyond the exact limit
@@ -52,7 +52,7 @@
 // the table prints the estimate as "~value" with a note.
 // More than kMaxPairClasses (64) classes: "cross" is empty and "cross_skipped" says why.
 // Cost (measured in docs/performance.md, "Evaluation on large inputs"): O(N log N) for the
-// nearest-neighbour statistics, Chamfer and the PCFs (k-d tree queries), the exact
+// nearest-neighbor statistics, Chamfer and the PCFs (k-d tree queries), the exact
 // Wasserstein O(n^2 m) up to the limit, per patch (crops: `crops` patches instead of 4).
 // Inputs of 50,000 points or more log each stage.
 // PCF curves are included unless options.include_curves is false ("r" in r_max units,

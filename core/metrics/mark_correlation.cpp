@@ -42,11 +42,11 @@ MarkCorrelation mark_correlation(const PointSet& ps, size_t attribute, EdgeCorre
   const std::vector<double>& m = ps.attribute_column(attribute);
   double mean = 0;
   for (double v : m) {
-    if (v < 0) throw InputError("mark correlation of '" + name + "': negative marks (k_mm is normalised by the mean mark)");
+    if (v < 0) throw InputError("mark correlation of '" + name + "': negative marks (k_mm is normalized by the mean mark)");
     mean += v;
   }
   if (!m.empty()) mean /= static_cast<double>(m.size());
-  if (!(mean > 0)) throw InputError("mark correlation of '" + name + "': the mean mark is 0, nothing to normalise by");
+  if (!(mean > 0)) throw InputError("mark correlation of '" + name + "': the mean mark is 0, nothing to normalize by");
   const Domain& w = ps.domain();
   if (r.empty()) r = spatstat_r_grid(w, static_cast<double>(ps.size()) / w.area());
   MarkCorrelation out;

@@ -11,7 +11,7 @@
 // r grid is K's (second_order.hpp, lambda = n / |W|). Evaluated as the exact kernel sums
 // where R's density() bins the distances first (tests/core/test_spatstat_estimators.cpp
 // states the tolerance). Marks must be >= 0 with a mean > 0 (spatstat refuses the same when
-// normalising): InputError naming the attribute.
+// normalizing): InputError naming the attribute.
 #include <cstddef>
 #include <vector>
 

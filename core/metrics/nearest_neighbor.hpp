@@ -1,5 +1,5 @@
 #pragma once
-// Nearest-neighbour statistics of a point set (all classes together; pass
+// Nearest-neighbor statistics of a point set (all classes together; pass
 // ps.subset_class(k) for one class). Distances are in domain units; `periodic` measures them
 // on the torus formed by ps.domain() (minimum image), otherwise in the plane.
 //
@@ -16,7 +16,7 @@
 
 namespace ppsynth {
 
-// Smallest and mean nearest-neighbour distance in one pass (what min_nn_distance and
+// Smallest and mean nearest-neighbor distance in one pass (what min_nn_distance and
 // mean_nn_distance return).
 struct NnStats {
   double min = 0, mean = 0;

@@ -23,7 +23,7 @@ void check_options(const PcfOptions& o) {
   if (!(o.r_max >= 0) || !std::isfinite(o.r_max)) throw InputError("pcf: r_max must be >= 0");
 }
 
-// Shared estimator: pairs (i in a, j in b, i != j when `same`), normalised by `lambda2`.
+// Shared estimator: pairs (i in a, j in b, i != j when `same`), normalized by `lambda2`.
 Curve estimate(const PointSet& a, const PointSet& b, bool same, double r_max, double lambda2,
                const PcfOptions& o) {
   const Domain& dom = a.domain();

@@ -3,7 +3,7 @@
 // Chapter 4, Eq. 4.1; Oztireli & Gross 2012), over the whole domain:
 //
 //   g(r) = 1 / (lambda^2 * 2 pi r) * sum_{i != j} k(r - |h_ij|) / a(h_ij)
-//   k(t) = exp(-t^2 / sigma^2) / (sqrt(pi) sigma)          (1-D normalised Gaussian)
+//   k(t) = exp(-t^2 / sigma^2) / (sqrt(pi) sigma)          (1-D normalized Gaussian)
 //
 // with h_ij = x_j - x_i, lambda^2 = N (N-1) / A^2 (unbiased for the auto-PCF; the cross-PCF
 // of classes a, b uses lambda_a lambda_b = N_a N_b / A^2 and sums over i in a, j in b), and
@@ -20,7 +20,7 @@
 // DISTANCE d_max = 2 * packing_radius(N, A) = sqrt(2 A / (sqrt(3) N)) (pcf_unit below), not
 // the disk radius that relative_radius divides by. Checked against the reference numbers in
 // shared/data/reference/README.md: with this unit the quadrant PCF MSE of `lines` comes out
-// 0.0155 (reference 0.0156) and 0.146 for its initialisation (0.149); with the disk radius as
+// 0.0155 (reference 0.0156) and 0.146 for its initialization (0.149); with the disk radius as
 // unit it would be 0.041 and 0.58.
 // `bins` radii evenly spaced from r_min_factor*r_max to r_max_factor*r_max (thesis: 100
 // samples up to 2.5 r_max), kernel width sigma = sigma_factor * r_max (thesis: 0.25).

@@ -8,7 +8,7 @@
 //   g(r) = |W| / (n (n - 1)) * sum_{i != j} kappa_h(r - d_ij) e_ij / (2 pi r)   pair correlation
 //
 // over ordered pairs, with e_ij the edge weight of the pair (edge_correction.hpp: translation
-// or isotropic, centred on i). Cross-type (points of type a to points of type b, a != b; the
+// or isotropic, centered on i). Cross-type (points of type a to points of type b, a != b; the
 // two sets share one window): n (n - 1) becomes n_a n_b and the sums run over a x b.
 //   kappa_h  Epanechnikov kernel of half-width h, 3/(4h) (1 - t^2/h^2) on |t| < h: spatstat's
 //            default (kernel "epanechnikov", bw = h / sqrt(5)) with h = 0.15 / sqrt(lambda)

@@ -1,5 +1,5 @@
 #pragma once
-// The verdict: "is this output a plausible realisation of the exemplar's process?", as a
+// The verdict: "is this output a plausible realization of the exemplar's process?", as a
 // two-sample test with a p-value for all points, per class and per class pair.
 //
 // Test: Hahn's (2012) studentized permutation test of equal K-functions, with sub-windows as
@@ -15,7 +15,7 @@
 //      split cells a side takes part (placed by the seed): the test of a larger output is the
 //      test of the default output's size, at a place in it. Each cell is shrunk by guard / 2
 //      of its side on every side (guard = the share of a cell's side left between two
-//      sub-windows), so that neighbouring sub-windows share less of a cluster or of a hard
+//      sub-windows), so that neighboring sub-windows share less of a cluster or of a hard
 //      core's reach.
 //   3. Per sub-window, K with the translation correction (second_order.hpp) on r_values
 //      radii in (0, r_max], r_max = a quarter of the sub-window's shorter side (spatstat's
@@ -27,7 +27,7 @@
 //   5. p = (1 + #{T* >= T}) / (1 + permutations), T* over random reassignments of the
 //      sub-windows to groups of the same sizes (seeded: the same p for the same inputs).
 // A row needs at least 2 sub-windows in each group; else its p is null with the reason.
-// The calibration (independent realisations pass at the nominal rate) and the power of
+// The calibration (independent realizations pass at the nominal rate) and the power of
 // these defaults are measured in docs/verdict.md.
 #include <cstdint>
 #include <string>
@@ -45,7 +45,7 @@ namespace ppsynth {
 // group with alike sub-windows and a tiny variance, Hahn's T of such reassignments swamps
 // the observed one, and the power against a clustered exemplar falls as the output grows;
 // sub-windows scattered over a larger output instead make the test reject a clustered
-// process's own realisations too often (docs/verdict.md, "Power against the output's size").
+// process's own realizations too often (docs/verdict.md, "Power against the output's size").
 inline constexpr int kOutputBlockPerExemplarSide = 2;
 
 struct VerdictOptions {

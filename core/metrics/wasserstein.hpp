@@ -40,7 +40,7 @@ WassersteinResult wasserstein_estimate(const PointSet& a, const PointSet& b,
                                        size_t max_pairs = kWassersteinExactPairs, uint64_t seed = 1);
 
 // The assignment itself: cost is rows x cols (rows <= cols), row-major; returns for each row
-// its column, minimising the total cost. Throws InputError if rows > cols.
+// its column, minimizing the total cost. Throws InputError if rows > cols.
 std::vector<size_t> optimal_assignment(const std::vector<double>& cost, size_t rows, size_t cols);
 
 }  // namespace ppsynth

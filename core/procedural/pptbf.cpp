@@ -44,7 +44,7 @@ const CellFeature& PptbfEvaluator::feature_of(const FeaturePoint& fp) {
 const CellShape& PptbfEvaluator::shape_of(const FeaturePoint& fp) {
   auto it = shapes_.find(fp.key);
   if (it != shapes_.end()) return it->second;
-  // neighbours around the site itself, so the shape does not depend on the pixel asking
+  // neighbors around the site itself, so the shape does not depend on the pixel asking
   std::vector<FeaturePoint> around;
   pp_.points_near(fp.p, pp_.reach(), around);
   CellShape cs = make_cell_shape(fp, around, prm_.norm, prm_.larp, prm_.arity, feature_of(fp).start_angle);

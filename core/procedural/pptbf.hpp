@@ -53,7 +53,7 @@ class PptbfEvaluator {
 double pptbf(const PptbfParams& params, double x, double y);
 
 // The PPTBF over the image window [x0,x1]x[y0,y1] (default the unit square) at width x
-// height pixels (pixel centres; row 0 at the top = y1). threads <= 0: hardware concurrency.
+// height pixels (pixel centers; row 0 at the top = y1). threads <= 0: hardware concurrency.
 GrayImage render_pptbf(const PptbfParams& params, int width, int height,
                        const Domain& window = Domain{}, int threads = 0);
 

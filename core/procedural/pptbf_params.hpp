@@ -27,7 +27,7 @@ struct PptbfParams {
 
   // --- point process (Table 1: nu_T, jit) ------------------------------------------------
   int tile_type = 0;         // 0..17, see pptbf_tiling.hpp
-  double jitter = 0.5;       // 0 = cell centres, 1 = uniform in (90% of) the cell
+  double jitter = 0.5;       // 0 = cell centers, 1 = uniform in (90% of) the cell
 
   // --- window function (Table 1: omega, ||.||_c, lambda, nv, lc, sigma_j) ------------------
   double normblend = 0.5;    // omega: weight of the cellular window w1 (1-omega for w2)

@@ -175,7 +175,7 @@ std::vector<FeaturePoint> PointProcess::points_of(const BaseCell& cell) {
   auto it = relaxed_cache_.find(cell.key);
   if (it != relaxed_cache_.end()) return it->second;
   std::vector<FeaturePoint> own = unrelaxed_points_of(cell);
-  // fixed neighbours: unrelaxed points of the cells around this one
+  // fixed neighbors: unrelaxed points of the cells around this one
   std::vector<BaseCell> around;
   const Vec2 c = cell.rect.center();
   base_cells_in_box(Rect{{c.x - 1.5, c.y - 1.5}, {c.x + 1.5, c.y + 1.5}}, around);
@@ -188,7 +188,7 @@ std::vector<FeaturePoint> PointProcess::points_of(const BaseCell& cell) {
     std::vector<Vec2> moved(own.size());
     for (size_t k = 0; k < own.size(); ++k) {
       const Vec2 q = own[k].p;
-      // three nearest neighbours among fixed + other own points
+      // three nearest neighbors among fixed + other own points
       double best[3] = {1e300, 1e300, 1e300};
       Vec2 bp[3] = {q, q, q};
       auto consider = [&](Vec2 n) {

@@ -1,9 +1,9 @@
 #pragma once
 // The PPTBF point process (supplement step [3], genPointSet): a tiling of the plane into
 // axis-aligned rectangular cells, an optional random subdivision of cells, and one feature
-// point per (sub)cell placed at p = centre + jitter * 0.9 * U[-1,1]^2 * half-size (jitter 0
-// = cell centres, 1 = uniform over 90% of the cell). Optional relaxation pushes each point
-// away from its three nearest neighbours (5 steps of 0.05) while keeping it in its cell.
+// point per (sub)cell placed at p = center + jitter * 0.9 * U[-1,1]^2 * half-size (jitter 0
+// = cell centers, 1 = uniform over 90% of the cell). Optional relaxation pushes each point
+// away from its three nearest neighbors (5 steps of 0.05) while keeping it in its cell.
 //
 // tile_type (nu_T), numbered as in the authors' public GPU implementation (the supplement
 // only gives the range); "+sub" = cells split with probability 0.5 (4-way for squarish
@@ -83,7 +83,7 @@ class PointProcess {
   int tile_type() const { return tile_type_; }
   // The supplement's empirical window footprint: 1.5, times 0.4 for tile types >= 10.
   double footprint() const { return tile_type_ >= 10 ? 0.6 : 1.5; }
-  // Half-width of the neighbourhood searched by pptbf(): footprint + 1 model units.
+  // Half-width of the neighborhood searched by pptbf(): footprint + 1 model units.
   double reach() const { return footprint() + 1.0; }
 
   // Base (unsubdivided) cells whose rectangle intersects `box`.

@@ -102,14 +102,14 @@ int sector_of(const CellShape& cs, double angle) {
 
 }  // namespace
 
-CellShape make_cell_shape(const FeaturePoint& site, const std::vector<FeaturePoint>& neighbours,
+CellShape make_cell_shape(const FeaturePoint& site, const std::vector<FeaturePoint>& neighbors,
                           double norm, double larp, int arity, double start_angle) {
   CellShape cs;
   cs.site = site;
   cs.norm = norm;
   cs.larp = larp;
   std::vector<FeaturePoint> others;
-  for (const FeaturePoint& q : neighbours)
+  for (const FeaturePoint& q : neighbors)
     if (!(q.key == site.key)) others.push_back(q);
   auto d2 = [&](const FeaturePoint& q) {
     return (q.p.x - site.p.x) * (q.p.x - site.p.x) + (q.p.y - site.p.y) * (q.p.y - site.p.y);

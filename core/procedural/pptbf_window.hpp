@@ -39,8 +39,8 @@ struct CellShape {
   std::vector<double> vertex_r;           // border distance at each vertex angle
 };
 
-// `neighbours` = feature points around the site (the site itself is skipped by key).
-CellShape make_cell_shape(const FeaturePoint& site, const std::vector<FeaturePoint>& neighbours,
+// `neighbors` = feature points around the site (the site itself is skipped by key).
+CellShape make_cell_shape(const FeaturePoint& site, const std::vector<FeaturePoint>& neighbors,
                           double norm, double larp, int arity, double start_angle);
 // Distance from the site to its cell border along the unit direction (ux, uy).
 double cellborder(const CellShape& cs, double ux, double uy);

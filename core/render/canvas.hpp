@@ -23,14 +23,14 @@ void render_to_file(const std::string& path, int width, int height,
 // --- text helpers (sans-serif "toy" font API; enough for labels and titles) -----------
 enum class HAlign { Left, Center, Right };
 enum class VAlign { Top, Middle, Baseline, Bottom };
-// Draws `text` at (x, y) with the given size (px) and alignment in the current colour.
+// Draws `text` at (x, y) with the given size (px) and alignment in the current color.
 void draw_text(cairo_t* cr, const std::string& text, double x, double y, double size_px,
                HAlign h = HAlign::Left, VAlign v = VAlign::Baseline, bool bold = false,
                double angle_rad = 0.0);
 // Width in px of `text` at `size_px`.
 double text_width(cairo_t* cr, const std::string& text, double size_px, bool bold = false);
 // Paints `image` scaled by `scale` with its corner at (x, y), clipped to w x h, one block of
-// pixels per image pixel (nearest neighbour: heat maps and rasters stay sharp). Takes
+// pixels per image pixel (nearest neighbor: heat maps and rasters stay sharp). Takes
 // ownership of `image`.
 void paint_image_nearest(cairo_t* cr, cairo_surface_t* image, double x, double y, double w, double h, double scale);
 

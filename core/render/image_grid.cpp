@@ -40,7 +40,7 @@ Rgb map_value(double v, const MinMax& r, ColorMap cmap) {
   return cmap == ColorMap::Viridis ? viridis(t) : gray(t);
 }
 
-// Paints `im` scaled (nearest neighbour) into the square cell at (x, y) of side `side`.
+// Paints `im` scaled (nearest neighbor) into the square cell at (x, y) of side `side`.
 void draw_image(cairo_t* cr, const GrayImage& im, const MinMax& r, ColorMap cmap, double x, double y, double side) {
   cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, im.width, im.height);
   cairo_surface_flush(s);

@@ -1,7 +1,7 @@
 #pragma once
 // A grid of scalar images (feature maps, 2-D spectra) with titles: the paper's Fig. 3
 // (Gabor maps for varying frequency and sigma). Each image is scaled to fit a
-// cell_px x cell_px cell (aspect kept, nearest-neighbour so pixels stay visible).
+// cell_px x cell_px cell (aspect kept, nearest-neighbor so pixels stay visible).
 // Output format by extension: .png, .svg, .pdf; atomic writes.
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
 // Line plots with axes, ticks, grid and legend: PCF curves (exemplar vs output), loss
-// curves (log y), radially averaged power spectra. Series colours follow the Tableau-10
+// curves (log y), radially averaged power spectra. Series colors follow the Tableau-10
 // palette in order; `dashed` series (e.g. the exemplar reference) use a dash pattern.
 // Non-finite values, values beyond +-1e150 (and y <= 0 on a log axis) break the line
 // instead of failing.

@@ -1,7 +1,7 @@
 #pragma once
 // Internal building blocks shared by the point, curve and image plots (not a public API for
 // other modules): a measuring context for layout before the surface exists, "nice" tick
-// positions, number formatting for tick labels, and a wrapping legend of colour swatches.
+// positions, number formatting for tick labels, and a wrapping legend of color swatches.
 #include <cmath>
 #include <functional>
 #include <string>
@@ -51,12 +51,12 @@ inline constexpr double kChartLegendFont = 12;
 inline constexpr double kMaxPlotValue = 1e150;
 inline bool plottable(double v) { return std::isfinite(v) && std::abs(v) <= kMaxPlotValue; }
 
-// Horizontal grid lines at the y `ticks` from `left` to `right`, labelled left of `left`;
+// Horizontal grid lines at the y `ticks` from `left` to `right`, labeled left of `left`;
 // `y_of` maps a value to its pixel row.
 void draw_y_grid(cairo_t* cr, const std::vector<double>& ticks, double left, double right,
                  const std::function<double(double)>& y_of);
 
-// Colours of text and lines used everywhere (dark grey text, light grid).
+// Colors of text and lines used everywhere (dark gray text, light grid).
 inline constexpr Rgb kText{0.15, 0.15, 0.15};
 inline constexpr Rgb kAxis{0.35, 0.35, 0.35};
 inline constexpr Rgb kGrid{0.90, 0.90, 0.90};

@@ -74,10 +74,10 @@ double auto_radius(size_t n, double w_px, double h_px) {
 // beyond, the rim is a straight edge (off the arc by diagonal^2 / (2 r) < 1e-4 px).
 constexpr double kArcPx = 2e6, kPolylinePx = 1e12;
 
-// A disk (light fill, outline) of centre (cx, cy) and radius r px seen through the frame
+// A disk (light fill, outline) of center (cx, cy) and radius r px seen through the frame
 // (fx, fy, fw, fh). Only geometry near the frame reaches cairo: a disk of radius 1e30 px
 // made cairo flatten an arc of ~1e31 segments (it never returned), and cairo's fixed-point
-// coordinates end at +-8e6 px. Non-finite centres are skipped; NaN or negative radii are
+// coordinates end at +-8e6 px. Non-finite centers are skipped; NaN or negative radii are
 // drawn as the smallest disk (0.5 px); a disk containing the frame fills it.
 void draw_disk_clipped(cairo_t* cr, double cx, double cy, double r, double fx, double fy, double fw, double fh,
                        const Rgb& c) {
@@ -103,13 +103,13 @@ void draw_disk_clipped(cairo_t* cr, double cx, double cy, double r, double fx, d
     cairo_set_line_width(cr, lw);
     cairo_stroke(cr);
   } else {
-    // The rim crosses the frame from a centre far away. Only the part of the rim inside the
-    // circle of radius R around the frame's centre m is drawn; the fill is closed by two
-    // points 2D inwards (towards the centre) from the ends of that arc.
+    // The rim crosses the frame from a center far away. Only the part of the rim inside the
+    // circle of radius R around the frame's center m is drawn; the fill is closed by two
+    // points 2D inwards (towards the center) from the ends of that arc.
     const double mx = fx + fw / 2, my = fy + fh / 2;
     const double R = std::hypot(fw, fh) / 2 + 4 * lw, D = 2 * R;
     const double L = std::hypot(cx - mx, cy - my);
-    const double ux = (mx - cx) / L, uy = (my - cy) / L;  // from the centre towards m
+    const double ux = (mx - cx) / L, uy = (my - cy) / L;  // from the center towards m
     std::vector<std::pair<double, double>> rim;  // points relative to m
     if (r <= kPolylinePx) {
       // Angle between u and the rim points on that circle: cos a = 1 - (R^2 - (L - r)^2) / (2 r L).
@@ -118,13 +118,13 @@ void draw_disk_clipped(cairo_t* cr, double cx, double cy, double r, double fx, d
       const int segs = 256;
       for (int k = 0; k <= segs; ++k) {
         const double t = phi - a + 2 * a * k / segs;
-        // centre + r (cos t, sin t) - m, without forming the far-away centre's coordinates:
+        // center + r (cos t, sin t) - m, without forming the far-away center's coordinates:
         // = (r cos t - L ux, r sin t - L uy), with L = r + (L - r) to keep the digits.
         const double e = L - r;
         rim.push_back({r * (std::cos(t) - ux) - e * ux, r * (std::sin(t) - uy) - e * uy});
       }
     } else {
-      const double s = std::clamp(L - r, -D, D);  // centre-to-m distance minus r: m to the rim
+      const double s = std::clamp(L - r, -D, D);  // center-to-m distance minus r: m to the rim
       const double vx = -uy, vy = ux;
       rim.push_back({-ux * s + vx * D, -uy * s + vy * D});
       rim.push_back({-ux * s - vx * D, -uy * s - vy * D});
@@ -188,10 +188,10 @@ void draw_points_in_frame(cairo_t* cr, const PointSet& ps, const PointStyle& st,
     size_a = require_attribute(ps, st.size_attribute, "size");
     for (double v : ps.attribute_column(size_a)) size_range.add(v);
   }
-  if (!st.color_attribute.empty()) color_a = require_attribute(ps, st.color_attribute, "colour");
+  if (!st.color_attribute.empty()) color_a = require_attribute(ps, st.color_attribute, "color");
   if (uses_disks(ps, st)) radius_a = *ps.attribute_index("radius");
 
-  // Draw class by class (class 0 first) so colours layer predictably.
+  // Draw class by class (class 0 first) so colors layer predictably.
   std::vector<size_t> order(ps.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return ps.cls(a) < ps.cls(b); });
@@ -230,7 +230,7 @@ void draw_points_in_frame(cairo_t* cr, const PointSet& ps, const PointStyle& st,
 // Legend entries for the classes present in any of the point sets (labels from the files).
 std::vector<LegendItem> class_legend(const std::vector<const PointSet*>& sets, const PointStyle& st,
                                      bool with_counts) {
-  // class id (the colour) -> its file labels; panels of one figure may label the same id
+  // class id (the color) -> its file labels; panels of one figure may label the same id
   // differently (a merged 1-class set "0" beside a 2-class file's "1000"): show them all.
   std::map<int, std::set<int>> labels_of;
   std::map<int, size_t> count;
@@ -260,7 +260,7 @@ Range color_range_of(const std::vector<const PointSet*>& sets, const PointStyle&
   Range r;
   if (st.color_attribute.empty()) return r;
   for (const PointSet* ps : sets) {
-    const int a = require_attribute(*ps, st.color_attribute, "colour");
+    const int a = require_attribute(*ps, st.color_attribute, "color");
     for (double v : ps->attribute_column(a)) r.add(v);
   }
   return r;
@@ -313,7 +313,7 @@ void plot_panels(const std::string& path, const std::vector<std::pair<std::strin
   const int rows = (n + cols - 1) / cols;
 
   // A blank cell (empty title, empty set) only holds a place in the grid: it is not drawn and
-  // takes no part in the legend or the colour range.
+  // takes no part in the legend or the color range.
   auto blank = [](const std::pair<std::string, PointSet>& p) { return p.first.empty() && p.second.empty(); };
   std::vector<const PointSet*> sets;
   for (const auto& p : panels)

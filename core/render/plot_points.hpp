@@ -24,7 +24,7 @@ namespace ppsynth {
 struct PointStyle {
   double point_radius_px = 0;   // 0 = auto from N (see above)
   std::string size_attribute;   // map this attribute to marker size (min..max -> 0.5..2x)
-  std::string color_attribute;  // colour by this attribute (viridis ramp) instead of class
+  std::string color_attribute;  // color by this attribute (viridis ramp) instead of class
   bool draw_disks = true;       // draw points that have a "radius" attribute as true disks
   bool show_frame = true;       // thin frame around the domain
   std::string title;            // drawn above the plot (plot_points only)

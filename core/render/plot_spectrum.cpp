@@ -16,7 +16,7 @@ namespace {
 using namespace render;
 
 constexpr double kLeft = 64, kTop = 34, kBottom = 46, kBarGap = 14, kBarW = 16, kRight = 64;
-constexpr double kDynamicRange = 1e-6;  // lowest colour: at least this fraction of the maximum
+constexpr double kDynamicRange = 1e-6;  // lowest color: at least this fraction of the maximum
 constexpr Rgb kDcColor{0.6, 0.6, 0.6};
 
 struct LogRange {
@@ -74,10 +74,10 @@ void plot_spectrum(const std::string& path, const Periodogram& p, const std::str
     const double fx0 = kLeft, fy0 = kTop;
     set_color(cr, kText);
     draw_text(cr, title.empty() ? "power spectrum" : title, fx0, kTop - 12, 14, HAlign::Left, VAlign::Baseline, true);
-    // Heat map: one square per frequency (nearest neighbour), centred on its frequency.
+    // Heat map: one square per frequency (nearest neighbor), centered on its frequency.
     const double scale = side / p.side();
     paint_image_nearest(cr, heat_image(p, range), fx0, fy0, side, side, scale);
-    // Axes: frequency f maps to the centre of its square.
+    // Axes: frequency f maps to the center of its square.
     auto X = [&](double f) { return fx0 + (f / p.step + p.F + 0.5) * scale; };
     auto Y = [&](double f) { return fy0 + (p.F - f / p.step + 0.5) * scale; };
     cairo_set_line_width(cr, 0.8);
@@ -99,7 +99,7 @@ void plot_spectrum(const std::string& path, const Periodogram& p, const std::str
     set_color(cr, kAxis);
     cairo_rectangle(cr, fx0, fy0, side, side);
     cairo_stroke(cr);
-    // Colour bar: log10 power, labelled at the decades inside the range.
+    // Color bar: log10 power, labeled at the decades inside the range.
     const double bx = fx0 + side + kBarGap;
     const int steps = 64;
     for (int i = 0; i < steps; ++i) {

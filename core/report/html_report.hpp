@@ -49,7 +49,7 @@ std::string table_csv(const std::vector<std::string>& header,
                       const std::vector<std::vector<std::string>>& rows);
 void write_table_csv(const std::string& path, const std::vector<std::string>& header,
                      const std::vector<std::vector<std::string>>& rows);
-// GitHub-flavoured Markdown table: "| a | b |\n|---|---|\n| 1 | 2 |\n"; '|' in cells is
+// GitHub-flavored Markdown table: "| a | b |\n|---|---|\n| 1 | 2 |\n"; '|' in cells is
 // escaped as "\|", newlines become spaces.
 std::string table_markdown(const std::vector<std::string>& header,
                            const std::vector<std::vector<std::string>>& rows);

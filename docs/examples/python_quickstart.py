@@ -1,4 +1,4 @@
-"""Synthesise 4x the points of the paper's `lines` exemplar and plot both (README, "Python")."""
+"""Synthesize 4x the points of the paper's `lines` exemplar and plot both (README, "Python")."""
 import sys
 import matplotlib
 matplotlib.use("Agg")  # write a file; no display needed

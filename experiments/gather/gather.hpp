@@ -15,8 +15,8 @@
 
 namespace ppsynth {
 
-// A reference output (a published one, say) and the exemplar it was synthesised from: it is
-// evaluated against that exemplar and compared with the groups synthesised from it only.
+// A reference output (a published one, say) and the exemplar it was synthesized from: it is
+// evaluated against that exemplar and compared with the groups synthesized from it only.
 struct ReferenceOutput {
   std::string exemplar;  // the exemplar file's stem ("poisson_n64c2_point"); "" = the only one
   std::string file;      // the point file ("shared:..." allowed)

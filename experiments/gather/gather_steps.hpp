@@ -12,7 +12,7 @@
 namespace ppsynth {
 
 // Every finished run under `dirs` (and each stage's snapshots), with its numbers, grouped and
-// labelled; GatherResult::summaries and ::comparisons are left empty.
+// labeled; GatherResult::summaries and ::comparisons are left empty.
 GatherResult collect_runs(const std::vector<std::string>& dirs, const GatherOptions& options);
 // The summaries and comparisons of r.runs (r.options' references, bound and baselines).
 void summarize_groups(GatherResult& r);

@@ -79,7 +79,7 @@ void check_methods(const std::vector<std::string>& methods, const std::vector<st
     if (!is_builtin_column(m) && !MethodRegistry::instance().contains(m) && !is_pending)
       throw config_error(at(kp, j), "unknown method '" + m + "' (known: " + known_columns(pending) + ")");
   }
-  if (seen.count("init") && !seen.count("ours")) throw config_error(kp, "'init' is the initialisation of 'ours': list 'ours' too");
+  if (seen.count("init") && !seen.count("ours")) throw config_error(kp, "'init' is the initialization of 'ours': list 'ours' too");
 }
 
 // A panel's run: "parent" (relative to the figure config) merged under the panel's keys.

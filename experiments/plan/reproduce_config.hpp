@@ -24,7 +24,7 @@
 //     "tables": [ {"type": "comparison" | "relative_radius" | "runtime", "name", "caption",
 //                  "methods", "paper": {...}} ] }   each also written as CSV and Markdown.
 //
-// Method columns: "ours" = the panel's run as configured; "init" = the initialisation ours
+// Method columns: "ours" = the panel's run as configured; "init" = the initialization ours
 // started from; "reference" = the panel's "reference" file (the published code's output);
 // any other name = that MethodRegistry method on the panel's exemplar (its parameters from
 // "method_params"), so a new registered method is one more name in a config, no code change.

@@ -83,7 +83,7 @@ struct Source {
   bool has_common = false;  // the spec's "set" is applied already (figure columns: method.* to "ours" only)
 };
 
-// The run configs a spec names: each run config, and each synthesised column of each panel of
+// The run configs a spec names: each run config, and each synthesized column of each panel of
 // each figure config.
 std::vector<Source> sources(const nlohmann::json& spec, const std::string& base_dir, const std::vector<std::string>& common) {
   std::vector<Source> out;
@@ -103,7 +103,7 @@ std::vector<Source> sources(const nlohmann::json& spec, const std::string& base_
       if (!only.empty() && std::find(only.begin(), only.end(), p.name) == only.end()) continue;
       if (!p.generator.is_null())
         throw config_error(key, fig.name + " panel " + p.name +
-                                    " synthesises from a generated exemplar; sweep its run config instead");
+                                    " synthesizes from a generated exemplar; sweep its run config instead");
       for (const std::string& column : p.methods) {
         if (column == "init" || column == "reference" || !method_available(column)) continue;
         out.push_back({fig.source, fig.name + "-" + p.name + "-" + column, column_run_config(fig, p, column, common), true});

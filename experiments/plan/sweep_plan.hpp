@@ -8,7 +8,7 @@
 //     "runs": ["configs/runs/lines.json", ...], run configs (paths relative to the spec, or
 //                                               "shared:...", or from the source root)
 //     "figures": ["fig05", ...],                figure configs of configs/paper: each panel's
-//                                               synthesised columns ("ours", registry methods)
+//                                               synthesized columns ("ours", registry methods)
 //     "panels": ["a", "b"],                     only these panels of the figures (default all)
 //     "seeds": [95, "96-99"],                   seeds and inclusive ranges ("95,97-98" too)
 //     "grid": {"method.max_iterations": [40, 100]},  --set axes, every combination (an axis

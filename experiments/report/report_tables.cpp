@@ -198,7 +198,7 @@ ReportTable metrics_table(const ReproduceConfig& c, const ReproduceResult& r) {
   tab.name = "metrics";
   tab.caption = "Every panel and method column against its exemplar: 4-quadrant PCF MSE, Wasserstein and Chamfer "
                 "distances (method.md section 6), relative radius of the output (exemplar's in parentheses), "
-                "overlapping disk pairs (disk patterns), optimisation iterations and wall time of the run.";
+                "overlapping disk pairs (disk patterns), optimization iterations and wall time of the run.";
   tab.header = {"panel", "method", "status", "points", "PCF MSE", "Wasserstein", "Chamfer", "rho output (exemplar)",
                 "overlapping disk pairs output (exemplar)", "iterations", "synthesis s", "run s"};
   for (auto& pr : r.panels) {

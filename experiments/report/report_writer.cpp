@@ -99,7 +99,7 @@ std::string command_line(const ReproduceConfig& c, const ReproduceOptions& o) {
 
 }  // namespace
 
-// A panel's section: its plots, then per synthesised column the run's curves, snapshots,
+// A panel's section: its plots, then per synthesized column the run's curves, snapshots,
 // per-stage table and config. Returns the panel's numbers for report.json.
 json add_panel_section(HtmlReport& rep, const ReproduceConfig& c, const ReproduceResult& r, const PanelResult& p) {
   const std::string& dir = r.dir;
@@ -126,7 +126,7 @@ json add_panel_section(HtmlReport& rep, const ReproduceConfig& c, const Reproduc
       continue;
     }
     if (col.status == "missing") {
-      rep.add_paragraph(col.column + ": no " + (col.column == "reference" ? "published output" : "initialisation") + " for this panel.");
+      rep.add_paragraph(col.column + ": no " + (col.column == "reference" ? "published output" : "initialization") + " for this panel.");
       continue;
     }
     if (col.run_dir.empty()) continue;  // init / reference: in the plots and tables above
@@ -144,7 +144,7 @@ json add_panel_section(HtmlReport& rep, const ReproduceConfig& c, const Reproduc
     if (!row.empty()) rep.add_image_row(row);
     if (s.stages) {
       std::vector<std::pair<std::string, std::string>> stages;
-      if (fs::exists(run + "/exemplar_vs_output.png")) rep.add_image(run + "/exemplar_vs_output.png", "exemplar, initialisation, output");
+      if (fs::exists(run + "/exemplar_vs_output.png")) rep.add_image(run + "/exemplar_vs_output.png", "exemplar, initialization, output");
       for (int k = 1; fs::exists(run + "/snapshots/stage" + (k < 10 ? "0" : "") + std::to_string(k) + ".png"); ++k)
         stages.push_back({run + "/snapshots/stage" + (k < 10 ? "0" : "") + std::to_string(k) + ".png", "after stage " + std::to_string(k)});
       if (!stages.empty()) rep.add_image_row(stages);
@@ -170,7 +170,7 @@ void add_seed_section(HtmlReport& rep, const ReproduceResult& r) {
   std::string seed_text;
   for (auto s : seeds) seed_text += (seed_text.empty() ? "" : ", ") + std::to_string(s);
   rep.add_heading("Over seeds");
-  rep.add_paragraph("Every synthesised column ran with each of the seeds " + seed_text + " (" + std::to_string(r.seeds.runs.size()) +
+  rep.add_paragraph("Every synthesized column ran with each of the seeds " + seed_text + " (" + std::to_string(r.seeds.runs.size()) +
                     " runs, the sweep " + r.sweep_dir + "); one seed is one sample. Median [first quartile, third quartile] "
                     "of the all-classes metrics per column; per class, per class pair and per seed: seeds/index.html and "
                     "seeds/gather.csv.");

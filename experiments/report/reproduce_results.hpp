@@ -19,12 +19,12 @@ struct ReproduceOptions {
   std::string out;                     // default: reports/<name>
   bool force = false;                  // replace a ppsynth report directory already at `out`
   std::vector<std::string> overrides;  // "--set key=value" for every panel's runs
-  // Finished run directories to reuse (find_matching_run): a synthesised column whose resolved
+  // Finished run directories to reuse (find_matching_run): a synthesized column whose resolved
   // config equals one of theirs is copied into the report instead of being run again.
   std::vector<std::string> reuse;
   // Only these panels (by name; all when empty). The report says which were left out.
   std::vector<std::string> panels;
-  // Over seeds: "95-99" or "95,97" runs every synthesised column with each seed as a sweep
+  // Over seeds: "95-99" or "95,97" runs every synthesized column with each seed as a sweep
   // (experiments: plan -> execute -> gather) and adds the statistics over seeds to the report;
   // the panels show the runs of the config's own seed when it is one of them. "" = one seed.
   std::string seeds;
@@ -41,11 +41,11 @@ struct ColumnResult {
   nlohmann::json metrics;     // evaluate(exemplar, output); null unless status ok
   std::string run_dir;        // relative to the report directory; "" for init / reference
   std::string source;         // where the points came from (file or run directory)
-  nlohmann::json config;      // resolved run config (synthesised columns)
+  nlohmann::json config;      // resolved run config (synthesized columns)
   nlohmann::json stats;       // the method's own statistics (iterations, grid, ...)
   double seconds = 0;         // wall time of the run (synthesis + its outputs)
   double synthesis_seconds = 0;
-  int iterations = 0;         // optimisation iterations over all stages
+  int iterations = 0;         // optimization iterations over all stages
 };
 
 struct PanelResult {

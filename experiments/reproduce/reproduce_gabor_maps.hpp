@@ -6,7 +6,7 @@
 //   gabor_exemplar.png    : the pattern itself
 // The maps come from the synthesis's own GaborFeatureMaps module (u = 1, k = min(M, k)),
 // unweighted, all classes together. Image rows are flipped so that y points up as in the
-// point plots. Frequency maps are signed (diverging colour map), spatial maps positive (gray).
+// point plots. Frequency maps are signed (diverging color map), spatial maps positive (gray).
 #include <string>
 #include <utility>
 #include <vector>

@@ -75,7 +75,7 @@ void read_run_json(ColumnResult& c, const std::string& run_dir) {
   }
 }
 
-ColumnResult synthesise(const ReproduceConfig& c, const PanelSpec& p, const std::string& column, const ReproduceOptions& o,
+ColumnResult synthesize(const ReproduceConfig& c, const PanelSpec& p, const std::string& column, const ReproduceOptions& o,
                         const std::string& generated_exemplar, const std::string& report_dir, PanelResult& pr,
                         PointSet& ours_init, std::string& ours_init_source) {
   json run = column_run_config(c, p, column, o.overrides);
@@ -146,7 +146,7 @@ void run_panel(const ReproduceConfig& c, const PanelSpec& p, const ReproduceOpti
     return;
   }
 
-  // Synthesised columns first ("ours" before the others), then init and reference.
+  // Synthesized columns first ("ours" before the others), then init and reference.
   std::map<std::string, ColumnResult> done;
   PointSet ours_init;
   std::string ours_init_source;
@@ -165,7 +165,7 @@ void run_panel(const ReproduceConfig& c, const PanelSpec& p, const ReproduceOpti
       continue;
     }
     spdlog::info("[{}/{}] running '{}'", c.name, p.name, m);
-    done[m] = synthesise(c, p, m, o, generated, report_dir, pr, ours_init, ours_init_source);
+    done[m] = synthesize(c, p, m, o, generated, report_dir, pr, ours_init, ours_init_source);
   }
   if (pr.exemplar.empty()) {  // only init/reference columns: still need the exemplar
     json run = column_run_config(c, p, "ours", o.overrides);
@@ -248,7 +248,7 @@ ReproduceConfig select_panels(const ReproduceConfig& c, const std::vector<std::s
   return r;
 }
 
-// Every synthesised column of the selected panels over the seeds, as a sweep planned and run
+// Every synthesized column of the selected panels over the seeds, as a sweep planned and run
 // here (or only planned). Returns the sweep's directory once every run of it is done.
 std::string run_seed_sweep(const ReproduceConfig& c, const ReproduceOptions& o) {
   if (c.source.empty()) throw InputError("--seeds: the figure config must be a file (a sweep names it)");

@@ -7,11 +7,11 @@
 //   <out>/report.json         every number of the report, machine-readable
 //   <out>/figure.png          overview: exemplar and outputs side by side, as in the paper
 //   <out>/panels/<panel>/     exemplar plots, PCF comparison, map images (Fig. 3), and one
-//                             run directory per synthesised column (run_synthesis.hpp)
+//                             run directory per synthesized column (run_synthesis.hpp)
 //
 // The directory is built as "<out>.partial" and renamed when complete (a failed run keeps the
 // previous report). Panels run in config order, each column of a panel on the same exemplar;
-// "ours" runs first so "init" can show its initialisation. --quick runs every synthesis with
+// "ours" runs first so "init" can show its initialization. --quick runs every synthesis with
 // the methods' quick settings and shrinks generators and map grids (tests, smoke runs).
 #include <string>
 #include <utility>
@@ -28,7 +28,7 @@ namespace ppsynth {
 // Runs every panel and writes the report (with --seeds, after the sweep over seeds finished).
 ReproduceResult run_reproduction(const ReproduceConfig& config, const ReproduceOptions& options);
 
-// Sum of the optimisation iterations a method reported in its stats (Gabor: per stage).
+// Sum of the optimization iterations a method reported in its stats (Gabor: per stage).
 int total_iterations(const nlohmann::json& stats);
 
 }  // namespace ppsynth

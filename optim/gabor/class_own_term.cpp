@@ -18,7 +18,7 @@ void ClassOwnMapTerm::begin_group(const Stage& stage, const PointSet& output) {
   if (!active(stage)) return;
   if (fresh_net_) pipe_->redraw_network(seed_ + 7919ull * stage.group);  // as the joint pipeline's
   const size_t own = exemplar_->subset_class(stage.own_class).size();
-  pipe_->set_neighbours(settings_.k_per_stage ? static_cast<int>(std::min<size_t>(settings_.k, own)) : settings_.k);
+  pipe_->set_neighbors(settings_.k_per_stage ? static_cast<int>(std::min<size_t>(settings_.k, own)) : settings_.k);
   out_weights_ = settings_.attr_cols.empty()
                      ? torch::Tensor()
                      : normalized_attributes(output.subset(stage.moving), settings_.attr_cols).to(pipe_->device());

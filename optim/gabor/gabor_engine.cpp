@@ -25,7 +25,7 @@ double since(std::chrono::steady_clock::time_point t) {
 }
 
 // A canvas's start in blocks of about the paper's output (2 x 2 exemplar units), each
-// initialised on its own with its share of the points: the paper's best-candidate start
+// initialized on its own with its share of the points: the paper's best-candidate start
 // costs O(n^2) (m * i candidates for the i-th point), 4 minutes for 12,000 points, while
 // blocks keep it linear in the area. Only the start: block edges vanish in the synthesis.
 PointSet initialize_in_blocks(const Initializer& init, size_t n, int cls, uint64_t seed, const Domain& canvas,
@@ -49,10 +49,10 @@ PointSet initialize_in_blocks(const Initializer& init, size_t n, int cls, uint64
   return all;
 }
 
-// The output before optimisation: per class, u^2 points per exemplar point (the paper's
+// The output before optimization: per class, u^2 points per exemplar point (the paper's
 // unit square) or the density's count over the canvas (rectangles); attributes tiled from
 // the class's exemplar points (radius divided by u on the unit square); positions from the
-// initialiser or an explicit initialisation.
+// initializer or an explicit initialization.
 PointSet initial_output(const PointSet& ex, const SynthesisContext& ctx, const Initializer& init,
                         std::vector<std::vector<size_t>>& index_of_class) {
   const OutputShape& shape = ctx.output;
@@ -72,11 +72,11 @@ PointSet initial_output(const PointSet& ex, const SynthesisContext& ctx, const I
     if (ctx.initialization) {
       start = ctx.initialization->subset_class(c);
       if (start.size() != n)
-        throw InputError("the initialisation has " + std::to_string(start.size()) + " points of class " +
+        throw InputError("the initialization has " + std::to_string(start.size()) + " points of class " +
                          std::to_string(c) + "; the synthesis needs " + std::to_string(n));
       for (size_t i = 0; i < n; ++i)
         if (!area.contains(start[i]))
-          throw InputError("the initialisation's point " + std::to_string(i + 1) + " of class " + std::to_string(c) +
+          throw InputError("the initialization's point " + std::to_string(i + 1) + " of class " + std::to_string(c) +
                            " lies outside the synthesis domain [" + std::to_string(area.x0) + ", " + std::to_string(area.x1) +
                            "] x [" + std::to_string(area.y0) + ", " + std::to_string(area.y1) + "]");
     } else if (!shape.rectangle) {
@@ -95,13 +95,13 @@ PointSet initial_output(const PointSet& ex, const SynthesisContext& ctx, const I
 }
 
 // "border": "context": the pad around the rectangle holds copies of the exemplar, tiled from
-// the rectangle's corner, appended after the points to synthesise. They never move (final
+// the rectangle's corner, appended after the points to synthesize. They never move (final
 // from the start): the rectangle's points meet a pattern of the exemplar's own statistics
 // at the rectangle's edge instead of an empty border to fill, and the count is exact (a
 // cropped padded canvas loses 5-10 % of Tree1's points to its border). Measured, it helps
 // only exemplars like lines; on poisson, Tree1 and lemon it is worse than the crop
 // (docs/lab/large_outputs.md, "Context borders"), which is why "clean" stays the default.
-// The tiles are centred on the rectangle's corner (shifted by half a tile): a pad narrower
+// The tiles are centered on the rectangle's corner (shifted by half a tile): a pad narrower
 // than half the exemplar then shows the exemplar's inside, not the seam of two copies, where
 // an exemplar whose points keep off its own border (lines) leaves an empty strip that the
 // rectangle's points would move to fill.
@@ -126,7 +126,7 @@ Domain intersection(const Domain& a, const Domain& b) {
 
 // Every layer cut to the part {x0, y0, x1, y1} of the grid (fractions; x along columns, y
 // along rows, as the maps lie): the losses then measure that part only. Gram matrices
-// average over the positions they get and the deep correlation normalises by its overlap,
+// average over the positions they get and the deep correlation normalizes by its overlap,
 // so a part is measured as a smaller grid would be.
 Features measured_part(const Features& f, const std::vector<double>& part) {
   if (part.empty()) return f;
@@ -258,7 +258,7 @@ void GaborEngine::check_restored(const std::string& source) const {
   for (uint8_t f : s.final_points)
     if (f > 1) throw refuse("a final flag that is neither 0 nor 1");
   if (!s.moving.defined()) {
-    if (s.stage_best.defined() || !s.optimizer.empty()) throw refuse("an optimiser state or best iterate without positions");
+    if (s.stage_best.defined() || !s.optimizer.empty()) throw refuse("an optimizer state or best iterate without positions");
     return;
   }
   if (s.stage >= stages) throw refuse("moving positions after the last stage");
@@ -288,7 +288,7 @@ void GaborEngine::check_restored(const std::string& source) const {
     throw refuse("points other than those of " + stage.label);
 }
 
-PointSet GaborEngine::synthesised() const {
+PointSet GaborEngine::synthesized() const {
   std::vector<size_t> idx(pad_begin_);
   std::iota(idx.begin(), idx.end(), size_t{0});
   PointSet p = out_.subset(idx);
@@ -317,7 +317,7 @@ json GaborEngine::phase_seconds() const {
 PointSet GaborEngine::run() {
   run_start_ = Clock::now();
   // The start as `--init` takes it back: a frozen exemplar pad is not part of it.
-  ctx_.start(shape_.exemplar_pad ? synthesised() : out_);
+  ctx_.start(shape_.exemplar_pad ? synthesized() : out_);
   if (ctx_.resume_state) restore(*ctx_.resume_state);
   last_checkpoint_ = Clock::now();
   for (; state_.stage < static_cast<int>(plan_.size());) {
@@ -340,9 +340,9 @@ PointSet GaborEngine::run() {
   stats_["resolved"] = pipe_->resolved();
   if (ctx_.stats) *ctx_.stats = stats_;
   if (!shape_.rectangle) return out_;
-  // "context": the synthesised points, all inside the rectangle (the pad is the exemplar's).
+  // "context": the synthesized points, all inside the rectangle (the pad is the exemplar's).
   // "clean": the canvas's border band (the pad) holds the points that parked on its border.
-  PointSet out = shape_.exemplar_pad ? synthesised() : out_.crop(shape_.domain());
+  PointSet out = shape_.exemplar_pad ? synthesized() : out_.crop(shape_.domain());
   out.set_domain(shape_.domain());
   return out;
 }
@@ -353,7 +353,7 @@ void GaborEngine::enter_group(const Stage& stage) {
   const int K = exemplar_.num_classes(), class_step = group_ % K;  // window plans: K groups per window
   if (p_["fresh_net_per_class"].get<bool>() && group_ > 0)
     pipe_->redraw_network(class_step == 0 ? ctx_.seed : ctx_.seed + 7919ull * class_step);
-  // A group continues one optimisation: its points and positions come from the checkpoint
+  // A group continues one optimization: its points and positions come from the checkpoint
   // when resumed inside it, else from the plan (or the window's choice) and the output.
   const bool fresh = !state_.moving.defined();
   if (fresh && window_.torus) {
@@ -443,7 +443,7 @@ torch::Tensor GaborEngine::map_weights(const std::vector<size_t>& rows, const st
 void GaborEngine::enter_stage(const Stage& stage) {
   const int A = static_cast<int>(s_.attr_cols.size());
   const auto t0 = Clock::now();
-  pipe_->set_neighbours(stage.k);
+  pipe_->set_neighbors(stage.k);
   pipe_->set_grid(stage.sigma_index);
   const PointSet ex_active = exemplar_.subset_classes(stage.target_classes);
   pipe_->set_targets(positions_tensor(ex_active), A > 0 ? normalized_attributes(ex_active, s_.attr_cols) : torch::Tensor(),
@@ -634,7 +634,7 @@ void GaborEngine::finish_stage(const Stage& stage) {
     state_.stages.back()["relaxed"] = state_.iteration > 0;
   }
   ctx_.stage_end(ev, out_);
-  // The next stage starts: a fresh optimiser and convergence window; a new group also
+  // The next stage starts: a fresh optimizer and convergence window; a new group also
   // starts from the wrapped output positions.
   ++state_.stage;
   state_.iteration = 0;

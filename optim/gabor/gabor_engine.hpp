@@ -18,7 +18,7 @@
 // the exemplar, the seed and the stage, and is rebuilt on entering a stage.
 //
 // Two plans: the paper's u x u unit square read as a torus (optim/gabor/stage_plan.hpp), and a
-// rectangle in exemplar units synthesised window by window on a canvas padded for clean
+// rectangle in exemplar units synthesized window by window on a canvas padded for clean
 // borders, then cropped, or with the pad held by the exemplar's own points, frozen
 // (optim/gabor/window_plan.hpp; core/output_shape.hpp).
 #include <chrono>
@@ -54,12 +54,12 @@ class GaborEngine {
   // Every index, count and flag of the restored state against the plan and the output;
   // InputError naming `source` otherwise.
   void check_restored(const std::string& source) const;
-  void enter_group(const Stage& stage);   // networks, neighbours, point terms of a new group
+  void enter_group(const Stage& stage);   // networks, neighbors, point terms of a new group
   void choose_window_points(const Stage& stage);  // a window group's moving and frozen points
   torch::Tensor confined(const torch::Tensor& moving) const;  // wrapped (torus) or kept in the window
   torch::Tensor to_local(const PointSet& points) const;       // output -> the group's grid coordinates
   torch::Tensor map_weights(const std::vector<size_t>& rows, const std::vector<int>& classes) const;
-  void enter_stage(const Stage& stage);   // targets and a fresh (or restored) optimiser
+  void enter_stage(const Stage& stage);   // targets and a fresh (or restored) optimizer
   void run_stage(const Stage& stage);
   torch::Tensor evaluate(const Stage& stage);  // the loss at the current positions, after backward
   // The paper's loss of one raster: the output's grid, or a tile of it on the exemplar's grid.
@@ -70,7 +70,7 @@ class GaborEngine {
   PointSet points_in_play() const;  // the stage's moving and frozen points on its domain
   json phase_seconds() const;       // phases_ by name (run.json's "phase_seconds")
   json runtime_record() const;      // device, precision, determinism, maps path (run.json's "runtime")
-  PointSet synthesised() const;     // out_ without a frozen exemplar pad, on the area where points move
+  PointSet synthesized() const;     // out_ without a frozen exemplar pad, on the area where points move
   ProgressEvent event(const Stage& stage) const;
   int iteration_cap(const Stage& stage) const;  // the border relax's count, else method.max_iterations
   // A border relax stage's relax_mask_: its class's points near the edge (border_band) when

@@ -25,9 +25,9 @@ json gabor_defaults() {
       // res 0 = clamp(round(9/d), min_res, max_res); per_sigma: coarser grids at the coarser
       // sigmas (GaborSettings::sigma_res), the finest stage's grid unchanged
       {"grid", {{"res", 0}, {"min_res", 128}, {"max_res", 256}, {"per_sigma", false}}},
-      {"k", GaborMapsOptions{}.k},                                 // neighbours: min(M, k)
+      {"k", GaborMapsOptions{}.k},                                 // neighbors: min(M, k)
       // M = the exemplar points of the classes in play at a class stage (the published disk
-      // and multi-attribute optimisers); false: M = all exemplar points (its point optimiser).
+      // and multi-attribute optimizers); false: M = all exemplar points (its point optimizer).
       {"k_per_stage", true},
       {"jitter", true},
       {"rasterizer", {{"type", "gabor"}}},
@@ -51,14 +51,14 @@ json gabor_defaults() {
       {"terms", json::object()},
       // Where the losses measure the output of the paper's u x u square: "grid" (its whole
       // grid, as published: points park on its border), "tiles" (u x u tiles of the
-      // exemplar's size cut at a random offset every iteration, each rasterised and measured
+      // exemplar's size cut at a random offset every iteration, each rasterized and measured
       // as the exemplar is) or "rolled" (the whole grid of the torus rolled by a random offset
       // every iteration: the grid's edge never stays where a point could park on it;
       // optim/gabor/random_tiles.hpp).
       {"measure", "grid"},
       // Not in the paper: after each class's sigma stages on the u x u torus, `iterations` more
       // at the finest sigma that move only that class's points within `band` mean
-      // nearest-neighbour spacings (of the output) of the grid's edge, the rest frozen, with the
+      // nearest-neighbor spacings (of the output) of the grid's edge, the rest frozen, with the
       // grid rolled by a random offset every iteration as "rolled" does: the points the
       // published grid parked on its edge go back into the pattern around them (Adam at `lr`,
       // null: the finest sigma's rate). 0 iterations: the paper's border. `separation`: the
@@ -76,7 +76,7 @@ json gabor_defaults() {
       // every class's sigma stages, which then are the paper's bit for bit as on a one-class
       // exemplar: class by class in class order, its band moving, every other point of every
       // class frozen, against the targets of all classes. "class" puts each class's relax
-      // right after its own sigma stages, so the later classes are synthesised beside the
+      // right after its own sigma stages, so the later classes are synthesized beside the
       // relaxed ones: lemon_4c_v2 scored worse so (docs/lab/large_outputs.md). One class: the same.
       // `iterations` null or "auto" (the default: the clean border, the published one
       // kept as an option): 60 on the u x u square measured as one grid without map_terms, 0 where
@@ -299,7 +299,7 @@ void GaborPipeline::build_rasterizers() {
     if (*r) (*r)->to(device_);
 }
 
-void GaborPipeline::set_neighbours(int k) {
+void GaborPipeline::set_neighbors(int k) {
   if (k == s_.k) return;
   s_.k = k;
   build_rasterizers();
@@ -321,7 +321,7 @@ void GaborPipeline::redraw_network(uint64_t seed) {
 
 void GaborPipeline::set_targets(const torch::Tensor& ex_points, const torch::Tensor& ex_weights, double sigma) {
   torch::NoGradGuard ng;
-  // A tile's maps divide as the exemplar's do: by its neighbours summed, min(k, its points).
+  // A tile's maps divide as the exemplar's do: by its neighbors summed, min(k, its points).
   const int divisor = static_cast<int>(std::min<int64_t>(s_.k, ex_points.size(0)));
   if (s_.measure_tiles() && divisor != tile_divisor_) {
     tile_divisor_ = divisor;

@@ -1,6 +1,6 @@
 #pragma once
 // GaborPipeline: the parts of the Gabor method for one evaluation, shared by the
-// synthesiser (optim/gabor/gabor_synthesizer.hpp) and the benchmark (`ppsynth bench`):
+// synthesizer (optim/gabor/gabor_synthesizer.hpp) and the benchmark (`ppsynth bench`):
 //
 //   points --Rasterizer(u)--> maps --FeatureNet--> [F1, F2, F3] --CompositeLoss--> loss
 //
@@ -62,7 +62,7 @@ struct GaborSettings {
   // grid positions per sigma (the Gabor frequencies scale with 1/sigma, so each stage's
   // maps are sampled as finely as the finest stage's).
   std::vector<int> sigma_res, sigma_out_res;
-  int k = 0;                    // neighbours per grid position: min(M, k)
+  int k = 0;                    // neighbors per grid position: min(M, k)
   bool k_per_stage = true;      // k = min(k, exemplar points of the stage's classes)
   std::vector<double> sigmas;   // coarse -> fine
   std::vector<int> attr_cols;   // attribute columns weighting the maps
@@ -88,7 +88,7 @@ class GaborPipeline {
   // The three stages of one output evaluation.
   torch::Tensor output_maps(const torch::Tensor& points, const torch::Tensor& weights, double sigma,
                             const torch::Tensor& jitter) { return out_rast_->forward(points, weights, sigma, jitter); }
-  // A tile of the output the exemplar's size, rasterised as the exemplar is (method.measure = "tiles").
+  // A tile of the output the exemplar's size, rasterized as the exemplar is (method.measure = "tiles").
   torch::Tensor tile_maps(const torch::Tensor& points, const torch::Tensor& weights, double sigma,
                           const torch::Tensor& jitter) { return tile_rast_->forward(points, weights, sigma, jitter); }
   Features features(const torch::Tensor& maps) { return net_->forward(maps); }
@@ -100,8 +100,8 @@ class GaborPipeline {
   torch::Tensor draw_jitter(std::mt19937_64& rng, bool tile = false) const;
   // A new random network (the published code draws one per class for attribute scenes).
   void redraw_network(uint64_t seed);
-  // Neighbours per grid position for the next stage (rebuilds the rasterizers if it changes).
-  void set_neighbours(int k);
+  // Neighbors per grid position for the next stage (rebuilds the rasterizers if it changes).
+  void set_neighbors(int k);
   // The grid of sigma stage `sigma_index` (GaborSettings::sigma_res; rebuilds if it changes).
   void set_grid(int sigma_index);
   int output_grid() const { return out_res_; }
@@ -116,7 +116,7 @@ class GaborPipeline {
   uint64_t seed_;
   torch::Device device_;
   // tile_rast_ (method.measure "tiles"): the exemplar's raster, dividing by the exemplar's
-  // neighbour count (tile_divisor_) even where a tile holds fewer points.
+  // neighbor count (tile_divisor_) even where a tile holds fewer points.
   std::unique_ptr<Rasterizer> ex_rast_, out_rast_, tile_rast_;
   int tile_divisor_ = 0;
   std::unique_ptr<FeatureNet> net_;

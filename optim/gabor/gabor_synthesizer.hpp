@@ -1,7 +1,7 @@
 #pragma once
 // GaborSynthesizer: the paper's method (method "gabor"), one driver for every input kind:
 // single-class, multi-class, attributes and disks are data (which points move, which are
-// frozen, which weights enter the maps), not separate optimisers. It runs the paper's plan
+// frozen, which weights enter the maps), not separate optimizers. It runs the paper's plan
 // (optim/gabor/stage_plan.hpp: per class, per sigma) on the GaborEngine (optim/gabor/gabor_engine.hpp),
 // which keeps its state explicit and so can checkpoint and resume. Output: u^2 copies of each
 // class's exemplar count, attributes tiled (radius divided by u), every point with its class.

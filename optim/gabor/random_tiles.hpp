@@ -7,7 +7,7 @@
 // measures the u x u output's whole grid, which has a smaller share of border, and the
 // output imitates the missing fall-off by parking points on its border (docs/lab/method_measurements.md
 // "Border parking"). Here the output (a torus) is cut at a random offset into u x u tiles
-// the exemplar's size; each tile's points alone are rasterised on the exemplar's grid and
+// the exemplar's size; each tile's points alone are rasterized on the exemplar's grid and
 // measured against the exemplar's targets. Every tile then has the exemplar's geometry, so
 // the targets ask it for nothing the pattern cannot give; and as the cut moves with every
 // iteration, no place on the torus is a tile edge for long: nothing has a border to park on.

@@ -1,7 +1,7 @@
 #pragma once
 // The scale schedule (paper §4.3, method.md §5): sigma_1 = d / c1 (coarse) down to
-// sigma_2 = d / c2 (fine), `count` values evenly spaced, optimised in that order.
-// d = mean nearest-neighbour distance of the exemplar. Paper: c1 = 0.8 +- 0.2, c2 = 2.8 +- 0.2.
+// sigma_2 = d / c2 (fine), `count` values evenly spaced, optimized in that order.
+// d = mean nearest-neighbor distance of the exemplar. Paper: c1 = 0.8 +- 0.2, c2 = 2.8 +- 0.2.
 #include <vector>
 
 namespace ppsynth {

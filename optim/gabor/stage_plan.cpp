@@ -18,7 +18,7 @@ SynthesisPlan class_sigma_plan(const PointSet& exemplar, const GaborSettings& s,
   SynthesisPlan plan;
   SynthesisPlan relax_after_all;  // method.border_relax.after "all": appended after every class
   const int K = exemplar.num_classes();
-  // The neighbour count of a stage whose targets hold `points` exemplar points.
+  // The neighbor count of a stage whose targets hold `points` exemplar points.
   auto k_for = [&](size_t points) { return s.k_per_stage ? static_cast<int>(std::min<size_t>(s.k, points)) : s.k; };
   for (int st = 0; st < K; ++st) {
     const int cls = s.class_order[st];

@@ -1,6 +1,6 @@
 #pragma once
 // Everything a synthesis needs to continue exactly where it stopped: a checkpoint. Small on
-// purpose (positions, the optimiser's moments, the generator's state, the loss history; no
+// purpose (positions, the optimizer's moments, the generator's state, the loss history; no
 // feature maps or targets, which are recomputed from the exemplar and the seed). Restoring it
 // and running on gives the same bits as never stopping (same config, seed and thread count).
 #include <torch/torch.h>
@@ -28,12 +28,12 @@ struct SynthesisState {
   std::vector<Vec2> positions;       // the whole output; moving points as of their stage's start
   int stage = 0;                     // the stage in progress (or next to start)
   int iteration = 0;                 // iterations done in `stage`
-  torch::Tensor moving;              // the group's optimised positions, unwrapped (undefined: none yet)
+  torch::Tensor moving;              // the group's optimized positions, unwrapped (undefined: none yet)
   // The group's points (output indices): chosen as the group starts (windows choose by
   // position, so a resumed run must not choose again), and the points no window moves again.
   std::vector<int64_t> group_moving, group_frozen;
   std::vector<uint8_t> final_points;  // windows only (empty otherwise)
-  OptimizerState optimizer;          // the optimiser's state (empty at a stage start)
+  OptimizerState optimizer;          // the optimizer's state (empty at a stage start)
   std::string rng;                   // the jitter generator (std::mt19937_64, text form)
   std::vector<double> stage_losses;  // losses of `stage` so far (the convergence window)
   std::vector<double> stage_watch;   // the stopping rule's record of `stage` (optim/steps/stopping_rule.hpp)

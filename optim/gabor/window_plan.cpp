@@ -33,7 +33,7 @@ AxisWindows along_axis(double c0, double c1, double side, double margin) {
 
 bool windows_fit(const Domain& canvas, double max_side, double margin) {
   const double side = std::min({max_side, canvas.width(), canvas.height()});
-  // One window over the whole canvas has no neighbour to protect: any margin will do.
+  // One window over the whole canvas has no neighbor to protect: any margin will do.
   const bool one_window = canvas.width() <= side * (1 + 1e-12) && canvas.height() <= side * (1 + 1e-12);
   return one_window || side > 2 * margin * 1.25;
 }

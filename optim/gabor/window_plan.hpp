@@ -6,7 +6,7 @@
 //
 //     +---------+---------+        window grid G: a square of `side` exemplar units
 //     |   ...   |  next   |        interior I: its share of the canvas (the windows'
-//     +----+----+----+----+          interiors tile it); neighbours overlap by >= 2 margins
+//     +----+----+----+----+          interiors tile it); neighbors overlap by >= 2 margins
 //     |done| I  ->  overhang|      movable M = [I.x0, G.x1] x [I.y0, G.y1]: the window's part
 //     +----+---------------+         and its overhang over windows still to come
 //     |      done (final)  |       frozen: every other point of the stage's classes in G and

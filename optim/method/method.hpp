@@ -47,7 +47,7 @@ struct ProgressEvent {
 class SynthesisObserver {
  public:
   virtual ~SynthesisObserver() = default;
-  // The output before optimisation (the initialisation), once.
+  // The output before optimization (the initialization), once.
   virtual void on_start(const PointSet& initial) {}
   virtual void on_stage_begin(const ProgressEvent&) {}
   virtual void on_iteration(const ProgressEvent&) {}
@@ -56,7 +56,7 @@ class SynthesisObserver {
   // A resumed run: the iterations run before the checkpoint, in order (their on_iteration
   // events, replayed once), then the run continues with on_iteration as usual.
   virtual void on_resume(const std::vector<ProgressEvent>& earlier) {}
-  // During long work between iterations (initialisation, a window's set-up), several times a
+  // During long work between iterations (initialization, a window's set-up), several times a
   // second: a front end's chance to see a stop of its own (Python's Ctrl-C) and set the stop
   // flag it handed the run.
   virtual void on_poll() {}
@@ -76,7 +76,7 @@ struct SynthesisContext {
   // a rectangle in exemplar units (every method returns a PointSet on output.domain()).
   OutputShape output;
   std::vector<SynthesisObserver*> observers;
-  // Optional explicit initialisation (else the method's own initialiser runs).
+  // Optional explicit initialization (else the method's own initializer runs).
   const PointSet* initialization = nullptr;
   bool quick = false;  // tiny grids and few iterations (tests, --quick)
   // Where a method built on LibTorch keeps its tensors: "cpu" or "cuda:N", the config's
@@ -132,7 +132,7 @@ class SynthesisMethod {
   virtual ~SynthesisMethod() = default;
   // Returns the output pattern on ctx.output.domain(); every point keeps its class and attributes.
   virtual PointSet synthesize(const PointSet& exemplar, const SynthesisContext& ctx) = 0;
-  // True when the method honours the checkpoint fields of SynthesisContext. The others run
+  // True when the method honors the checkpoint fields of SynthesisContext. The others run
   // to the end in one go and cannot be resumed (the run layer says so).
   virtual bool can_resume() const { return false; }
   // Part of a checkpoint's key: bump it when a change of the method makes a run continued from

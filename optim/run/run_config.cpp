@@ -24,7 +24,7 @@ json run_defaults() {
       {"format", "auto"},        // auto | gabor | point-synthesis | plain | json
       {"scaling", "per-axis"},   // Point-Synthesis files: per-axis (published) | uniform
       {"merge_classes", false},  // treat every point as one class (positions-only synthesis)
-      {"init_file", nullptr},    // explicit initialisation: one file (with a class column) or a list, one file per class
+      {"init_file", nullptr},    // explicit initialization: one file (with a class column) or a list, one file per class
       {"preset", nullptr},       // a named preset under the config's own keys (optim/run/presets.hpp): "fast"
       {"seed", 95},
       {"upscale", 2},            // u: S = u^2 times the exemplar's points (unless "output" gives a size)

@@ -30,7 +30,7 @@ json read_resolved_run_config(const std::string& path);
 // Loads the exemplar a resolved config names ("shared:" paths allowed); a config used only
 // in memory (synthesize() with an exemplar at hand) needs none.
 PointSet load_exemplar(const json& resolved);
-// The explicit initialisation of "init_file", if any.
+// The explicit initialization of "init_file", if any.
 std::optional<PointSet> load_initialization(const json& resolved);
 
 }  // namespace ppsynth

@@ -77,7 +77,7 @@ void LossRecorder::plot(const std::string& png, const std::string& title) const 
   cp.ylabel = "loss";
   cp.log_y = true;
   std::map<int, Series> by_stage;
-  // Large outputs repeat the same stages in every window: one colour and one legend entry
+  // Large outputs repeat the same stages in every window: one color and one legend entry
   // per stage kind ("sigma 2/4"), not per window (a 10,000-point canvas has 100 stages).
   const std::string kWindow = "window ";
   std::map<std::string, int> kinds;

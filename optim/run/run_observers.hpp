@@ -3,7 +3,7 @@
 //   ProgressLog     : a line per stage and every few iterations: loss, it/s, ETA; for large
 //                     outputs a line per window: windows done / total, canvas ETA.
 //   LossRecorder    : every iteration's loss, per stage, for the CSV and the curve plot.
-//   SnapshotWriter  : the initialisation and the output after every stage (paper Fig. 4), or
+//   SnapshotWriter  : the initialization and the output after every stage (paper Fig. 4), or
 //                     the window's grid after every window of a large output.
 #include <chrono>
 #include <string>
@@ -52,7 +52,7 @@ class SnapshotWriter : public SynthesisObserver {
   explicit SnapshotWriter(std::string dir) : dir_(std::move(dir)) {}
   void on_start(const PointSet& initial) override { initial_ = initial; }
   const PointSet& initial() const { return initial_; }
-  void set_enabled(bool on) { enabled_ = on; }  // off: record the initialisation only
+  void set_enabled(bool on) { enabled_ = on; }  // off: record the initialization only
   void on_stage_end(const ProgressEvent& e, const PointSet& current) override;
   const std::vector<std::string>& pngs() const { return pngs_; }
   const std::vector<std::string>& titles() const { return titles_; }

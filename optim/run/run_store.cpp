@@ -109,14 +109,14 @@ void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const
   if (ex_format == Format::GaborInt) write_points(dir + "/output.gabor.txt", o.output, Format::GaborInt);
   std::vector<std::pair<std::string, PointSet>> panels = {{"exemplar (" + std::to_string(o.exemplar.size()) + ")", o.exemplar}};
   if (!o.initialization.empty()) {
-    panels.push_back({"initialisation", o.initialization});
+    panels.push_back({"initialization", o.initialization});
     write_points(dir + "/init.txt", o.initialization, Format::Plain);
   }
   panels.push_back({"output (" + std::to_string(o.output.size()) + ")", o.output});
   plot_panels(dir + "/exemplar_vs_output.png", panels, PointStyle{}, 420);
   write_text_atomic(dir + "/loss.csv", losses.csv());
   losses.plot(dir + "/loss.png", name + ": loss per iteration");
-  // The exemplar as synthesised (after scaling and class merging): the run stays
+  // The exemplar as synthesized (after scaling and class merging): the run stays
   // self-contained when a generated exemplar's file is gone, and --reuse compares contents.
   write_points(dir + "/exemplar.txt", o.exemplar, Format::Plain);
   if (!o.metrics.is_null()) {

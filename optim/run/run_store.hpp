@@ -1,6 +1,6 @@
 #pragma once
 // The run store: a run as a directory of files, written, read back and found again.
-//   output.txt (project format) + output.<exemplar format>.txt, exemplar.txt (as synthesised),
+//   output.txt (project format) + output.<exemplar format>.txt, exemplar.txt (as synthesized),
 //   init.txt, exemplar_vs_output.png, snapshots/stageNN.{txt,png} (paper Fig. 4), loss.csv +
 //   loss.png, config.json (resolved), run.json (seed, revision, threads, processor, wall times,
 //   the method's stats), metrics.json and pcf.png (`ppsynth eval` of the output vs the exemplar).
@@ -37,7 +37,7 @@ void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const
 // (core/run_json.hpp).
 RunOutcome load_run(const std::string& dir);
 
-// The exemplar a run synthesised from: its exemplar.txt copy (written when it finishes), else
+// The exemplar a run synthesized from: its exemplar.txt copy (written when it finishes), else
 // its config's file (an unfinished run; runs made before the copy).
 PointSet run_exemplar(const std::string& dir, const nlohmann::json& config);
 

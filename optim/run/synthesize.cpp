@@ -61,7 +61,7 @@ void check_synthesis_size(const nlohmann::json& spec, const PointSet& exemplar) 
   }
   // What every point costs while the synthesis holds it: its position, class and attributes in
   // the output and the canvas, the tensors of the positions, the copies a checkpoint
-  // serialises, and the initialisation's search grid.
+  // serializes, and the initialization's search grid.
   constexpr double kBytesPerPoint = 256;
   double points = 0;
   for (size_t n : shape.class_counts(exemplar, shape.canvas())) points += static_cast<double>(n);

@@ -29,7 +29,7 @@ struct StageResult {
 };
 
 struct SynthesisResult {
-  PointSet initialization;           // the output before optimisation
+  PointSet initialization;           // the output before optimization
   PointSet output;                   // in the unit square, with classes and attributes
   std::vector<StageResult> stages;   // per stage: iterations, final loss, wall time
   nlohmann::json stats;              // all the method measured (grid, sigmas, phase times, ...)
@@ -40,7 +40,7 @@ struct SynthesisResult {
 struct SynthesisOptions {
   bool quick = false;                          // tiny grids, few iterations (tests, --quick)
   std::vector<SynthesisObserver*> observers;   // told of every stage and iteration
-  const PointSet* initialization = nullptr;    // else the spec's init_file, else the method's initialiser
+  const PointSet* initialization = nullptr;    // else the spec's init_file, else the method's initializer
   // Checkpoints, for methods that can resume (can_resume): the method hands its state to
   // save_checkpoint at every stage boundary and every spec "checkpoint_seconds"; with
   // resume_state (bytes of an earlier save of the same spec, seed and exemplar) it continues
@@ -58,7 +58,7 @@ struct SynthesisOptions {
 // same output, bit for bit, resumed or not. Errors are InputError naming the key.
 SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec, const SynthesisOptions& options = {});
 
-// True when the spec's method checkpoints (and so honours SynthesisOptions::stop).
+// True when the spec's method checkpoints (and so honors SynthesisOptions::stop).
 bool can_resume(const nlohmann::json& spec);
 
 // Refuses, before any work, an output that cannot be made: one that would hold no point (a

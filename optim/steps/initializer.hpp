@@ -1,8 +1,8 @@
 #pragma once
-// Initialiser: where the output points of one class start. "best_candidate" (toroidal
+// Initializer: where the output points of one class start. "best_candidate" (toroidal
 // best-candidate Poisson disk in the domain inset by `margin`: the paper's; margin 0.01), "uniform"
-// (supplement: random initialisation works too), "file" (a given point file, e.g. the
-// published code's own initialisation in shared/data/reference, to reproduce its runs).
+// (supplement: random initialization works too), "file" (a given point file, e.g. the
+// published code's own initialization in shared/data/reference, to reproduce its runs).
 #include <cstdint>
 #include <functional>
 #include <string>

@@ -1,4 +1,4 @@
-// Initialisers of the output positions (optim/steps/initializer.hpp).
+// Initializers of the output positions (optim/steps/initializer.hpp).
 #include "core/config/defaults_catalog.hpp"
 #include "core/generators/best_candidate.hpp"
 #include "core/generators/generator.hpp"
@@ -70,7 +70,7 @@ PPSYNTH_REGISTER(ppsynth::InitializerRegistry, "best_candidate", (ppsynth::json{
                  })
 PPSYNTH_REGISTER(ppsynth::InitializerRegistry, "uniform", (ppsynth::json{{"margin", 0.01}}),
                  (ppsynth::json{{"margin", "[0, 0.5)"}}),
-                 "uniform random positions (the supplement: random initialisation works too)",
+                 "uniform random positions (the supplement: random initialization works too)",
                  [](const ppsynth::json& p) -> std::unique_ptr<ppsynth::Initializer> {
                    return std::make_unique<ppsynth::UniformInit>(ppsynth::get_number(p, "margin", "method.init"));
                  })

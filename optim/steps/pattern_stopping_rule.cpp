@@ -57,7 +57,7 @@ class PatternStoppingRule : public StoppingRule {
       // the evaluation measures it. On the paper's torus, points parked on opposite borders
       // are close pairs of the torus but not of the square: chosen on the torus, Tree1's
       // stages 3 and 4 never beat their start (docs/lab/fast_preset.md).
-      // The record then holds pairs (as optimised, as seen); the stop watches the first.
+      // The record then holds pairs (as optimized, as seen); the stop watches the first.
       stride = 2;
       const double seen = best_by_crops_ ? crops_mse(points, v.zoom, now)
                           : v.periodic    ? curve_mse(pcf(points, PcfOptions{}), target_)

@@ -21,7 +21,7 @@ double learning_rate_for(const json& p, int s, const std::string& kp) {
 
 namespace {
 
-// The key under which libtorch's optimisers keep a parameter's state.
+// The key under which libtorch's optimizers keep a parameter's state.
 std::string state_key(const torch::Tensor& p) { return c10::guts::to_string(p.unsafeGetTensorImpl()); }
 
 // Checks of a restored state (optim/gabor/synthesis_state.hpp reads the tensors; these are their values).
@@ -31,7 +31,7 @@ class StateReader {
   StateReader(const OptimizerState& s, std::string source, torch::Device device)
       : s_(s), source_(std::move(source)), device_(device) {}
   [[noreturn]] void refuse(const std::string& name, const std::string& what) const {
-    throw checkpoint_error(source_, "optimiser state '" + name + "': " + what);
+    throw checkpoint_error(source_, "optimizer state '" + name + "': " + what);
   }
   const torch::Tensor& get(const std::string& name) const {
     const auto it = s_.find(name);
@@ -61,7 +61,7 @@ class StateReader {
   }
   void only(std::initializer_list<const char*> names) const {
     for (const auto& [k, v] : s_)
-      if (std::none_of(names.begin(), names.end(), [&](const char* n) { return k == n; })) refuse(k, "not a state of this optimiser");
+      if (std::none_of(names.begin(), names.end(), [&](const char* n) { return k == n; })) refuse(k, "not a state of this optimizer");
   }
 
  private:

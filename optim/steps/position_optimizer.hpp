@@ -1,7 +1,7 @@
 #pragma once
 // PositionOptimizer: one step on the moving output positions given a closure that
 // recomputes the loss and its gradient. "adam" (the paper's; fresh state per stage, a
-// learning rate per sigma) and "lbfgs" (the paper: "similar results"). A new optimiser is a
+// learning rate per sigma) and "lbfgs" (the paper: "similar results"). A new optimizer is a
 // class plus a PPSYNTH_REGISTER line.
 #include <torch/torch.h>
 
@@ -13,7 +13,7 @@
 
 namespace ppsynth {
 
-// An optimiser's state as named tensors (moments, step counts, history), as a checkpoint
+// An optimizer's state as named tensors (moments, step counts, history), as a checkpoint
 // holds it (optim/gabor/synthesis_state.hpp); empty before the first step.
 using OptimizerState = std::map<std::string, torch::Tensor>;
 
@@ -22,10 +22,10 @@ class PositionOptimizer {
   virtual ~PositionOptimizer() = default;
   // closure: zero grads are handled here; it returns the loss after backward().
   virtual double step(const std::function<torch::Tensor()>& closure) = 0;
-  // The optimiser's state, and back: checkpoints restore it so a resumed stage takes the very
+  // The optimizer's state, and back: checkpoints restore it so a resumed stage takes the very
   // steps it would have taken. load_state checks every tensor against the parameters (shape,
   // type, finite, in range) and throws InputError naming `source` for a state that is not
-  // this optimiser's.
+  // this optimizer's.
   virtual OptimizerState save_state() const = 0;
   virtual void load_state(const OptimizerState& state, const std::string& source) = 0;
 };

@@ -3,9 +3,9 @@
 // pair-correlation loss for the moving class of a class stage, after the PCF-matching
 // synthesis of Oztireli & Gross 2012 and the thesis's Chapter 4 (optim/baselines/pcf2017).
 //
-// Why: in the paper's multi-class scheme a later class is optimised inside the JOINT maps of
+// Why: in the paper's multi-class scheme a later class is optimized inside the JOINT maps of
 // classes 0..k (no class channel), so nothing asks it for its own spacing; with a class of 3
-// or 6 exemplar points (lemon_4c_v2) the per-class PCF stays near the initialisation's
+// or 6 exemplar points (lemon_4c_v2) the per-class PCF stays near the initialization's
 // (docs/explanation/method.md "Beyond the paper"). This term asks each class for the exemplar's own PCF
 // and, with `cross`, for the exemplar's cross-PCF to every frozen (earlier) class:
 //

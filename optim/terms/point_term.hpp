@@ -1,7 +1,7 @@
 #pragma once
 // PointTerm: a loss on the output positions themselves, beside the paper's loss on the
 // feature maps. None is in the paper and none runs unless configured, so every published run
-// stays the paper's method. The synthesiser adds, at every evaluation of a class stage,
+// stays the paper's method. The synthesizer adds, at every evaluation of a class stage,
 //
 //   weight x (the paper's loss at the stage's first evaluation) x term(moving, frozen)
 //

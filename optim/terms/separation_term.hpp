@@ -12,10 +12,10 @@
 //
 // d_ij on the unit torus (the positions are wrapped toroidally); dmin_ex(a, b) is the closest
 // pair of exemplar points of classes a and b (no term where a class pair has no pair).
-// The synthesiser weights it by method.terms.separation.weight times the stage's first loss,
+// The synthesizer weights it by method.terms.separation.weight times the stage's first loss,
 // so one weight serves every scene and sigma. Pairs are dense (n x n and n x m per
 // evaluation): cheap beside the filter network at the paper's sizes (up to ~1,100 output
-// points); a neighbour search would be the step for much larger outputs.
+// points); a neighbor search would be the step for much larger outputs.
 #include <torch/torch.h>
 
 #include <vector>

@@ -130,7 +130,7 @@ class Evaluation(Record):
         The cross-PCF of every class pair ``ci``, ``cj``: ``pcf_mse``, ``pcf``.
     exemplar, output : Record
         Each pattern's ``count``, ``class_counts``, closest pair ``d_min``, mean
-        nearest-neighbour distance ``mean_nn``, ``relative_radius`` and
+        nearest-neighbor distance ``mean_nn``, ``relative_radius`` and
         ``border_fraction`` (share of points within 1 % of the shorter side of the border)
         beside ``border_fraction_uniform`` (uniform points' share).
     second_order : Record

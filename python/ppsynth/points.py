@@ -7,7 +7,7 @@ the classes (``class_labels``, e.g. 1000, 2000 in the Gabor paper's files).
 
 :func:`read` and :func:`write` know every format of the command (the Gabor paper's integers,
 Point-Synthesis pixels, this project's plain text and JSON) plus NumPy's ``.npy`` and ``.npz``
-(the published Gabor code keeps its initialisations as ``.npz`` with the positions under
+(the published Gabor code keeps its initializations as ``.npz`` with the positions under
 ``"x"``). Writes are atomic (a temporary file renamed) and never replace an existing file
 unless ``overwrite=True``.
 """

@@ -106,9 +106,9 @@ class Result:
     Attributes
     ----------
     output : PointSet
-        The synthesised pattern, in the unit square, with classes and attributes.
+        The synthesized pattern, in the unit square, with classes and attributes.
     initialization : PointSet
-        The output before optimisation.
+        The output before optimization.
     exemplar : PointSet
         The exemplar the synthesis read.
     stages : list of Stage
@@ -222,7 +222,7 @@ def _evaluation_or_none(metrics: Optional[dict]) -> Optional[Evaluation]:
 def synthesize(exemplar=None, config: ConfigLike = None, seed: Optional[int] = None, overrides: Overrides = None,
                progress: Optional[Callable[[Progress], object]] = None, checkpoint_dir=None, quick: bool = False,
                initialization=None, threads: int = 0) -> Result:
-    """Synthesises a larger pattern from an exemplar, in memory.
+    """Synthesizes a larger pattern from an exemplar, in memory.
 
     The same config, seed and thread count give the same output as ``ppsynth synthesize``.
 

@@ -1,7 +1,7 @@
 """Loss terms written in Python, registered by name beside the compiled ones.
 
 Two kinds, each a function of ``torch.Tensor``\\ s that returns a scalar tensor; its gradient
-(``torch.autograd``) flows into the optimiser with the rest of the loss:
+(``torch.autograd``) flows into the optimizer with the rest of the loss:
 
 - a **loss** on the feature maps of the random-filter network (the paper's losses are of this
   kind): ``fn(output, target, params)``, where ``output`` and ``target`` are lists with one
@@ -11,7 +11,7 @@ Two kinds, each a function of ``torch.Tensor``\\ s that returns a scalar tensor;
 - a **point term** on the moving positions of a class stage: ``fn(moving, frozen, params,
   stage)``, ``moving`` (n, 2) the wrapped positions that move, ``frozen`` (m, 2) the others,
   ``stage`` a :class:`ClassStage` (exemplar, output, indices, u). Switched on by
-  ``"method": {"terms": {NAME: {"weight": w}}}``; the synthesiser adds weight x (the paper's
+  ``"method": {"terms": {NAME: {"weight": w}}}``; the synthesizer adds weight x (the paper's
   loss at the stage's first evaluation) x term.
 
 ``params`` is the term's config entry merged with its ``defaults``. Registering a name again
@@ -96,7 +96,7 @@ def _loss_glue(name: str, fn: Callable):
 def _point_term_glue(name: str, fn: Callable):
     torch = _torch()
     from_dlpack, to_dlpack = torch.utils.dlpack.from_dlpack, torch.utils.dlpack.to_dlpack
-    last = {"native": None, "stage": None}  # the stage of the class being synthesised
+    last = {"native": None, "stage": None}  # the stage of the class being synthesized
 
     def glue(params, moving_caps, frozen_cap, stage):
         if last["native"] is not stage:

@@ -1,5 +1,5 @@
 // Point sets between NumPy and the library: conversion, the four formats of the command
-// (core/formats/point_io.hpp), validation, generators, the defaults catalogue.
+// (core/formats/point_io.hpp), validation, generators, the defaults catalog.
 // .npy / .npz are NumPy's own and handled by the package's Python side (ppsynth/points.py).
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>

@@ -82,7 +82,7 @@ class PythonWatch : public SynthesisObserver {
     if (!resumable_) throw py::error_already_set(*error_);
   }
 
-  // Between iterations (the initialisation, a window's set-up): Ctrl-C sets the stop flag,
+  // Between iterations (the initialization, a window's set-up): Ctrl-C sets the stop flag,
   // which the method sees at once (SynthesisContext::poll).
   void on_poll() override {
     py::gil_scoped_acquire gil;

@@ -6,7 +6,7 @@
 // build as libtorch-dev, so a capsule of a C++ tensor is a torch.Tensor on the same memory.
 // The Python side (ppsynth/terms.py) computes the term's value and, with torch.autograd, its
 // gradient with respect to the inputs; GivenGradient hands both to the C++ graph, so the
-// gradient flows into the optimiser with the rest of the loss. No libtorch_python is linked:
+// gradient flows into the optimizer with the rest of the loss. No libtorch_python is linked:
 // the package imports and works without torch, and only a Python term needs it.
 //
 // The callables live in a registry of this module that is never destroyed (a Python object

@@ -1,5 +1,5 @@
 """scripts/edge_against_lines.py (a proposed border criterion): on a torus output the
-edge is one line like any other, so a pattern with no border artefact puts the edge among its
+edge is one line like any other, so a pattern with no border artifact puts the edge among its
 random lines, a pile on the edge puts it at the top, and a thin seam at the bottom."""
 import os
 import subprocess

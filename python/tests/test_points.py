@@ -51,7 +51,7 @@ def test_python_write_equals_the_command_conversion(tmp_path, fmt, ext):
     assert (tmp_path / f"py{ext}").read_bytes() == (tmp_path / f"cmd{ext}").read_bytes()
 
 
-def test_published_npz_initialisation_reads_as_positions(tmp_path):
+def test_published_npz_initialization_reads_as_positions(tmp_path):
     # The published code writes np.savez(path, x=p) with p (N, 2) in the unit square.
     p = np.random.default_rng(3).random((50, 2))
     np.savez(tmp_path / "init_lines_c0_x2.npz", x=p)

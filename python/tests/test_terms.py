@@ -1,5 +1,5 @@
 """Terms written in Python: a point term and a feature loss join the composite loss like
-compiled parts, their gradients reach the optimiser (checked against finite differences and
+compiled parts, their gradients reach the optimizer (checked against finite differences and
 against the compiled Gram loss), and they move the result the way they should."""
 import os
 import sys
@@ -87,7 +87,7 @@ def torus_gap(a, b):
 
 def test_a_python_loss_joins_the_synthesis_like_the_compiled_one():
     # The paper's losses with the Gram part written in Python. Its value enters the loss: the
-    # first iterations' losses equal the compiled run's. Its gradient reaches the optimiser:
+    # first iterations' losses equal the compiled run's. Its gradient reaches the optimizer:
     # the output stays near the compiled run's (Adam's first steps amplify float rounding, so
     # not bit-equal) and far from a run without a Gram part, which a value without a gradient
     # would have reproduced exactly.

@@ -1,7 +1,7 @@
 """What the package writes and reads is what it can prove: checkpoint_dir writes only files of
 its own in a folder of its own, `write` refuses what `read` refuses, bad files and bad terms
 raise the documented errors naming the file or the term, seeds are integers in [0, 2^63), and
-Ctrl-C stops even a long initialisation within a second."""
+Ctrl-C stops even a long initialization within a second."""
 import os
 import signal
 import threading
@@ -102,8 +102,8 @@ def test_seeds_are_integers_in_0_to_2_63():
     assert ppsynth.resolve_config(seed=np.int64(7))["seed"] == 7
 
 
-def test_ctrl_c_stops_a_long_initialisation_within_a_second(tmp_path):
-    # A large output: seconds of initialisation and window set-up before the first iteration.
+def test_ctrl_c_stops_a_long_initialization_within_a_second(tmp_path):
+    # A large output: seconds of initialization and window set-up before the first iteration.
     # The defect: Python's Ctrl-C (both of them) went unseen until an iteration ended.
     threading.Timer(1.0, os.kill, args=(os.getpid(), signal.SIGINT)).start()
     t0 = time.monotonic()

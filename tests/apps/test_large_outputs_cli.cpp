@@ -48,7 +48,7 @@ TEST_CASE("synthesize --size and --points make outputs of that size in exemplar 
 
 TEST_CASE("the peak memory of a window-by-window run does not grow with the output", "[apps][synthesize][windows]") {
   // 96-position windows (4 exemplar units at --quick's 24 per unit): a 5 x 5 output takes 4
-  // windows, a 15 x 15 one (9 times the points) about 64. Rasterised whole, the larger canvas
+  // windows, a 15 x 15 one (9 times the points) about 64. Rasterized whole, the larger canvas
   // would hold a 374 x 374 grid's maps and activations instead of 96 x 96 (about +180 MiB).
   auto d = ppsynth::test::scratch_dir("cli_memory");
   double peak[2];

@@ -3,7 +3,7 @@
 // run, and a damaged one (exit 2, one line saying what differs, never a crash or a backtrace);
 // --resume --force starts the run afresh. And what cannot run is refused before the run
 // directory exists: sizes that make no output, an evaluation that cannot run, an output past
-// the memory budget; a stop during the initialisation or between a large output's windows is
+// the memory budget; a stop during the initialization or between a large output's windows is
 // seen within a second.
 #include <catch2/catch.hpp>
 
@@ -69,7 +69,7 @@ TEST_CASE("--resume refuses a config.json edited since the run began, saying wha
                         Edit{"/method/c2", 1.5, "config key 'method.c2'"},
                         Edit{"/method/max_iterations", 7, "config key 'method.max_iterations'"},
                         Edit{"/method/num_sigmas", 3, "config key 'method.num_sigmas'"},
-                        Edit{"/colour", "red", "config key 'colour'"},
+                        Edit{"/color", "red", "config key 'color'"},
                         Edit{"/checkpoint_seconds", -1, "config key 'checkpoint_seconds'"},
                         Edit{"/exemplar", "shared:data/exemplars/gabor-paper/poisson_n64c2_point.txt", "exemplar"}}) {
     set_config_key(run, nlohmann::json::json_pointer(e.key), e.value);
@@ -104,7 +104,7 @@ TEST_CASE("a damaged checkpoint is refused with one line; never a crash", "[apps
   interrupted_run(run);
   const std::string bytes = ppsynth::read_file_text(run + "/checkpoint.bin");
   // One flipped byte anywhere: in the index arrays (the defect: a segfault in map_weights), in
-  // the optimiser's state (the defect: a finished, wrong output), at the start and the end.
+  // the optimizer's state (the defect: a finished, wrong output), at the start and the end.
   for (size_t at : {size_t{3}, bytes.size() / 4, bytes.size() / 2, 3 * bytes.size() / 4, bytes.size() - 3}) {
     std::string bad = bytes;
     bad[at] = static_cast<char>(bad[at] ^ 0x40);
@@ -147,7 +147,7 @@ TEST_CASE("outputs that cannot be made are refused before the run directory exis
 TEST_CASE("an output past the memory budget is refused at once", "[apps][synthesize][trust]") {
   auto d = ppsynth::test::scratch_dir("trust_memory");
   const auto t0 = std::chrono::steady_clock::now();
-  // The defect: 2e9 points ran 9.6 CPU-minutes in the initialisation, and SIGTERM went unseen.
+  // The defect: 2e9 points ran 9.6 CPU-minutes in the initialization, and SIGTERM went unseen.
   const auto r = run_ppsynth("synthesize " + kRuns + "lines.json --size 1e4 1e4 -o " + (d / "x").string(),
                              "PPSYNTH_MEMORY_LIMIT_MB=1000");
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -179,10 +179,10 @@ TEST_CASE("--quick accepts every rectangle the full settings accept", "[apps][sy
   CHECK_FALSE(fs::exists(d / "x"));
 }
 
-TEST_CASE("a stop during the initialisation or between windows is seen within a second", "[apps][synthesize][trust][windows]") {
+TEST_CASE("a stop during the initialization or between windows is seen within a second", "[apps][synthesize][trust][windows]") {
   auto d = ppsynth::test::scratch_dir("trust_stop");
   const std::string out = (d / "big").string();
-  // A large output: its initialisation and its windows' set-up run long between iterations.
+  // A large output: its initialization and its windows' set-up run long between iterations.
   Child c("synthesize " + kRuns + "lines.json --size 120 120 --set method.max_iterations=1 --set evaluate=false -o " + out,
           "PPSYNTH_THREADS=1");
   REQUIRE(c.wait_for([](const std::string& l) { return l.find("points") != std::string::npos; }));

@@ -148,8 +148,8 @@ TEST_CASE("a checkpoint's key says what differs from the synthesis resumed", "[c
   c2["method"]["c2"] = 2.0;
   CHECK(checkpoint_key_difference(key(c2, "aaaa"), mine) == "config key 'method.c2' = 2.0 (the checkpoint's: 1.0)");
   nlohmann::json unknown = config;
-  unknown["colour"] = "red";
-  CHECK_THAT(checkpoint_key_difference(key(unknown, "aaaa"), mine), Catch::Contains("'colour'") && Catch::Contains("absent"));
+  unknown["color"] = "red";
+  CHECK_THAT(checkpoint_key_difference(key(unknown, "aaaa"), mine), Catch::Contains("'color'") && Catch::Contains("absent"));
   CHECK_THAT(checkpoint_key_difference(key(config, "bbbb"), mine), Catch::Contains("exemplar"));
   nlohmann::json quick = mine;
   quick["quick"] = true;

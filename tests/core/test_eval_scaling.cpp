@@ -1,8 +1,8 @@
 // The evaluation suite on large inputs: every metric that `ppsynth eval` runs is
 // checked against a brute-force O(N^2) reference on a few hundred random points, in the plane
-// and on the torus, so the neighbour-search versions stay numerically what they were; then
+// and on the torus, so the neighbor-search versions stay numerically what they were; then
 // inputs that used to take minutes (exact Wasserstein on thousands of points, periodic
-// nearest neighbours on 10^5 points) must come back promptly, saying what they estimated.
+// nearest neighbors on 10^5 points) must come back promptly, saying what they estimated.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -46,7 +46,7 @@ PointSet random_set(size_t n, uint64_t seed, Domain d = {}, int classes = 1, boo
   return ps;
 }
 
-// The thesis estimator, every ordered pair, every bin (no neighbour search, no cutoff).
+// The thesis estimator, every ordered pair, every bin (no neighbor search, no cutoff).
 Curve brute_pcf(const PointSet& a, const PointSet& b, bool same, const PcfOptions& o, double r_max, double lambda2) {
   const Domain& dom = a.domain();
   const bool periodic = o.periodic || dom.periodic;
@@ -127,7 +127,7 @@ TEST_CASE("PCF by radius search equals the all-pairs estimator, plane and torus"
   check_curves_equal(pcf(pt, o), brute_pcf(pt, pt, true, o, pcf_unit(pt.size(), A), n * (n - 1) / (A * A)));
 }
 
-TEST_CASE("nearest-neighbour statistics and Chamfer equal brute force, plane and torus", "[metrics][scaling]") {
+TEST_CASE("nearest-neighbor statistics and Chamfer equal brute force, plane and torus", "[metrics][scaling]") {
   const PointSet ps = random_set(350, 22, Domain{0, 0, 1.5, 1});
   for (bool periodic : {false, true}) {
     INFO("periodic " << periodic);
@@ -279,7 +279,7 @@ TEST_CASE("quadrant metrics and evaluate stay the brute-force numbers on small i
   }
 }
 
-TEST_CASE("periodic neighbour queries on many points (and many coincident ones) are not quadratic",
+TEST_CASE("periodic neighbor queries on many points (and many coincident ones) are not quadratic",
           "[neighbors][scaling]") {
   // 200,000 points on the torus: each query used to clear a 200,000-entry table (4e10 bytes
   // written in all); now a query costs what it returns.
@@ -300,7 +300,7 @@ TEST_CASE("periodic neighbour queries on many points (and many coincident ones) 
   CHECK(std::unique(r.begin(), r.end()) == r.end());
 }
 
-TEST_CASE("evaluate on 8,000 vs 32,000 points returns promptly with a labelled Wasserstein estimate",
+TEST_CASE("evaluate on 8,000 vs 32,000 points returns promptly with a labeled Wasserstein estimate",
           "[metrics][scaling]") {
   // The exact assignment of 8,000 x 8,000 points per quadrant needed a 512 MB cost matrix
   // and about a minute per quadrant; it is now a subsample estimate, named as such.
@@ -324,7 +324,7 @@ TEST_CASE("evaluate on 8,000 vs 32,000 points returns promptly with a labelled W
 
 TEST_CASE("evaluate refuses domains whose squared distances overflow or underflow", "[metrics][scaling]") {
   // A 1e-310-wide domain mapped onto the unit square gave NaN positions and the assignment
-  // loop never ended; a 1e300-wide one lost every neighbour ("no other point found").
+  // loop never ended; a 1e300-wide one lost every neighbor ("no other point found").
   for (double side : {1e-310, 1e300}) {
     INFO("side " << side);
     PointSet ps(Domain{0, 0, side, side});

@@ -332,8 +332,8 @@ TEST_CASE("write_points is atomic and leaves no temp file", "[formats]") {
   CHECK_FALSE(fs::exists(t.path("bad.txt")));
 }
 
-TEST_CASE("Plain header: a parenthesised remark after the names is not a column", "[formats]") {
-  auto ps = ppsynth::parse_points("# x y  (Poisson-disk initialisation, unit square)\n0.25 0.5\n0.75 0.125\n", "init.txt");
+TEST_CASE("Plain header: a parenthesized remark after the names is not a column", "[formats]") {
+  auto ps = ppsynth::parse_points("# x y  (Poisson-disk initialization, unit square)\n0.25 0.5\n0.75 0.125\n", "init.txt");
   REQUIRE(ps.size() == 2);
   CHECK(ps[1].y == 0.125);
   CHECK(ps.num_attributes() == 0);

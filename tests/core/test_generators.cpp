@@ -52,7 +52,7 @@ TEST_CASE("generator parameters are validated by name", "[generators]") {
   CHECK_THROWS_AS(poisson_disk_points(100, 1, Domain{}, o), InputError);
 }
 
-TEST_CASE("best candidate follows the published initialisation window", "[generators]") {
+TEST_CASE("best candidate follows the published initialization window", "[generators]") {
   PointSet ps = best_candidate_points(256, 95);
   for (const auto& p : ps.positions()) {
     CHECK(p.x >= 0.01);

@@ -2,7 +2,7 @@
 // file under ../shared/data detected and read as it was before detection became structural.
 // The expected format of each file is the one the old first-match detection chose
 // (recorded by running this test against it): the Gabor paper's exemplars are gabor, the
-// Point-Synthesis exemplars point-synthesis, the reference outputs and initialisations plain.
+// Point-Synthesis exemplars point-synthesis, the reference outputs and initializations plain.
 #include <filesystem>
 #include <fstream>
 #include <iterator>

@@ -77,7 +77,7 @@ TEST_CASE("evaluate reproduces the reference quadrant numbers", "[metrics]") {
 }
 
 TEST_CASE("evaluate reports the closest pair on the torus and in the square", "[metrics]") {
-  // Two points in opposite corners: neighbours on the torus, far apart in the square.
+  // Two points in opposite corners: neighbors on the torus, far apart in the square.
   PointSet ps;
   ps.add({0.001, 0.001});
   ps.add({0.999, 0.999});

@@ -32,7 +32,7 @@ TEST_CASE("pptbf: clamped exponential window w2 matches the hand value", "[pptbf
   PptbfParams p = simple_grid();
   p.normblend = 0;  // w2 only
   p.sigw2 = 2;
-  // at a feature point: itself (d=0), 4 edge neighbours (d=1), 4 diagonal (d=sqrt 2 < 1.5)
+  // at a feature point: itself (d=0), 4 edge neighbors (d=1), 4 diagonal (d=sqrt 2 < 1.5)
   const double at_point = (1 - std::exp(-3.0)) + 4 * (std::exp(-2.0) - std::exp(-3.0)) +
                           4 * (std::exp(-2 * std::sqrt(2.0)) - std::exp(-3.0));
   CHECK(pptbf(p, 0.5, 0.5) == Approx(at_point).epsilon(1e-9));
@@ -95,7 +95,7 @@ TEST_CASE("pptbf: normalized-sum and max mixtures match hand values", "[pptbf]")
   CHECK(pptbf(p, 0.5, 0.5) == Approx(carved).epsilon(1e-9));
   p.mixture = 5;  // max of exp(-|x - p|): the nearest point
   CHECK(pptbf(p, 0.6, 0.5) == Approx(std::exp(-0.1)).epsilon(1e-12));
-  p.mixture = 4;  // highest-priority kernel with fdist < 1: own (0.1) or right neighbour (0.9)
+  p.mixture = 4;  // highest-priority kernel with fdist < 1: own (0.1) or right neighbor (0.9)
   const double v = pptbf(p, 0.6, 0.5);
   CHECK((v == Approx(std::exp(-0.1)) || v == Approx(std::exp(-0.9))));
 }
@@ -236,7 +236,7 @@ TEST_CASE("pptbf: point exemplars", "[pptbf]") {
   PptbfParams p;
   p.zoom = 10;
   p.jitter = 0;
-  // (a) regular grid without jitter: the 10 x 10 cell centres
+  // (a) regular grid without jitter: the 10 x 10 cell centers
   PointSet grid = pptbf_process_points(p);
   REQUIRE(grid.size() == 100);
   for (const Vec2& q : grid.positions()) {

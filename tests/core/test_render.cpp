@@ -133,19 +133,19 @@ TEST_CASE("a point with a radius attribute is drawn as a disk at its true radius
   const int w = cairo_image_surface_get_width(s), h = cairo_image_surface_get_height(s);
   cairo_surface_flush(s);
   // Locate the disk from the image itself: bounding box of the non-white pixels of the
-  // coloured disk (tick labels are grey text outside; restrict to coloured pixels).
+  // colored disk (tick labels are gray text outside; restrict to colored pixels).
   int x0 = w, x1 = -1, y0 = h, y1 = -1;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       auto c = pixel(s, x, y);
-      const bool coloured = std::abs(c[0] - c[2]) > 30;  // class 0 is blue; greys have r == b
-      if (coloured) x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+      const bool colored = std::abs(c[0] - c[2]) > 30;  // class 0 is blue; grays have r == b
+      if (colored) x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
     }
   REQUIRE(x1 > x0);
   const double cx = (x0 + x1) / 2.0, cy = (y0 + y1) / 2.0, r_px = (x1 - x0 + 1) / 2.0;
   // Expected: the frame side is the panel size minus the axis margins; the disk diameter is
   // half of it. Measure it independently from a point plot with two corner markers instead
-  // of trusting the layout constants: draw points at (0,0) and (1,1) and find their centres.
+  // of trusting the layout constants: draw points at (0,0) and (1,1) and find their centers.
   PointSet corners;
   corners.add({0.0, 0.0});
   corners.add({1.0, 1.0});
@@ -162,12 +162,12 @@ TEST_CASE("a point with a radius attribute is drawn as a disk at its true radius
       auto p = pixel(c, x, y);
       if (std::abs(p[0] - p[2]) > 30) ax0 = std::min(ax0, x), ax1 = std::max(ax1, x);
     }
-  // Corner markers are clipped to the frame, so the coloured extent is the frame width.
+  // Corner markers are clipped to the frame, so the colored extent is the frame width.
   const double frame_px = ax1 - ax0 + 1;
   CHECK(r_px == Approx(0.25 * frame_px).margin(2.0));
   CHECK(cx == Approx(ax0 + 0.5 * frame_px).margin(2.0));
 
-  // Pixels: centre and just inside the rim are covered; just outside is white.
+  // Pixels: center and just inside the rim are covered; just outside is white.
   CHECK_FALSE(is_white(pixel(s, static_cast<int>(cx), static_cast<int>(cy))));
   CHECK_FALSE(is_white(pixel(s, static_cast<int>(cx + 0.9 * r_px), static_cast<int>(cy))));
   CHECK(is_white(pixel(s, static_cast<int>(cx + r_px + 3), static_cast<int>(cy))));
@@ -188,7 +188,7 @@ TEST_CASE("a point with a radius attribute is drawn as a disk at its true radius
 
 TEST_CASE("auto marker size follows the point count", "[render]") {
   // An output with 4x the points at the same image size must have smaller markers: count
-  // the coloured pixels of a single point drawn alone vs. one point of a dense set.
+  // the colored pixels of a single point drawn alone vs. one point of a dense set.
   const auto dir = ppsynth::test::scratch_dir("render_autosize");
   auto ink = [&](const PointSet& ps) {
     const fs::path p = dir / "p.png";
@@ -261,13 +261,13 @@ TEST_CASE("a blank cell (empty title, empty set) of a panel grid draws nothing",
   };
   CHECK(blank_half_is_white(""));
   CHECK_FALSE(blank_half_is_white("empty output"));  // a titled empty set still gets its frame
-  // A blank cell has no attributes and is not asked for the colour attribute.
-  PointSet coloured;
-  coloured.add_attribute("depth");
-  coloured.add({0.5, 0.5}, 0, {1.0});
+  // A blank cell has no attributes and is not asked for the color attribute.
+  PointSet colored;
+  colored.add_attribute("depth");
+  colored.add({0.5, 0.5}, 0, {1.0});
   PointStyle by_depth;
   by_depth.color_attribute = "depth";
-  CHECK_NOTHROW(plot_panels(png.string(), {{"a", coloured}, {"", PointSet()}}, by_depth, px, 2));
+  CHECK_NOTHROW(plot_panels(png.string(), {{"a", colored}, {"", PointSet()}}, by_depth, px, 2));
 }
 
 // --- rendering limits --------------------------------------------------------------------
@@ -285,7 +285,7 @@ TEST_CASE("disks of radius 1e30, 1e300, inf or < 0 are drawn clipped, promptly",
     plot_points(png.string(), ps, PointStyle{}, 80);
     cairo_surface_t* s = cairo_image_surface_create_from_png(png.string().c_str());
     REQUIRE(cairo_surface_status(s) == CAIRO_STATUS_SUCCESS);
-    // The disk covers the whole frame: its centre pixel is tinted, not white.
+    // The disk covers the whole frame: its center pixel is tinted, not white.
     const int w = cairo_image_surface_get_width(s), h = cairo_image_surface_get_height(s);
     CHECK_FALSE(is_white(pixel(s, w / 2 + 8, h / 2)));
     cairo_surface_destroy(s);

@@ -15,7 +15,7 @@
 namespace fs = std::filesystem;
 using namespace ppsynth;
 
-TEST_CASE("output directories are normalised and never the current directory or a parent", "[run_directory]") {
+TEST_CASE("output directories are normalized and never the current directory or a parent", "[run_directory]") {
   auto d = test::scratch_dir("rundir_norm");
   const auto cwd = fs::current_path();
   fs::current_path(d);

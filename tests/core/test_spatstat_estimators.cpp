@@ -1,6 +1,6 @@
 // The field's estimators (core/metrics/second_order.hpp, mark_correlation.hpp) against R's
 // spatstat on the same patterns: real data sets exported from spatstat.data by
-// scripts/spatstat_export.R, summarised by scripts/spatstat_summaries.R. Skipped, saying why,
+// scripts/spatstat_export.R, summarized by scripts/spatstat_summaries.R. Skipped, saying why,
 // where R or spatstat is not installed (scripts/setup.sh installs them).
 //
 // Tolerances (what was measured, with margin):

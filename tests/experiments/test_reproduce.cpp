@@ -67,8 +67,8 @@ TEST_CASE("figure configs: unknown keys and bad values are errors naming the key
   j["panles"] = 1;
   CHECK_THAT(error_of(j), Catch::Contains("panles") && Catch::Contains("unknown key"));
   j = minimal();
-  j["panels"][0]["colour"] = "red";
-  CHECK_THAT(error_of(j), Catch::Contains("panels[0].colour"));
+  j["panels"][0]["color"] = "red";
+  CHECK_THAT(error_of(j), Catch::Contains("panels[0].color"));
   j = minimal();
   j["panels"][0]["methods"] = {"ours", "magic"};
   CHECK_THAT(error_of(j), Catch::Contains("panels[0].methods[1]") && Catch::Contains("magic"));

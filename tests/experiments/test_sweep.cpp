@@ -83,8 +83,8 @@ TEST_CASE("a sweep spec expands into rows with stable ids", "[sweep]") {
 
 TEST_CASE("a sweep spec's mistakes name the key", "[sweep]") {
   json bad = tiny_spec();
-  bad["colour"] = 1;
-  CHECK_THROWS_WITH(expand_sweep_spec(bad, "spec", ""), Catch::Contains("colour"));
+  bad["color"] = 1;
+  CHECK_THROWS_WITH(expand_sweep_spec(bad, "spec", ""), Catch::Contains("color"));
   bad = tiny_spec();
   bad["runs"] = {"no/such.json"};
   CHECK_THROWS_WITH(expand_sweep_spec(bad, "spec", ""), Catch::Contains("runs[0]") && Catch::Contains("no/such.json"));

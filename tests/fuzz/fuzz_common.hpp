@@ -3,7 +3,7 @@
 // scripts/fuzz.sh). The contract every target checks: for any input a reader or the config
 // loader either returns or throws ppsynth::InputError (a correct rejection). Any other
 // exception escapes LLVMFuzzerTestOneInput and libFuzzer reports it (deadly signal), as it
-// does a crash, a leak or undefined behaviour (ASan + UBSan, UB is fatal).
+// does a crash, a leak or undefined behavior (ASan + UBSan, UB is fatal).
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>

@@ -66,7 +66,7 @@ TEST_CASE("Gabor maps gradient matches finite differences (double)", "[models][g
   for (int A : {0, 1, 2}) {
     GaborMapsOptions o;
     o.res = res;
-    o.k = n;  // all neighbours: the map is smooth in the positions
+    o.k = n;  // all neighbors: the map is smooth in the positions
     GaborFeatureMaps maps(o);
     auto wa = A == 0 ? torch::Tensor() : w.narrow(1, 0, A);
     auto probe = at::randn({1, maps->channels(A), res, res}, g, torch::kFloat64);

@@ -1,6 +1,6 @@
 // The Gabor maps' two implementations (models/gabor_feature_maps.hpp): the tensor operations
 // a CUDA run takes against the CPU kernel, on the CPU, values and gradients; the brute-force
-// neighbour search against nanoflann's; and, where this process sees a CUDA device, the same
+// neighbor search against nanoflann's; and, where this process sees a CUDA device, the same
 // on it. Tagged [device]: scripts/gpu_check.sh runs these on the GPU machine.
 #include <catch2/catch.hpp>
 
@@ -42,7 +42,7 @@ double relative_difference(const torch::Tensor& a, const torch::Tensor& b) {
 }
 
 // Every combination the maps take: attributes (none, one, two), spatial only, periodic,
-// fewer neighbours than points, grid jitter; `other` evaluated on `device` against the CPU
+// fewer neighbors than points, grid jitter; `other` evaluated on `device` against the CPU
 // kernel on the CPU.
 void check_against_kernel(GaborMapsPath other, const torch::Device& device, torch::Dtype dtype, double tolerance) {
   const int n = 23, res = 11;
@@ -91,7 +91,7 @@ TEST_CASE("Gabor maps by tensor operations equal the CPU kernel, values and grad
   check_against_kernel(GaborMapsPath::tensor_ops, torch::kCPU, torch::kFloat32, 1e-4);
 }
 
-TEST_CASE("Brute-force k-NN on the tensors' device finds nanoflann's neighbours", "[models][gabor][device]") {
+TEST_CASE("Brute-force k-NN on the tensors' device finds nanoflann's neighbors", "[models][gabor][device]") {
   auto pts = uniform(40, 2, 7, torch::kFloat64);
   auto grid = torch::from_blob(FeatureGrid{13}.positions().data(), {13 * 13, 2}, torch::kFloat32).to(torch::kFloat64);
   for (bool periodic : {false, true})

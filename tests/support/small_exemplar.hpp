@@ -1,5 +1,5 @@
 #pragma once
-// Test support: the small exemplar the engine tests synthesise from. Class c is a jittered
+// Test support: the small exemplar the engine tests synthesize from. Class c is a jittered
 // grid (seed 11 + c) of `first_class_points` points for class 0 and 9 for the others; with
 // disks every point has a radius 0.02 + radius_step * (i % 3) + 0.01 c.
 #include <vector>

@@ -35,7 +35,7 @@ struct AnalyzeArgs {
   int map_size = 64;            // intensity map resolution (pixels per side)
   int queries = 4;              // local PCFs on a queries x queries grid
   double sigma_rmax = 3.0;      // intensity kernel width, units of r_max
-  double neighbourhood = 0;     // expected points per local window (0 = auto)
+  double neighborhood = 0;     // expected points per local window (0 = auto)
   bool periodic = false;
 };
 
@@ -75,7 +75,7 @@ int run(const AnalyzeArgs& a) {
 
   LocalPcfOptions lopt;
   lopt.intensity = iopt;
-  lopt.neighbourhood_points = a.neighbourhood > 0 ? a.neighbourhood : std::clamp(n / 4.0, 8.0, 60.0);
+  lopt.neighborhood_points = a.neighborhood > 0 ? a.neighborhood : std::clamp(n / 4.0, 8.0, 60.0);
   std::vector<Vec2> queries;
   for (int j = 0; j < a.queries; ++j)
     for (int i = 0; i < a.queries; ++i)
@@ -139,7 +139,7 @@ int run(const AnalyzeArgs& a) {
                     {"row0", "y0 (bottom)"}, {"values", imap}};
   j["relative_radii"] = whole.rel;
   j["whole_pcf"] = whole.g;
-  j["neighbourhood_points"] = lopt.neighbourhood_points;
+  j["neighborhood_points"] = lopt.neighborhood_points;
   nlohmann::json lj = nlohmann::json::array();
   for (size_t q = 0; q < local.size(); ++q)
     lj.push_back({{"position", {queries[q].x, queries[q].y}}, {"r_max", local[q].r_max}, {"g", local[q].g},
@@ -164,7 +164,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_option("--map-size", a->map_size, "intensity map resolution (pixels per side)");
   app.add_option("--queries", a->queries, "local PCFs on a Q x Q grid of positions");
   app.add_option("--sigma-rmax", a->sigma_rmax, "intensity kernel width in units of r_max");
-  app.add_option("--neighbourhood", a->neighbourhood, "expected points per local window (0 = N/4 in 8..60)");
+  app.add_option("--neighborhood", a->neighborhood, "expected points per local window (0 = N/4 in 8..60)");
   app.add_flag("--periodic", a->periodic, "treat the domain as a torus");
   return [a]() { return run(*a); };
 }

@@ -5,10 +5,10 @@
 // core/metrics/eval_protocol.hpp), all classes, per class, cross-class PCF, relative radius,
 // disk overlaps, border share; spatstat's K, L, g and mark correlations in exemplar units
 // (core/metrics/second_order_report.hpp) and the verdict, a p-value per row for "is the output
-// a plausible realisation of the exemplar's process?" (core/metrics/verdict.hpp, docs/verdict.md).
+// a plausible realization of the exemplar's process?" (core/metrics/verdict.hpp, docs/verdict.md).
 // Human table by default; --json prints the full result (with curves).
 // Sub-quadratic in the point count (k-d tree searches) except the exact Wasserstein, which
-// is exact up to --wasserstein-exact-limit pairs per quadrant and a labelled subsample
+// is exact up to --wasserstein-exact-limit pairs per quadrant and a labeled subsample
 // estimate beyond (core/metrics/wasserstein.hpp); inputs of 50,000+ points log progress.
 #include <iostream>
 
@@ -34,7 +34,7 @@ struct Args {
 ppsynth::app::RunFn setup(CLI::App& app) {
   auto a = std::make_shared<Args>();
   app.add_option("--exemplar", a->exemplar, "exemplar point file (\"shared:...\" allowed)")->required();
-  app.add_option("--output", a->output, "synthesised point file to evaluate")->required();
+  app.add_option("--output", a->output, "synthesized point file to evaluate")->required();
   app.add_option("--format", a->format, "input format of both files: auto (detect), gabor, point-synthesis, plain, json")
       ->capture_default_str();
   app.add_flag("--json", a->json, "print the full result as JSON instead of a table");
@@ -46,7 +46,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_option("--r-max", a->r_max, "PCF r_max in unit-square units, in (0, 1] (default: from the exemplar's count)");
   app.add_option("--wasserstein-exact-limit", a->wasserstein_pairs,
                  "exact Wasserstein up to this many exemplar x patch point pairs per quadrant (default 4000000, "
-                 "~0.5 s each); beyond, a labelled subsample estimate");
+                 "~0.5 s each); beyond, a labeled subsample estimate");
   app.add_option("--protocol", a->protocol,
                  "patches compared with the exemplar: auto (quadrants for a square output of 3-5 x the exemplar's "
                  "points, else crops), quadrants (the paper's), crops (random exemplar-sized crops)")

@@ -1,7 +1,7 @@
 // `ppsynth info FILE [--format F] [--scaling S] [--json]`: what a point file holds: its
 // format, point count, domain, classes (label and count), attributes (name, min, max),
 // coincident points, and the spacing statistics of core/metrics/nearest_neighbor.hpp:
-// mean nearest-neighbour distance d (domain units, periodic when the domain is) and the
+// mean nearest-neighbor distance d (domain units, periodic when the domain is) and the
 // relative radius rho (dimensionless; 1 = hexagonal packing), per file and per class.
 #include <algorithm>
 #include <iostream>
@@ -150,4 +150,4 @@ ppsynth::app::RunFn setup(CLI::App& app) {
 
 }  // namespace
 
-PPSYNTH_COMMAND("info", "summarise a point file: counts, classes, attributes, domain, spacing", setup)
+PPSYNTH_COMMAND("info", "summarize a point file: counts, classes, attributes, domain, spacing", setup)

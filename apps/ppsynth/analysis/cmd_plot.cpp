@@ -56,7 +56,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_option("-o,--output", a->output, "output image: .png, .svg or .pdf")->required();
   app.add_option("--format", a->format, "input format (default: detect from the file)");
   app.add_option("--size-attr", a->size_attr, "attribute mapped to marker size");
-  app.add_option("--color-attr", a->color_attr, "attribute mapped to a colour ramp (instead of class colours)");
+  app.add_option("--color-attr", a->color_attr, "attribute mapped to a color ramp (instead of class colors)");
   app.add_flag("--no-disks", a->no_disks, "draw points with a radius attribute as plain markers");
   app.add_option("--title", a->title, "plot title (with --compare: title of the first panel)");
   app.add_option("--compare", a->compare, "more point files, drawn side by side")->expected(1, -1);

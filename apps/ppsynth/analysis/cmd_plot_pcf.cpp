@@ -1,5 +1,5 @@
 // `ppsynth plot-pcf --exemplar E --output O -o pcf.png`: pair correlation functions of an
-// exemplar (dashed) and a synthesised output (solid), core/metrics/pcf.hpp, radii in units
+// exemplar (dashed) and a synthesized output (solid), core/metrics/pcf.hpp, radii in units
 // of each set's own r_max so an exemplar and its u^2-times larger output line up.
 // One class: one plot. K classes: a grid with the whole pattern and each class's auto-PCF
 // (classes matched by class id).
@@ -83,7 +83,7 @@ int run(const PlotPcfArgs& a) {
 ppsynth::app::RunFn setup(CLI::App& app) {
   auto a = std::make_shared<PlotPcfArgs>();
   app.add_option("--exemplar", a->exemplar, "exemplar point file")->required();
-  app.add_option("--output", a->output, "synthesised point file")->required();
+  app.add_option("--output", a->output, "synthesized point file")->required();
   app.add_option("-o", a->image, "output image: .png, .svg or .pdf")->required();
   app.add_option("--format", a->format, "input format of both files (default: detect)");
   app.add_option("--title", a->title, "plot title");

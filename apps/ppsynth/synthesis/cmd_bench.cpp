@@ -6,7 +6,7 @@
 // once on a small map), the iteration's convolution floor on each (network FLOPs / that
 // throughput) and the iteration's ratio to each, and the peak resident memory. It opens with
 // the machine report (`ppsynth doctor`): processor class, ISA caps, bf16 units, threads, BLAS. Then whole
-// iterations as a run takes them, through the library's synthesize() (optimiser step,
+// iterations as a run takes them, through the library's synthesize() (optimizer step,
 // convergence bookkeeping, and a checkpoint written after every iteration: the worst case).
 // A benchmark: it prints numbers; no test asserts on them.
 #include <sys/resource.h>
@@ -163,7 +163,7 @@ app::RunFn setup(CLI::App& app) {
     auto jit = pipe.draw_jitter(rng);
     auto grid = jit.defined() ? maps_mod->grid() + jit : maps_mod->grid();
     std::vector<std::pair<std::string, Timing>> phases;
-    phases.push_back({"neighbour search (k-NN)", time_it(o->reps, [&] {
+    phases.push_back({"neighbor search (k-NN)", time_it(o->reps, [&] {
                         device.is_cpu() ? grid_knn(pts, grid, s.k) : grid_knn_tensor_ops(pts, grid, s.k);
                       })});
     torch::Tensor maps;

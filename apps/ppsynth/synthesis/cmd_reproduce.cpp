@@ -33,7 +33,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
                  "reuse finished run directories (DIR or its subdirectories, e.g. runs/) whose resolved config equals a column's");
   app.add_option("--panels", o->panels, "run only these panels (the report says which were left out)");
   app.add_option("--set", o->sets, "override a key of every panel's run config: key.path=value (method.* keys: ours only)");
-  app.add_option("--seeds", o->seeds, "every synthesised column over these seeds (\"95-99\" or \"95,97\"), as a sweep; "
+  app.add_option("--seeds", o->seeds, "every synthesized column over these seeds (\"95-99\" or \"95,97\"), as a sweep; "
                                       "the report adds the statistics over seeds");
   app.add_option("--sweep", o->sweep, "the sweep's directory (default sweeps/NAME)");
   app.add_option("-j,--jobs", o->jobs, "the sweep's runs at once, here (--seeds)")->check(ppsynth::app::whole_number(1, 1024));

@@ -41,7 +41,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_option("--set", o->sets, "override a config key: key.path=value (repeatable)");
   app.add_option("--seed", o->seed, "random seed, a whole number from 0 to 2^63 - 1")->check(ppsynth::app::seed_number());
   app.add_option("--preset", o->preset, "a named preset under the config's own keys: fast (`ppsynth config --kind preset`)");
-  app.add_option("--init", o->init, "explicit initialisation point file");
+  app.add_option("--init", o->init, "explicit initialization point file");
   app.add_option("--device", o->device, "where the synthesis runs: cpu (default), cuda, cuda:N or auto (runtime.device)");
   app.add_flag("--quick", o->quick, "tiny grid and few iterations (smoke test)");
   auto* size = app.add_option("--size", o->size, "output rectangle W H in exemplar units (clean borders, window by window)")
@@ -96,4 +96,4 @@ ppsynth::app::RunFn setup(CLI::App& app) {
 
 }  // namespace
 
-PPSYNTH_COMMAND("synthesize", "synthesise a larger pattern from an exemplar (writes a run directory)", setup)
+PPSYNTH_COMMAND("synthesize", "synthesize a larger pattern from an exemplar (writes a run directory)", setup)

@@ -1,6 +1,6 @@
 #pragma once
 // Local intensity lambda(x) of a point pattern (thesis Sec. 4.2.2, Appendix A.2.2): the
-// classical kernel density estimator with the chapter's normalised 2D Gaussian,
+// classical kernel density estimator with the chapter's normalized 2D Gaussian,
 //
 //   lambda_hat(x) = sum_i k(x, x_i),   k(x, y) = exp(-||x - y||^2 / s^2) / (pi s^2)
 //
@@ -29,7 +29,7 @@ double intensity_sigma(const PointSet& ps, const IntensityOptions& opt);
 std::vector<double> local_intensity(const PointSet& ps, const std::vector<Vec2>& queries,
                                     const IntensityOptions& opt = {});
 
-// lambda_hat on a width x height grid of cell centres over the domain (row-major, row 0 at
+// lambda_hat on a width x height grid of cell centers over the domain (row-major, row 0 at
 // the domain's y0).
 std::vector<double> intensity_map(const PointSet& ps, int width, int height,
                                   const IntensityOptions& opt = {});

@@ -92,8 +92,8 @@ std::vector<PcfCurve> local_pcfs(const PointSet& ps, const std::vector<Vec2>& qu
                                  const LocalPcfOptions& opt) {
   check_params(opt.pcf);
   if (ps.size() < 2) throw InputError("local PCF: need at least 2 points");
-  if (opt.radius <= 0 && !(opt.neighbourhood_points > 1))
-    throw InputError("local PCF: neighbourhood_points must be > 1 (or give a radius)");
+  if (opt.radius <= 0 && !(opt.neighborhood_points > 1))
+    throw InputError("local PCF: neighborhood_points must be > 1 (or give a radius)");
   const Domain& d = ps.domain();
   const bool periodic = opt.periodic || d.periodic;
   IntensityOptions iopt = opt.intensity;
@@ -107,7 +107,7 @@ std::vector<PcfCurve> local_pcfs(const PointSet& ps, const std::vector<Vec2>& qu
     const Vec2 x = queries[q];
     const double lambda_kernel = lambdas[q];
     if (!(lambda_kernel > 0)) throw InputError("local PCF: zero intensity at a query position");
-    const double R = opt.radius > 0 ? opt.radius : std::sqrt(opt.neighbourhood_points / (M_PI * lambda_kernel));
+    const double R = opt.radius > 0 ? opt.radius : std::sqrt(opt.neighborhood_points / (M_PI * lambda_kernel));
 
     // Points of N_x (positions relative to x, unwrapped).
     std::vector<Vec2> local;
@@ -118,7 +118,7 @@ std::vector<PcfCurve> local_pcfs(const PointSet& ps, const std::vector<Vec2>& qu
     // Window autocorrelation a(h): exact for an unclipped disk, numeric when clipped.
     const bool clipped = !periodic && (x.x - R < d.x0 || x.x + R > d.x1 || x.y - R < d.y0 || x.y + R > d.y1);
     if (periodic && 2 * R > std::min(d.width(), d.height()))
-      throw InputError("local PCF: neighbourhood diameter exceeds the periodic domain");
+      throw InputError("local PCF: neighborhood diameter exceeds the periodic domain");
     std::function<double(Vec2)> autocorr;
     if (!clipped) {
       autocorr = [R](Vec2 h) { return disk_autocorrelation(R, std::hypot(h.x, h.y)); };
@@ -145,7 +145,7 @@ std::vector<PcfCurve> local_pcfs(const PointSet& ps, const std::vector<Vec2>& qu
     double lambda = lambda_kernel, lambda2 = lambda_kernel * lambda_kernel;
     if (opt.lambda_from_count) {
       const double area = autocorr({0, 0}), k = double(local.size());
-      if (local.size() < 2 || !(area > 0)) throw InputError("local PCF: fewer than 2 points in a neighbourhood");
+      if (local.size() < 2 || !(area > 0)) throw InputError("local PCF: fewer than 2 points in a neighborhood");
       lambda = k / area;
       lambda2 = k * (k - 1) / (area * area);
     }

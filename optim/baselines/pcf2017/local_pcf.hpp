@@ -10,7 +10,7 @@
 //   - disk clipped by a non-periodic border: integrated numerically on a grid
 //   - the whole rectangle W x H: (W - |h_x|)(H - |h_y|);  the whole torus: W H.
 // Radii are sampled relative to the window's r_max (pcf_params.hpp), so curves of patterns
-// with different densities are comparable (the chapter's density normalisation).
+// with different densities are comparable (the chapter's density normalization).
 //
 // Known property of this estimator (not a bug): for r below ~3 s the kernel mass at negative
 // distances is missing and the 1/r factor inflates g (a Poisson pattern gives g(0.01 r_max)
@@ -31,10 +31,10 @@ PcfCurve pattern_pcf(const PointSet& ps, const PcfParams& params = {}, bool peri
 
 struct LocalPcfOptions {
   PcfParams pcf;
-  // Neighbourhood size as an expected point count m: R_x = sqrt(m / (pi lambda_x)) (the
-  // chapter fixes the number of points per neighbourhood). Ignored when radius > 0.
-  double neighbourhood_points = 60;
-  double radius = 0;             // fixed R in domain units (0 = from neighbourhood_points)
+  // Neighborhood size as an expected point count m: R_x = sqrt(m / (pi lambda_x)) (the
+  // chapter fixes the number of points per neighborhood). Ignored when radius > 0.
+  double neighborhood_points = 60;
+  double radius = 0;             // fixed R in domain units (0 = from neighborhood_points)
   IntensityOptions intensity;    // kernel density at x (local_intensity.hpp): sizes N_x
   // lambda in Eq. 4.1 (and r_max): true = k / |N_x| from the k points in the window, with
   // lambda^2 = k (k - 1) / |N_x|^2 (exact for uniform points; far less noisy than the kernel
@@ -50,7 +50,7 @@ PcfCurve local_pcf(const PointSet& ps, Vec2 x, const LocalPcfOptions& opt = {});
 std::vector<PcfCurve> local_pcfs(const PointSet& ps, const std::vector<Vec2>& queries,
                                  const LocalPcfOptions& opt = {});
 
-// Area of the intersection of two disks of radius R whose centres are t apart.
+// Area of the intersection of two disks of radius R whose centers are t apart.
 double disk_autocorrelation(double R, double t);
 
 }  // namespace ppsynth::pcf2017

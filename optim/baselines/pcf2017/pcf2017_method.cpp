@@ -2,17 +2,17 @@
 // case): target = the exemplar's PCF (Eq. 4.1 over the exemplar window, radii relative to
 // its r_max); output = u^2 M points on the unit torus, descended on Eq. 4.3. Because radii are
 // relative to r_max and r_max scales as 1/sqrt(N), the output's PCF in its own r_max units is
-// the exemplar's PCF at 1/u size. On this path classes and attributes are not modelled (single class).
+// the exemplar's PCF at 1/u size. On this path classes and attributes are not modeled (single class).
 //
 // Rectangle outputs (core/output_shape.hpp): the canvas, in exemplar units, made a torus;
-// each class is synthesised on its own against its own PCF (cross-class structure is not
-// modelled) with output.class_counts(exemplar, canvas) points, so every class keeps its
+// each class is synthesized on its own against its own PCF (cross-class structure is not
+// modeled) with output.class_counts(exemplar, canvas) points, so every class keeps its
 // density, and takes its exemplar points' attributes in turn (i-th point: point i mod M_c).
 // A class whose PCF reaches beyond half a side of a thin canvas descends on a torus grown past
 // the canvas's far edges and is cut to the canvas (its count is then the density's expectation, not exact).
 // A class with fewer than 2 exemplar or output points has no PCF: its points stay uniform.
 // ctx.initialization is then in exemplar units on the canvas with exactly those per-class counts.
-// Border: synthesised on output.canvas(), the crop to output.domain() kept when output.clean_border and pad > 0.
+// Border: synthesized on output.canvas(), the crop to output.domain() kept when output.clean_border and pad > 0.
 #include <algorithm>
 #include <chrono>
 #include <string>
@@ -132,9 +132,9 @@ class Pcf2017Method : public SynthesisMethod {
       on[k] = class_torus(exemplar, shape, k, torus);
       grown[k] = on[k].x1 != torus.x1 || on[k].y1 != torus.y1;
       if (ctx.initialization && grown[k])
-        throw InputError("pcf2017: class " + std::to_string(k) + "'s PCF reaches beyond half the canvas side, so it is synthesised on a " +
+        throw InputError("pcf2017: class " + std::to_string(k) + "'s PCF reaches beyond half the canvas side, so it is synthesized on a " +
                          std::to_string(on[k].width()) + " x " + std::to_string(on[k].height()) +
-                         " torus larger than the canvas, which an initialisation cannot fill; give a larger output.size or no initialisation");
+                         " torus larger than the canvas, which an initialization cannot fill; give a larger output.size or no initialization");
     }
     if (ctx.initialization) check_initialization(*ctx.initialization, shape.class_counts(exemplar, torus), torus);
     std::vector<std::vector<Vec2>> pos(K);
@@ -229,7 +229,7 @@ class Pcf2017Method : public SynthesisMethod {
     }
     throw InputError("pcf2017: no torus found for class " + std::to_string(k) + " (its PCF reach does not settle)");
   }
-  // An explicit initialisation of a rectangle output: exemplar units, inside the canvas,
+  // An explicit initialization of a rectangle output: exemplar units, inside the canvas,
   // the density's count of every class (its file's own domain is not used).
   static void check_initialization(const PointSet& init, const std::vector<size_t>& counts, const Domain& canvas) {
     size_t total = 0;
@@ -240,13 +240,13 @@ class Pcf2017Method : public SynthesisMethod {
     for (size_t k = 0; k < std::max(have.size(), counts.size()); ++k) {
       const size_t h = k < have.size() ? have[k] : 0, want = k < counts.size() ? counts[k] : 0;
       if (h != want)
-        throw InputError("pcf2017: the initialisation has " + std::to_string(h) + " points of class " + std::to_string(k) +
+        throw InputError("pcf2017: the initialization has " + std::to_string(h) + " points of class " + std::to_string(k) +
                          "; the synthesis needs " + std::to_string(want) + " (" + std::to_string(total) +
                          " in all: the exemplar's density of each class over " + where + ")");
     }
     for (size_t i = 0; i < init.size(); ++i)
       if (!canvas.contains(init[i]))
-        throw InputError("pcf2017: the initialisation's point " + std::to_string(i + 1) + " (" + std::to_string(init[i].x) +
+        throw InputError("pcf2017: the initialization's point " + std::to_string(i + 1) + " (" + std::to_string(init[i].x) +
                          ", " + std::to_string(init[i].y) + ") lies outside " + where +
                          " (output rectangle in exemplar units, plus the clean-border pad)");
   }

@@ -1,6 +1,6 @@
 #pragma once
 // The PCF dictionary of thesis Sec. 4.2.3: local PCFs g_k (vectors of `bins` samples, from
-// local_pcf.hpp at measurement points c_k) are summarised by
+// local_pcf.hpp at measurement points c_k) are summarized by
 //   1. PCA: mean + principal components, keeping the fewest components that explain
 //      `variance_kept` (99 %) of the variance;
 //   2. basis PCFs g_l: the two samples at the ends of the first component, then, while

@@ -7,9 +7,9 @@
 
 namespace ppsynth::pcf2017 {
 
-Neighbourhood whole_domain_neighbourhood(size_t n, const Domain& domain, std::vector<double> target) {
+Neighborhood whole_domain_neighborhood(size_t n, const Domain& domain, std::vector<double> target) {
   if (n < 2) throw InputError("pcf2017: need at least 2 points");
-  Neighbourhood h;
+  Neighborhood h;
   h.center = {0.5 * (domain.x0 + domain.x1), 0.5 * (domain.y0 + domain.y1)};
   h.radius = 0;
   h.lambda = double(n) / domain.area();
@@ -18,9 +18,9 @@ Neighbourhood whole_domain_neighbourhood(size_t n, const Domain& domain, std::ve
   return h;
 }
 
-Neighbourhood disk_neighbourhood(Vec2 center, double radius, double lambda, std::vector<double> target) {
-  if (!(radius > 0) || !(lambda > 0)) throw InputError("pcf2017: neighbourhood radius and intensity must be > 0");
-  Neighbourhood h;
+Neighborhood disk_neighborhood(Vec2 center, double radius, double lambda, std::vector<double> target) {
+  if (!(radius > 0) || !(lambda > 0)) throw InputError("pcf2017: neighborhood radius and intensity must be > 0");
+  Neighborhood h;
   h.center = center;
   h.radius = radius;
   h.lambda = lambda;
@@ -60,19 +60,19 @@ struct Pair {
 
 }  // namespace
 
-PcfEnergy::PcfEnergy(Domain domain, std::vector<Neighbourhood> hoods, PcfParams params)
+PcfEnergy::PcfEnergy(Domain domain, std::vector<Neighborhood> hoods, PcfParams params)
     : domain_(domain), hoods_(std::move(hoods)), params_(params), rel_(relative_radii(params)) {
   domain_.periodic = true;
   if (params_.bins < 2 || !(params_.r_a > 0) || !(params_.r_b > params_.r_a) || !(params_.sigma_factor > 0))
     throw InputError("pcf2017: impossible PCF parameters");
-  if (hoods_.empty()) throw InputError("pcf2017: no neighbourhoods");
+  if (hoods_.empty()) throw InputError("pcf2017: no neighborhoods");
   const double half = 0.5 * std::min(domain_.width(), domain_.height());
   for (size_t k = 0; k < hoods_.size(); ++k) {
-    const Neighbourhood& h = hoods_[k];
+    const Neighborhood& h = hoods_[k];
     if (h.target.size() != rel_.size())
-      throw InputError("pcf2017: neighbourhood " + std::to_string(k) + " target has " +
+      throw InputError("pcf2017: neighborhood " + std::to_string(k) + " target has " +
                        std::to_string(h.target.size()) + " samples, expected " + std::to_string(rel_.size()));
-    if (!(h.lambda > 0) || !(h.norm > 0)) throw InputError("pcf2017: neighbourhood intensity must be > 0");
+    if (!(h.lambda > 0) || !(h.norm > 0)) throw InputError("pcf2017: neighborhood intensity must be > 0");
     const double rmax = rmax_for_intensity(h.lambda);
     const double reach = params_.r_b * rmax + params_.kernel_cutoff * params_.sigma_factor * rmax;
     if (reach > half || h.radius > half)
@@ -93,7 +93,7 @@ double PcfEnergy::evaluate(const std::vector<Vec2>& x, std::vector<Vec2>* grad,
   // tests: negligible next to the kernel sums for the few thousand points this baseline
   // handles).
   double max_reach = 0;
-  for (const Neighbourhood& h : hoods_) {
+  for (const Neighborhood& h : hoods_) {
     const double rmax = rmax_for_intensity(h.lambda);
     max_reach = std::max(max_reach, rel_.back() * rmax + params_.kernel_cutoff * params_.sigma_factor * rmax);
   }
@@ -113,7 +113,7 @@ double PcfEnergy::evaluate(const std::vector<Vec2>& x, std::vector<Vec2>* grad,
   double energy = 0;
   std::vector<Pair> pairs;
   std::vector<double> g(bins), coef(bins);
-  for (const Neighbourhood& h : hoods_) {
+  for (const Neighborhood& h : hoods_) {
     const double rmax = rmax_for_intensity(h.lambda);
     const double s = params_.sigma_factor * rmax, cutoff = params_.kernel_cutoff * s;
     const double r0 = rel_[0] * rmax, dr = drel * rmax;

@@ -6,10 +6,10 @@
 //
 // "the minimum distance between pairs of points for the maximum (hexagonal) packing" of N
 // points in area A (= 2x the Lagae-Dutré disk radius sqrt(A / (2 sqrt(3) N))). For a local
-// neighbourhood of intensity lambda, A/N is replaced by 1/lambda.
+// neighborhood of intensity lambda, A/N is replaced by 1/lambda.
 //
 // The PCF is sampled at `bins` radii evenly spaced in [r_a, r_b] * r_max (defaults: 100
-// samples in [0.01, 2.5] r_max), smoothed with the 1D normalised Gaussian of the chapter,
+// samples in [0.01, 2.5] r_max), smoothed with the 1D normalized Gaussian of the chapter,
 //
 //   k_s(t) = exp(-t^2 / s^2) / (sqrt(pi) s),     s = sigma_factor * r_max (default 0.25)
 //
@@ -39,7 +39,7 @@ inline std::vector<double> relative_radii(const PcfParams& p) {
   for (int b = 0; b < p.bins; ++b) r[b] = p.r_a + step * b;
   return r;
 }
-// Spacing of relative_radii (the dr of the discretised integral of Eq. 4.3).
+// Spacing of relative_radii (the dr of the discretized integral of Eq. 4.3).
 inline double relative_step(const PcfParams& p) { return p.bins > 1 ? (p.r_b - p.r_a) / (p.bins - 1) : 1.0; }
 
 // k_s(t) and its derivative dk/dt = -2 t / s^2 k_s(t).

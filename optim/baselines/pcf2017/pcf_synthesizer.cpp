@@ -78,13 +78,13 @@ DescentResult synthesize_stationary(const std::vector<double>& target, std::vect
                                     const DescentOptions& opt, const DescentCallback& cb) {
   Domain torus = domain;
   torus.periodic = true;
-  PcfEnergy energy(torus, {whole_domain_neighbourhood(init.size(), torus, target)}, params);
+  PcfEnergy energy(torus, {whole_domain_neighborhood(init.size(), torus, target)}, params);
   return descend(energy, std::move(init), rmax_for(double(init.size()), torus.area()), opt, cb);
 }
 
 namespace {
 
-// Mean of the density over the domain and its maximum, on a 64 x 64 grid of cell centres.
+// Mean of the density over the domain and its maximum, on a 64 x 64 grid of cell centers.
 std::pair<double, double> density_mean_max(const ScalarMap& density, const Domain& d) {
   const int G = 64;
   double sum = 0, mx = 0;
@@ -100,22 +100,22 @@ std::pair<double, double> density_mean_max(const ScalarMap& density, const Domai
 
 }  // namespace
 
-std::vector<Neighbourhood> adaptive_neighbourhoods(const AdaptiveTarget& t, size_t n, const Domain& domain) {
+std::vector<Neighborhood> adaptive_neighborhoods(const AdaptiveTarget& t, size_t n, const Domain& domain) {
   if (!t.density) throw InputError("pcf2017: adaptive target without a density map");
   if (t.basis.empty() || t.basis.size() != t.weights.size())
     throw InputError("pcf2017: adaptive target needs one weight map per basis PCF");
-  if (!(t.neighbourhood_points > 1)) throw InputError("pcf2017: neighbourhood_points must be > 1");
+  if (!(t.neighborhood_points > 1)) throw InputError("pcf2017: neighborhood_points must be > 1");
   const auto [mean, mx] = density_mean_max(t.density, domain);
   const double scale = double(n) / (mean * domain.area());  // lambda = scale * density
-  const double r_min = std::sqrt(t.neighbourhood_points / (M_PI * scale * mx));
+  const double r_min = std::sqrt(t.neighborhood_points / (M_PI * scale * mx));
   const double T = r_min / 2;
   const int nx = std::max(1, int(std::ceil(domain.width() / T))), ny = std::max(1, int(std::ceil(domain.height() / T)));
-  std::vector<Neighbourhood> hoods;
+  std::vector<Neighborhood> hoods;
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const Vec2 c{domain.x0 + (i + 0.5) * domain.width() / nx, domain.y0 + (j + 0.5) * domain.height() / ny};
       const double lambda = scale * t.density(c);
-      const double R = std::sqrt(t.neighbourhood_points / (M_PI * lambda));
+      const double R = std::sqrt(t.neighborhood_points / (M_PI * lambda));
       std::vector<double> w(t.basis.size());
       double wsum = 0;
       for (size_t l = 0; l < w.size(); ++l) {
@@ -123,13 +123,13 @@ std::vector<Neighbourhood> adaptive_neighbourhoods(const AdaptiveTarget& t, size
         if (!(w[l] >= 0) || !std::isfinite(w[l])) throw InputError("pcf2017: weight maps must be finite and >= 0");
         wsum += w[l];
       }
-      if (!(wsum > 0)) throw InputError("pcf2017: the weight maps sum to 0 at a neighbourhood centre");
+      if (!(wsum > 0)) throw InputError("pcf2017: the weight maps sum to 0 at a neighborhood center");
       std::vector<double> target(t.basis[0].size(), 0.0);
       for (size_t l = 0; l < w.size(); ++l) {
         if (t.basis[l].size() != target.size()) throw InputError("pcf2017: basis PCFs differ in length");
         for (size_t b = 0; b < target.size(); ++b) target[b] += w[l] / wsum * t.basis[l][b];
       }
-      hoods.push_back(disk_neighbourhood(c, R, lambda, std::move(target)));
+      hoods.push_back(disk_neighborhood(c, R, lambda, std::move(target)));
     }
   return hoods;
 }
@@ -152,7 +152,7 @@ DescentResult synthesize_adaptive(const AdaptiveTarget& target, size_t n, const 
                                   const DescentOptions& opt, const DescentCallback& cb) {
   Domain torus = domain;
   torus.periodic = true;
-  PcfEnergy energy(torus, adaptive_neighbourhoods(target, n, torus), params);
+  PcfEnergy energy(torus, adaptive_neighborhoods(target, n, torus), params);
   // Step unit: r_max of the densest region (the smallest spacing).
   const double mx = density_mean_max(target.density, torus).second;
   const double mean = density_mean_max(target.density, torus).first;

@@ -9,13 +9,13 @@
 // grown by `grow` after an accepted step, capped at `max_step`.
 //
 // Two front ends:
-//   - synthesize_stationary: one whole-torus neighbourhood, one target PCF (e.g. an exemplar's
+//   - synthesize_stationary: one whole-torus neighborhood, one target PCF (e.g. an exemplar's
 //     pattern_pcf), density n / A;
 //   - synthesize_adaptive: a density map and per-position weights of dictionary PCFs (basis
-//     g_l). Neighbourhoods are disks on a regular grid of spacing T = min_k R_k / 2 with
-//     R_k = sqrt(m / (pi lambda_k)) (m = expected points per neighbourhood; the chapter's
+//     g_l). Neighborhoods are disks on a regular grid of spacing T = min_k R_k / 2 with
+//     R_k = sqrt(m / (pi lambda_k)) (m = expected points per neighborhood; the chapter's
 //     |N_k| = alpha n / lambda_k), target t_k = sum_l w_l(c_k) g_l, lambda scaled so that it
-//     integrates to n. Initialisation: density-proportional rejection sampling.
+//     integrates to n. Initialization: density-proportional rejection sampling.
 #include <functional>
 #include <cstdint>
 #include <vector>
@@ -62,13 +62,13 @@ using ScalarMap = std::function<double(Vec2)>;
 
 struct AdaptiveTarget {
   ScalarMap density;                        // relative intensity (any positive scale)
-  std::vector<ScalarMap> weights;           // w_l(x), one per basis PCF (normalised to sum 1)
+  std::vector<ScalarMap> weights;           // w_l(x), one per basis PCF (normalized to sum 1)
   std::vector<std::vector<double>> basis;   // g_l at relative_radii(params)
-  double neighbourhood_points = 40;         // m
+  double neighborhood_points = 40;         // m
 };
 
-// The neighbourhoods of an adaptive target for n points on `domain` (see above).
-std::vector<Neighbourhood> adaptive_neighbourhoods(const AdaptiveTarget& t, size_t n, const Domain& domain);
+// The neighborhoods of an adaptive target for n points on `domain` (see above).
+std::vector<Neighborhood> adaptive_neighborhoods(const AdaptiveTarget& t, size_t n, const Domain& domain);
 
 // n points drawn with probability proportional to t.density (seeded rejection sampling).
 std::vector<Vec2> density_points(const ScalarMap& density, size_t n, const Domain& domain, uint64_t seed);

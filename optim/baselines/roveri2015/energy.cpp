@@ -8,7 +8,7 @@ double output_energy(const SynthesisState& st, std::vector<Vec2>* grad_x, std::v
   const int D = st.out.D;
   if (grad_x) grad_x->assign(st.out.size(), Vec2{0, 0});
   if (grad_a) grad_a->assign(st.out.size() * size_t(D), 0.0);
-  Neighbourhood nb;
+  Neighborhood nb;
   std::vector<Vec2> du;
   std::vector<double> da;
   SimilarityGrad g;
@@ -40,7 +40,7 @@ double local_energy(const SynthesisState& st, const std::vector<size_t>& quads, 
                     Vec2* d_extra) {
   const int D = st.out.D;
   const double R = st.kp.radius();
-  Neighbourhood nb;
+  Neighborhood nb;
   std::vector<Vec2> du;
   SimilarityGrad g;
   if (d_extra) {

@@ -11,9 +11,9 @@
 // one-hot class indicator (weight 1): points of different classes then never cancel each
 // other (a_i . a_j = 0), and K = 1 gives a_i = 1, the plain point-density function. Each
 // attribute column of the exemplar that varies adds one channel carrying the attribute
-// standardised by the exemplar's mean and standard deviation, times `attribute_weight`
+// standardized by the exemplar's mean and standard deviation, times `attribute_weight`
 // (constant columns add no channel and are copied through). Classes are discrete attributes:
-// they are optimised as continuous channel values and snapped back to the nearest one-hot
+// they are optimized as continuous channel values and snapped back to the nearest one-hot
 // vector (Section 3.3.4, "If the attributes are discrete, we snap to the closest discrete
 // value after each optimization step").
 #include <cstddef>
@@ -33,7 +33,7 @@ class ChannelEncoder {
   // Channel vector (channels() values) of a point with class `cls` and raw attributes `attrs`
   // (raw_attributes() values; may be null when there are none).
   void encode(int cls, const double* attrs, double* out) const;
-  // Class = argmax of the class channels; varying attributes un-standardised; constant
+  // Class = argmax of the class channels; varying attributes un-standardized; constant
   // attributes = the exemplar's value.
   int decode_class(const double* ch) const;
   void decode_attributes(const double* ch, double* attrs) const;

@@ -6,9 +6,9 @@
 
 namespace ppsynth::roveri2015 {
 
-double match_energy(const SynthesisState& st, size_t k, const Neighbourhood& out_nb, Vec2 m, Vec2* d_m,
+double match_energy(const SynthesisState& st, size_t k, const Neighborhood& out_nb, Vec2 m, Vec2* d_m,
                     bool with_out_out) {
-  Neighbourhood out, ex;
+  Neighborhood out, ex;
   for (size_t i = 0; i < out_nb.size(); ++i)
     if (st.ex_domain.contains({m.x + out_nb.rel[i].x, m.y + out_nb.rel[i].y}, 0))
       out.push(out_nb.rel[i], out_nb.a[i], out_nb.index[i]);
@@ -23,8 +23,8 @@ double match_energy(const SynthesisState& st, size_t k, const Neighbourhood& out
 
 namespace {
 
-// Normalised gradient descent from m0; returns the best energy and sets `m`.
-double descend(const SynthesisState& st, size_t k, const Neighbourhood& out_nb, Vec2 m0, const MatchOptions& opt, Vec2& m) {
+// Normalized gradient descent from m0; returns the best energy and sets `m`.
+double descend(const SynthesisState& st, size_t k, const Neighborhood& out_nb, Vec2 m0, const MatchOptions& opt, Vec2& m) {
   m = st.confine_match(m0);
   Vec2 g;
   double S = match_energy(st, k, out_nb, m, &g);
@@ -51,11 +51,11 @@ double descend(const SynthesisState& st, size_t k, const Neighbourhood& out_nb, 
 }  // namespace
 
 double match_point(SynthesisState& st, size_t k, const MatchOptions& opt, uint64_t seed) {
-  Neighbourhood out_nb;
+  Neighborhood out_nb;
   st.gather_output(st.quad[k], out_nb);
   std::vector<Vec2> starts{st.match[k]};
   if (opt.coherent) {
-    for (size_t j : st.quad_neighbours(k)) {
+    for (size_t j : st.quad_neighbors(k)) {
       const Vec2 d = relative(st.quad[j], st.quad[k], st.out_domain, st.periodic);
       starts.push_back({st.match[j].x + d.x, st.match[j].y + d.y});
     }
@@ -63,7 +63,7 @@ double match_point(SynthesisState& st, size_t k, const MatchOptions& opt, uint64
   if (opt.aligned_starts > 0 && out_nb.size() > 0) {
     // Point-aligned candidates: put the output point nearest q_k onto each exemplar point
     // (m = e_j - u_nearest) and keep the best few by S as descent starts. The true match
-    // of a neighbourhood always aligns some point with some exemplar point, so this finds
+    // of a neighborhood always aligns some point with some exemplar point, so this finds
     // basins that random starts (area ~ sigma^2 each) almost never hit.
     size_t near = 0;
     for (size_t i = 1; i < out_nb.size(); ++i)
@@ -97,7 +97,7 @@ double match_point(SynthesisState& st, size_t k, const MatchOptions& opt, uint64
   }
   st.match[k] = best_m;
   st.gather_exemplar(best_m, st.ex_nb[k], &st.quad[k]);
-  st.ex_term[k] = similarity(Neighbourhood{}, st.ex_nb[k], st.ex.D, st.kp, {false, true});
+  st.ex_term[k] = similarity(Neighborhood{}, st.ex_nb[k], st.ex.D, st.kp, {false, true});
   return best;
 }
 

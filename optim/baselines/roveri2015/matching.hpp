@@ -1,6 +1,6 @@
 #pragma once
 // Local step of Algorithm 1 (thesis Sec. 3.4.1, "Matching"): for every quadrature point q_k
-// find the exemplar location m_k minimising S(f(q_k), e(m_k)). Each m_k is independent of
+// find the exemplar location m_k minimizing S(f(q_k), e(m_k)). Each m_k is independent of
 // the others (dT/dm_k = dS_k/dm_k), so they are solved one by one by gradient descent on
 // m (similarity.hpp, dS/dm = -sum_j dS/dv_j) from several starts, keeping the best:
 //   - `restarts` uniformly random starts in the match box (thesis: five),
@@ -9,9 +9,9 @@
 //   - (`aligned_starts`) the best few point-aligned offsets: the output point nearest q_k put
 //     on each exemplar point in turn, ranked by S (an addition: random starts alone rarely
 //     land in the right basin, whose area is ~sigma^2),
-//   - optionally (`coherent`) the matches of the 4 grid neighbours of q_k shifted by the grid
+//   - optionally (`coherent`) the matches of the 4 grid neighbors of q_k shifted by the grid
 //     offset (an addition in the spirit of k-coherence search; not in the chapter).
-// Descent: normalised gradient steps of length `step` * sigma, doubled (up to the initial
+// Descent: normalized gradient steps of length `step` * sigma, doubled (up to the initial
 // length) after a success and halved after a failure, `iterations` evaluations per start;
 // m stays in the match box (clamped).
 #include <cstdint>
@@ -28,11 +28,11 @@ struct MatchOptions {
   int aligned_starts = 2;
 };
 
-// S_k(m) for quadrature point k, given its unmasked output neighbourhood `out_nb`; masks
+// S_k(m) for quadrature point k, given its unmasked output neighborhood `out_nb`; masks
 // applied at m (synthesis_state.hpp). The output-output term is left out when `with_out_out`
 // is false (constant in m as long as the mask does not change). `d_m` (optional) receives
 // dS/dm (masks held fixed).
-double match_energy(const SynthesisState& st, size_t k, const Neighbourhood& out_nb, Vec2 m, Vec2* d_m = nullptr,
+double match_energy(const SynthesisState& st, size_t k, const Neighborhood& out_nb, Vec2 m, Vec2* d_m = nullptr,
                     bool with_out_out = true);
 
 // Finds the best m for quadrature point k (starting points from `rng`); updates st.match[k],

@@ -1,6 +1,6 @@
 #pragma once
 // Global step of Algorithm 1 (thesis Sec. 3.4.1, "Merging"): with the matches m_k fixed,
-// minimise T (energy.hpp) over the output positions x_i, then over the channels a_i (Gauss-
+// minimize T (energy.hpp) over the output positions x_i, then over the channels a_i (Gauss-
 // Seidel: positions first, "prevents points from clustering to compensate for the
 // difference in attributes"), by gradient descent.
 //
@@ -11,7 +11,7 @@
 // accepted step lowers T. Points stay in the output domain (clamped; wrapped on a torus).
 // Channels: the same backtracking descent for attribute_iterations steps, then the class
 // channels are snapped to one-hot (functional.hpp); the update is kept only if T decreased.
-// Skipped when there is nothing to optimise (one class, no varying attribute).
+// Skipped when there is nothing to optimize (one class, no varying attribute).
 #include "optim/baselines/roveri2015/functional.hpp"
 #include "optim/baselines/roveri2015/synthesis_state.hpp"
 

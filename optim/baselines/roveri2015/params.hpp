@@ -4,7 +4,7 @@
 // exemplar. The method's registration (roveri2015_method.cpp) holds the default VALUES; this
 // struct only names and documents them.
 //
-// Units: every length below is in units of d_nn, the exemplar's mean nearest-neighbour
+// Units: every length below is in units of d_nn, the exemplar's mean nearest-neighbor
 // distance (plane, exemplar units). Section 3.6.1: "sigma is set to the average spacing
 // between the points e_i", so sigma_factor = 1 is the thesis's choice; the window size delta
 // "is provided by the user based on the expected scale of repetitions".
@@ -24,7 +24,7 @@ struct KernelParams {
   double window_cutoff = 2.5;  // Gaussian window: points farther than cutoff*delta are ignored
   double pair_cutoff = 4.5;    // pairs farther apart than pair_cutoff*sigma are skipped
                                // (their term is exp(-pair_cutoff^2 / 2) < 4e-5 of a coincident pair)
-  // Radius of the point neighbourhood around a quadrature / matching point.
+  // Radius of the point neighborhood around a quadrature / matching point.
   double radius() const { return window == WindowKind::Box ? delta : window_cutoff * delta; }
 };
 
@@ -35,13 +35,13 @@ struct RoveriParams {
   WindowKind window = WindowKind::Gaussian;
   double window_cutoff = 2.5;
   double pair_cutoff = 4.5;
-  double attribute_weight = 0.5;   // weight of a standardised attribute channel (class channels: 1)
+  double attribute_weight = 0.5;   // weight of a standardized attribute channel (class channels: 1)
   // --- quadrature (Eq. 3.6) -----------------------------------------------------------
   double quad_spacing = 1.0;       // grid spacing of the quadrature points q_k / sigma
   // --- matching (local step) ----------------------------------------------------------
   int match_restarts = 5;          // random starts per q_k (thesis: five), plus the previous m_k
   int aligned_starts = 2;          // best point-aligned offsets added as starts (not in the thesis; matching.hpp)
-  int match_iterations = 20;       // normalised gradient-descent steps per start
+  int match_iterations = 20;       // normalized gradient-descent steps per start
   double match_step = 0.5;         // initial matching move / sigma (halved on failure)
   double match_margin = 1.0;       // m_k kept >= margin*delta inside the exemplar's window
   // --- merging (global step) ----------------------------------------------------------
@@ -58,9 +58,9 @@ struct RoveriParams {
   double sampling_epsilon = 1e-6;      // |P| threshold (thesis 1e-6)
   int candidate_iterations = 5;        // gradient steps on a newly added point
   double max_candidate_fraction = 0.5; // at most this fraction of quadrature points tried per round
-  // --- initialisation ------------------------------------------------------------------
+  // --- initialization ------------------------------------------------------------------
   double patch_size = 0.5;         // random-patch-copy square side / min(exemplar W, H)
-  bool periodic_output = false;    // synthesise on a torus (default: plain rectangle)
+  bool periodic_output = false;    // synthesize on a torus (default: plain rectangle)
 };
 
 }  // namespace ppsynth::roveri2015

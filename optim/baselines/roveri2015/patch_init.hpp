@@ -1,5 +1,5 @@
 #pragma once
-// Random-patch-copy initialisation (Ma et al. 2011, used by thesis Fig. 3.4 and by the
+// Random-patch-copy initialization (Ma et al. 2011, used by thesis Fig. 3.4 and by the
 // paper's comparison, Sec. 5.1: "Roveri et al. also use random-patch copy initialization"):
 // the output domain is tiled with nx x ny equal cells of side ~patch_side, and each cell
 // receives the points (with classes and attributes) of a window of the same size taken at a

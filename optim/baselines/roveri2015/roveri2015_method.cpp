@@ -1,17 +1,17 @@
 // "roveri2015": thesis Chapter 3 (Roveri et al. 2015, "Example Based Repetitive Structure
 // Synthesis") as a SynthesisMethod, for 2-D point patterns with classes and attributes.
 //
-// Expansion by S = u^2: the output is synthesised on a domain u times wider and taller than
+// Expansion by S = u^2: the output is synthesized on a domain u times wider and taller than
 // the exemplar's, in exemplar units (so the exemplar's structures keep their size there),
-// initialised by random patch copy (patch_init.hpp) or ctx.initialization, optimised by
+// initialized by random patch copy (patch_init.hpp) or ctx.initialization, optimized by
 // Algorithm 1 (solver.hpp), and finally mapped onto the unit square (structures at 1/u size).
-// Lengths scale with d_nn, the exemplar's mean nearest-neighbour distance: sigma =
+// Lengths scale with d_nn, the exemplar's mean nearest-neighbor distance: sigma =
 // sigma_factor d_nn, delta_0 = window_factor d_nn (params.hpp).
 // Rectangle outputs (core/output_shape.hpp): the same synthesis with the rectangle as the
 // output domain, in exemplar units and never mapped (its expected count is the exemplar's
 // density times the area); ctx.initialization is then in exemplar units on the canvas.
-// Border: synthesised on output.canvas(), the crop to output.domain() kept when output.clean_border and pad > 0.
-// Snapshots (start, stage ends) show what is synthesised: the unit square, or the canvas.
+// Border: synthesized on output.canvas(), the crop to output.domain() kept when output.clean_border and pad > 0.
+// Snapshots (start, stage ends) show what is synthesized: the unit square, or the canvas.
 // Progress: one ProgressEvent stage per scale ("scale s/N, delta=..."), one iteration event
 // per local-global round (loss = T of Eq. 3.6), a stage_end with the current output.
 #include <chrono>
@@ -203,12 +203,12 @@ class Roveri2015Method : public SynthesisMethod {
   }
 
  private:
-  // An explicit initialisation of a rectangle output: its points in exemplar units, inside
+  // An explicit initialization of a rectangle output: its points in exemplar units, inside
   // the canvas (its file's own domain may be anything, so positions are not mapped).
   static PointSet initialization_on(const PointSet& init, const Domain& canvas) {
     for (size_t i = 0; i < init.size(); ++i)
       if (!canvas.contains(init[i]))
-        throw InputError("roveri2015: the initialisation's point " + std::to_string(i + 1) + " (" +
+        throw InputError("roveri2015: the initialization's point " + std::to_string(i + 1) + " (" +
                          std::to_string(init[i].x) + ", " + std::to_string(init[i].y) +
                          ") lies outside the synthesis canvas [" + std::to_string(canvas.x0) + ", " +
                          std::to_string(canvas.x1) + "] x [" + std::to_string(canvas.y0) + ", " +
@@ -277,7 +277,7 @@ PPSYNTH_REGISTER(ppsynth::MethodRegistry, "roveri2015",
                                  {"max_candidate_fraction", "[0, 1]"},
                                  {"patch_size", "(0, 1]"},
                                  {"quick_scales", "int [1, 64]"}}),
-                 "Roveri et al. 2015 (thesis Ch. 3): functional neighbourhood matching, multi-scale local-global "
+                 "Roveri et al. 2015 (thesis Ch. 3): functional neighborhood matching, multi-scale local-global "
                  "solver with sampling control, random-patch-copy init",
                  [](const nlohmann::json& p) -> std::unique_ptr<ppsynth::SynthesisMethod> {
                    return std::make_unique<ppsynth::roveri2015::Roveri2015Method>(p);

@@ -29,9 +29,9 @@ double add_delta(const SynthesisState& st, const ExtraPoint& extra, Vec2* grad) 
 }  // namespace
 
 bool try_add_point(SynthesisState& st, size_t k, const SamplingOptions& opt, uint64_t seed) {
-  const Neighbourhood& ex = st.ex_nb[k];
+  const Neighborhood& ex = st.ex_nb[k];
   if (ex.size() == 0) return false;
-  Neighbourhood out;
+  Neighborhood out;
   st.gather_pair(k, out);
   const double sigma = st.kp.sigma;
   // Proposal: the exemplar point with the largest deficit whose image lies in the output.
@@ -76,10 +76,10 @@ bool try_add_point(SynthesisState& st, size_t k, const SamplingOptions& opt, uin
 }
 
 bool try_remove_point(SynthesisState& st, size_t k, const SamplingOptions& opt) {
-  Neighbourhood out;
+  Neighborhood out;
   st.gather_pair(k, out);
   if (out.size() == 0) return false;
-  const Neighbourhood& ex = st.ex_nb[k];
+  const Neighborhood& ex = st.ex_nb[k];
   size_t best = 0;
   double best_surplus = -1e300;
   for (size_t i = 0; i < out.size(); ++i) {
@@ -101,7 +101,7 @@ bool try_remove_point(SynthesisState& st, size_t k, const SamplingOptions& opt) 
 SamplingResult sampling_control(SynthesisState& st, const SamplingOptions& opt, uint64_t seed) {
   SamplingResult res;
   std::vector<std::pair<double, size_t>> order;
-  Neighbourhood out;
+  Neighborhood out;
   for (size_t k = 0; k < st.quad.size(); ++k) {
     st.gather_pair(k, out);
     const double P = sampling_error(out, st.ex_nb[k], st.kp);

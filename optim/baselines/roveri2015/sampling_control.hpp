@@ -8,7 +8,7 @@
 //     e(e_j) - f(q_k + e_j - m_k) (densities with a = 1), jittered by 0.05 sigma, with e_j's
 //     channels. (The thesis adds "a new random point in vicinity of the quadrature point";
 //     this proposal is a point in that vicinity chosen where the exemplar says one is missing.)
-//     The new point's position is then optimised alone (candidate_iterations normalised
+//     The new point's position is then optimized alone (candidate_iterations normalized
 //     gradient steps on the energy change).
 //   P_s > +epsilon (too dense): REMOVE the output point of the window with the largest
 //     density surplus f(x_i) - e(m_k + x_i - q_k).

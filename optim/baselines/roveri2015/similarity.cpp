@@ -49,7 +49,7 @@ struct PairKernel {
 };
 
 // sum_ij (c_i.c_j) P(w_i, w_j) over one set, with dS/dw and (optionally) dS/dc.
-double self_term(const Neighbourhood& s, int D, const PairKernel& k, std::vector<Vec2>* dw,
+double self_term(const Neighborhood& s, int D, const PairKernel& k, std::vector<Vec2>* dw,
                  std::vector<double>* dc) {
   const size_t n = s.size();
   const bool deriv = dw != nullptr;
@@ -91,7 +91,7 @@ double self_term(const Neighbourhood& s, int D, const PairKernel& k, std::vector
 
 }  // namespace
 
-double similarity(const Neighbourhood& out, const Neighbourhood& ex, int D, const KernelParams& kp,
+double similarity(const Neighborhood& out, const Neighborhood& ex, int D, const KernelParams& kp,
                   SimilarityTerms terms, const SimilarityGrad& grad) {
   const PairKernel k(kp);
   const bool deriv = grad.d_out || grad.d_ex;
@@ -134,7 +134,7 @@ Vec2 match_gradient(const std::vector<Vec2>& d_ex) {
   return g;
 }
 
-double sampling_error(const Neighbourhood& out, const Neighbourhood& ex, const KernelParams& kp) {
+double sampling_error(const Neighborhood& out, const Neighborhood& ex, const KernelParams& kp) {
   if (kp.window == WindowKind::Box) return double(out.size()) - double(ex.size());
   const double s2 = kp.sigma * kp.sigma, d2 = kp.delta * kp.delta;
   const double inv = 1.0 / (s2 + d2);

@@ -1,12 +1,12 @@
 #pragma once
-// Neighbourhood similarity of thesis Eq. 3.2 / 3.5 / A.6 and the sampling error of Eq. 3.7,
+// Neighborhood similarity of thesis Eq. 3.2 / 3.5 / A.6 and the sampling error of Eq. 3.7,
 // with analytic gradients (Appendix A.1.2; the appendix's equations are missing from the
 // text, they are re-derived in docs/explanation/roveri2015.md and checked against finite differences in
 // tests/optim/baselines/test_roveri2015.cpp).
 //
-// A neighbourhood is given by the points near its centre as RELATIVE positions: output
+// A neighborhood is given by the points near its center as RELATIVE positions: output
 // points u_i = x_i - q (around a quadrature point q) with channels a_i, exemplar points
-// v_j = e_j - m (around its match m) with channels b_j. With c = the normalising constant
+// v_j = e_j - m (around its match m) with channels b_j. With c = the normalizing constant
 // below, the similarity error density S = (1/c) Int |f(q+s) - e(m+s)|^2 w(s) ds is
 //
 //   S = sum_ij (a_i.a_j) P(u_i,u_j) - 2 sum_ij (a_i.b_j) P(u_i,v_j) + sum_ij (b_i.b_j) P(v_i,v_j)
@@ -16,12 +16,12 @@
 //   Gaussian window (A.6):    w(s) = exp(-|s|^2/delta^2),  W(h) = exp(-|h|^2 / (2 tau^2)),
 //                             tau^2 = sigma^2 + 2 delta^2,  c = pi sigma^2 delta^2 / tau^2,
 //                             points within window_cutoff * delta only.
-// S >= 0 (an integral of a square), S = 0 for identical neighbourhoods; dimensionless
+// S >= 0 (an integral of a square), S = 0 for identical neighborhoods; dimensionless
 // (squared channel values). Derivatives, with dP/dp = P (-(p-r)/sigma^2 - (p+r)/tau^2) and
 // dP/dr = P ((p-r)/sigma^2 - (p+r)/tau^2) (1/tau^2 = 0 for the box):
 //   dS/dx_i = dS/du_i,   dS/dm = -sum_j dS/dv_j,   dS/da_i = 2 sum_j a_j P(u_i,u_j) - 2 sum_j b_j P(u_i,v_j).
 //
-// Sampling error density (Eq. 3.7, a_i = b_i = 1), normalised by one Gaussian's mass pi sigma^2
+// Sampling error density (Eq. 3.7, a_i = b_i = 1), normalized by one Gaussian's mass pi sigma^2
 // so that it counts points: P_s = (1/(pi sigma^2)) Int (f(q+s) - e(m+s)) w(s) ds
 //   box:       n_out - n_ex  (points inside the window)
 //   Gaussian:  kappa [sum_i exp(-|u_i|^2/(sigma^2+delta^2)) - sum_j exp(-|v_j|^2/(sigma^2+delta^2))],
@@ -35,9 +35,9 @@
 
 namespace ppsynth::roveri2015 {
 
-// Points of one neighbourhood: relative positions, channel vectors (D each), and the index
+// Points of one neighborhood: relative positions, channel vectors (D each), and the index
 // of each point in its set (for scattering gradients back).
-struct Neighbourhood {
+struct Neighborhood {
   std::vector<Vec2> rel;
   std::vector<const double*> a;
   std::vector<size_t> index;
@@ -60,14 +60,14 @@ struct SimilarityGrad {
   std::vector<double>* d_attr = nullptr;  // dS/da_i, D per output point
 };
 
-double similarity(const Neighbourhood& out, const Neighbourhood& ex, int D, const KernelParams& kp,
+double similarity(const Neighborhood& out, const Neighborhood& ex, int D, const KernelParams& kp,
                   SimilarityTerms terms = {}, const SimilarityGrad& grad = {});
 
 // dS/dm from the exemplar gradient: -sum_j dS/dv_j.
 Vec2 match_gradient(const std::vector<Vec2>& d_ex);
 
 // Sampling error density P_s of Eq. 3.7 (see above; counts of points, signed out - ex).
-double sampling_error(const Neighbourhood& out, const Neighbourhood& ex, const KernelParams& kp);
+double sampling_error(const Neighborhood& out, const Neighborhood& ex, const KernelParams& kp);
 
 // Relative position b - a: plain difference, or the minimum image on the torus `d`.
 Vec2 relative(Vec2 a, Vec2 b, const Domain& d, bool periodic);

@@ -43,7 +43,7 @@ struct SolverCallbacks {
 // The window sizes of the schedule: delta_0 a^s while >= ratio * delta_0 (at least one).
 std::vector<double> window_schedule(double delta0, double scale_factor, double min_window_ratio);
 
-// Runs Algorithm 1 on `st` (output already initialised). sigma and delta_0 in exemplar units.
+// Runs Algorithm 1 on `st` (output already initialized). sigma and delta_0 in exemplar units.
 std::vector<ScaleReport> solve(SynthesisState& st, const ChannelEncoder& enc, const RoveriParams& p, double sigma,
                                double delta0, uint64_t seed, const SolverCallbacks& cb = {});
 

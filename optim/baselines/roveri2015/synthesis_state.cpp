@@ -33,7 +33,7 @@ void SynthesisState::set_quadrature(double spacing) {
       quad.push_back({out_domain.x0 + (i + 0.5) * out_domain.width() / nx,
                       out_domain.y0 + (j + 0.5) * out_domain.height() / ny});
   match.assign(quad.size(), Vec2{0.5 * (ex_domain.x0 + ex_domain.x1), 0.5 * (ex_domain.y0 + ex_domain.y1)});
-  ex_nb.assign(quad.size(), Neighbourhood{});
+  ex_nb.assign(quad.size(), Neighborhood{});
   ex_term.assign(quad.size(), 0.0);
   quad_index_ = std::make_unique<NeighborIndex>(quad, out_domain, periodic);
 }
@@ -42,7 +42,7 @@ void SynthesisState::rebuild_output_index() {
   out_index_ = std::make_unique<NeighborIndex>(out.x, out_domain, periodic);
 }
 
-void SynthesisState::gather_output(Vec2 q, Neighbourhood& nb, size_t skip, const Vec2* m) const {
+void SynthesisState::gather_output(Vec2 q, Neighborhood& nb, size_t skip, const Vec2* m) const {
   nb.clear();
   if (out.size() == 0) return;
   for (size_t i : out_index_->radius(q, kp.radius())) {
@@ -53,7 +53,7 @@ void SynthesisState::gather_output(Vec2 q, Neighbourhood& nb, size_t skip, const
   }
 }
 
-void SynthesisState::gather_exemplar(Vec2 m, Neighbourhood& nb, const Vec2* q) const {
+void SynthesisState::gather_exemplar(Vec2 m, Neighborhood& nb, const Vec2* q) const {
   nb.clear();
   for (size_t j : ex_index_->radius(m, kp.radius())) {
     const Vec2 v{ex.x[j].x - m.x, ex.x[j].y - m.y};
@@ -62,7 +62,7 @@ void SynthesisState::gather_exemplar(Vec2 m, Neighbourhood& nb, const Vec2* q) c
   }
 }
 
-std::vector<size_t> SynthesisState::quad_neighbours(size_t k) const {
+std::vector<size_t> SynthesisState::quad_neighbors(size_t k) const {
   std::vector<size_t> r;
   const int i = int(k) % quad_nx, j = int(k) / quad_nx;
   const int di[4] = {-1, 1, 0, 0}, dj[4] = {0, 0, -1, 1};

@@ -10,7 +10,7 @@
 // rescaling, radii kept) tiled from the origin of [0, W] x [0, H], shifted by the offset
 // (exemplar units; random = uniform within one tile), the partial tiles at the edges cropped.
 // Border: a tiling has no synthesis border, so a clean-border canvas would crop to these same points; it tiles the rectangle directly.
-// ctx.initialization is ignored (nothing is optimised).
+// ctx.initialization is ignored (nothing is optimized).
 #include <cmath>
 #include <random>
 

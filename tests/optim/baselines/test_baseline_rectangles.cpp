@@ -2,7 +2,7 @@
 // a 3 x 1 rectangle in exemplar units comes back on [0, 3] x [0, 1] with every point inside,
 // each class near its density's count, the exemplar's classes and attribute columns; the
 // snapshots show the canvas in exemplar units; tiled_copy is the exact tiling; an explicit
-// initialisation that does not fit the canvas is refused with a message that says why; the
+// initialization that does not fit the canvas is refused with a message that says why; the
 // run layer (synthesize() with "output": {"size": [3, 1]}) gets the same for every baseline.
 // (The paper's u x u path is covered, unchanged, by the tests of each method.)
 #include <catch2/catch.hpp>
@@ -181,7 +181,7 @@ TEST_CASE("roveri2015 on a rectangle: exemplar units, density counts, canvas sna
   const PointSet again = run(spec, ex, shape, 95);
   REQUIRE(again.size() == out.size());
   CHECK(again[3].x == out[3].x);
-  // Published border: the rectangle itself is synthesised and returned whole.
+  // Published border: the rectangle itself is synthesized and returned whole.
   const OutputShape published = rectangle(ex, 3, 1, "published");
   Recorder rec_p;
   check_rectangle(run(spec, ex, published, 95, &rec_p), ex, published, 3);
@@ -201,7 +201,7 @@ TEST_CASE("roveri2015 on a rectangle: exemplar units, density counts, canvas sna
     CHECK(r3.cls(i) == u3.cls(i));
     CHECK(r3.attributes_of(i) == u3.attributes_of(i));
   }
-  // An explicit initialisation is in exemplar units on the canvas: a point beyond it is refused.
+  // An explicit initialization is in exemplar units on the canvas: a point beyond it is refused.
   PointSet init = uniform_points(72, 5, Domain{0, 0, 3, 1});
   init.add_attribute("radius", 0.01);
   init.add_attribute("depth", 0.0);
@@ -244,7 +244,7 @@ TEST_CASE("pcf2017 on a rectangle: each class at its density, attributes kept", 
   const PointSet whole = run(spec, ex, published);
   check_rectangle(whole, ex, published, 0, 3, 3);
   CHECK(whole.domain().periodic);
-  // An explicit initialisation: the exact per-class counts of the canvas, inside it.
+  // An explicit initialization: the exact per-class counts of the canvas, inside it.
   PointSet init(Domain{0, 0, 3, 3});
   const auto want = published.class_counts(ex, published.domain());
   for (int k = 0; k < 2; ++k)
@@ -256,7 +256,7 @@ TEST_CASE("pcf2017 on a rectangle: each class at its density, attributes kept", 
   PointSet outside = init;
   outside.positions()[0] = {-0.5, 0.5};
   CHECK_THROWS_WITH(run(spec, ex, published, 95, nullptr, &outside), Catch::Contains("outside the synthesis canvas"));
-  // On the thin rectangle the grown tori cannot take an initialisation.
+  // On the thin rectangle the grown tori cannot take an initialization.
   CHECK_THROWS_WITH(run(spec, ex, rectangle(ex, 3, 1, "published"), 95, nullptr, &init), Catch::Contains("larger output.size"));
 }
 

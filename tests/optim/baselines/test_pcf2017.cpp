@@ -58,13 +58,13 @@ TEST_CASE("pcf2017: the PCF of uniform points is near 1", "[pcf2017]") {
   CHECK(mean_abs_dev_from_one(pattern_pcf(square), 0.8, 2.5) < 0.08);
 
   LocalPcfOptions opt;
-  opt.neighbourhood_points = 400;
+  opt.neighborhood_points = 400;
   for (Vec2 q : {Vec2{0.5, 0.5}, Vec2{0.25, 0.7}}) {
     const PcfCurve c = local_pcf(torus, q, opt);
     INFO("query " << q.x << "," << q.y);
     CHECK(mean_abs_dev_from_one(c, 0.8, 2.5) < 0.08);
   }
-  // A neighbourhood clipped by the border of a non-periodic square (numeric a(h)).
+  // A neighborhood clipped by the border of a non-periodic square (numeric a(h)).
   CHECK(mean_abs_dev_from_one(local_pcf(square, {0.05, 0.5}, opt), 0.8, 2.5) < 0.08);
   // Intensity: ~N/A everywhere, corners included (edge correction); kernel width 0.1 over
   // 20000 points puts >= ~150 points under a corner's kernel (noise ~8 %), tolerance 25 %.
@@ -79,7 +79,7 @@ TEST_CASE("pcf2017: the energy equals the estimator and its gradient matches fin
   const PcfParams params;
   const Domain torus{0, 0, 1, 1, true};
   const PointSet ps = uniform_set(120, 3, true);
-  const PcfEnergy energy(torus, {whole_domain_neighbourhood(ps.size(), torus, blue_target(params))}, params);
+  const PcfEnergy energy(torus, {whole_domain_neighborhood(ps.size(), torus, blue_target(params))}, params);
   std::vector<std::vector<double>> curves;
   std::vector<Vec2> grad;
   const double E = energy.evaluate(ps.positions(), &grad, &curves);
@@ -109,15 +109,15 @@ TEST_CASE("pcf2017: the energy equals the estimator and its gradient matches fin
   };
   CHECK(check_fd(energy, ps.positions(), grad, 3) < 1e-5);
 
-  // Adaptive: density 1 + 1.5 x, weights blending two curves along y, disk neighbourhoods.
+  // Adaptive: density 1 + 1.5 x, weights blending two curves along y, disk neighborhoods.
   AdaptiveTarget t;
   t.density = [](Vec2 p) { return 1.0 + 1.5 * p.x; };
   std::vector<double> flat(params.bins, 1.0);
   t.basis = {blue_target(params), flat};
   t.weights = {[](Vec2 p) { return p.y; }, [](Vec2 p) { return 1.0 - p.y; }};
-  t.neighbourhood_points = 30;
-  const PcfEnergy adaptive(torus, adaptive_neighbourhoods(t, 200, torus), params);
-  CHECK(adaptive.neighbourhoods().size() > 4);
+  t.neighborhood_points = 30;
+  const PcfEnergy adaptive(torus, adaptive_neighborhoods(t, 200, torus), params);
+  CHECK(adaptive.neighborhoods().size() > 4);
   const std::vector<Vec2> x = density_points(t.density, 200, torus, 11);
   std::vector<Vec2> ag;
   adaptive.evaluate(x, &ag);
@@ -189,7 +189,7 @@ struct CountingObserver : SynthesisObserver {
 TEST_CASE("pcf2017: the registered method reproduces a blue-noise exemplar's PCF", "[pcf2017]") {
   // 64-point Poisson-disk exemplar (dart throwing, relative radius 0.75), u = 2 -> 256 points on the unit torus; PCF MSE measured
   // directly (pattern_pcf, radii relative to each pattern's own r_max, i.e. distances scaled
-  // by u). Measured (seeds 1-3): output 0.002-0.003, an independent 256-point realisation of
+  // by u). Measured (seeds 1-3): output 0.002-0.003, an independent 256-point realization of
   // the same dart-throwing process 0.004-0.006, uniform random points 0.72-0.81.
   // Thresholds: output < 0.01 and < 5 % of uniform's.
   PoissonDiskOptions pd;
@@ -228,7 +228,7 @@ TEST_CASE("pcf2017: the registered method reproduces a blue-noise exemplar's PCF
 TEST_CASE("pcf2017: adaptive synthesis follows the density and correlation maps", "[pcf2017]") {
   // Density 1 + 2x (left half expects 37.5 % of the points), weights: blue-noise PCF at the
   // top (w = y), flat PCF (Poisson) at the bottom. Measured (n = 200, 25 iterations, seed 5):
-  // energy 945 -> 101, left share 0.39, mean nearest-neighbour distance / local r_max 0.745 at
+  // energy 945 -> 101, left share 0.39, mean nearest-neighbor distance / local r_max 0.745 at
   // the top vs 0.573 at the bottom. Thresholds: energy / 3, left share in 0.30-0.45, top/bottom
   // NN ratio > 1.15.
   const PcfParams params;
@@ -236,7 +236,7 @@ TEST_CASE("pcf2017: adaptive synthesis follows the density and correlation maps"
   t.density = [](Vec2 q) { return 1.0 + 2.0 * q.x; };
   t.basis = {blue_target(params), std::vector<double>(params.bins, 1.0)};
   t.weights = {[](Vec2 q) { return q.y; }, [](Vec2 q) { return 1.0 - q.y; }};
-  t.neighbourhood_points = 30;
+  t.neighborhood_points = 30;
   const Domain torus{0, 0, 1, 1, true};
   const size_t n = 200;
   DescentOptions opt;

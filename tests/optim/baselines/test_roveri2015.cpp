@@ -23,10 +23,10 @@ using namespace ppsynth::roveri2015;
 
 namespace {
 
-// Random neighbourhood: n points in [-r, r]^2 with D random channels (owned by `store`).
-Neighbourhood random_nb(size_t n, int D, double r, std::mt19937_64& rng, std::vector<std::vector<double>>& store) {
+// Random neighborhood: n points in [-r, r]^2 with D random channels (owned by `store`).
+Neighborhood random_nb(size_t n, int D, double r, std::mt19937_64& rng, std::vector<std::vector<double>>& store) {
   std::uniform_real_distribution<double> U(-r, r), A(-1.0, 1.0);
-  Neighbourhood nb;
+  Neighborhood nb;
   for (size_t i = 0; i < n; ++i) {
     store.emplace_back(size_t(D));
     for (double& v : store.back()) v = A(rng);
@@ -70,7 +70,7 @@ SynthesisState identity_state(const PointSet& ex, const PointSet& out, double de
   for (size_t k = 0; k < st.quad.size(); ++k) {
     st.match[k] = st.quad[k];
     st.gather_exemplar(st.match[k], st.ex_nb[k], &st.quad[k]);
-    st.ex_term[k] = similarity(Neighbourhood{}, st.ex_nb[k], st.ex.D, st.kp, {false, true});
+    st.ex_term[k] = similarity(Neighborhood{}, st.ex_nb[k], st.ex.D, st.kp, {false, true});
   }
   return st;
 }
@@ -92,8 +92,8 @@ TEST_CASE("roveri2015: similarity gradients match finite differences", "[roveri2
     std::vector<std::vector<double>> store;
     store.reserve(64);
     const int D = 3;
-    Neighbourhood out = random_nb(7, D, 0.6, rng, store);
-    const Neighbourhood ex = random_nb(6, D, 0.6, rng, store);
+    Neighborhood out = random_nb(7, D, 0.6, rng, store);
+    const Neighborhood ex = random_nb(6, D, 0.6, rng, store);
     const KernelParams kp = kernel(w);
     std::vector<Vec2> du, dv;
     std::vector<double> da;
@@ -102,7 +102,7 @@ TEST_CASE("roveri2015: similarity gradients match finite differences", "[roveri2
     const double h = 1e-6;
     for (size_t i = 0; i < out.size(); ++i) {
       for (int c = 0; c < 2; ++c) {
-        Neighbourhood p = out, m = out;
+        Neighborhood p = out, m = out;
         (c ? p.rel[i].y : p.rel[i].x) += h;
         (c ? m.rel[i].y : m.rel[i].x) -= h;
         const double fd = (similarity(p, ex, D, kp) - similarity(m, ex, D, kp)) / (2 * h);
@@ -124,7 +124,7 @@ TEST_CASE("roveri2015: similarity gradients match finite differences", "[roveri2
     // dS/dm: moving m by +h moves every v_j = e_j - m by -h.
     const Vec2 gm = match_gradient(dv);
     for (int c = 0; c < 2; ++c) {
-      Neighbourhood p = ex, m = ex;
+      Neighborhood p = ex, m = ex;
       for (size_t j = 0; j < ex.size(); ++j) {
         (c ? p.rel[j].y : p.rel[j].x) -= h;
         (c ? m.rel[j].y : m.rel[j].x) += h;
@@ -140,8 +140,8 @@ TEST_CASE("roveri2015: Gaussian-window closed form equals numerical integration 
   std::mt19937_64 rng(5);
   std::vector<std::vector<double>> store;
   store.reserve(16);
-  const Neighbourhood out = random_nb(4, 2, 0.5, rng, store);
-  const Neighbourhood ex = random_nb(3, 2, 0.5, rng, store);
+  const Neighborhood out = random_nb(4, 2, 0.5, rng, store);
+  const Neighborhood ex = random_nb(3, 2, 0.5, rng, store);
   const KernelParams kp = kernel(WindowKind::Gaussian);
   const double s2 = kp.sigma * kp.sigma, d2 = kp.delta * kp.delta;
   const double c = M_PI * s2 * d2 / (s2 + 2 * d2);
@@ -161,18 +161,18 @@ TEST_CASE("roveri2015: Gaussian-window closed form equals numerical integration 
   CHECK(rel_err(integral / c, similarity(out, ex, 2, kp)) < 1e-4);
 }
 
-TEST_CASE("roveri2015: a neighbourhood is at zero distance from itself", "[roveri2015]") {
+TEST_CASE("roveri2015: a neighborhood is at zero distance from itself", "[roveri2015]") {
   std::mt19937_64 rng(3);
   std::vector<std::vector<double>> store;
   store.reserve(16);
   for (WindowKind w : {WindowKind::Box, WindowKind::Gaussian}) {
-    const Neighbourhood nb = random_nb(9, 2, 0.8, rng, store);
+    const Neighborhood nb = random_nb(9, 2, 0.8, rng, store);
     const KernelParams kp = kernel(w);
     CHECK(std::abs(similarity(nb, nb, 2, kp)) < 1e-12);
-    Neighbourhood moved = nb;
+    Neighborhood moved = nb;
     moved.rel[0].x += 0.1;
     CHECK(similarity(moved, nb, 2, kp) > 1e-4);
-    Neighbourhood fewer = nb;
+    Neighborhood fewer = nb;
     fewer.rel.pop_back();
     fewer.a.pop_back();
     fewer.index.pop_back();
@@ -215,16 +215,16 @@ TEST_CASE("roveri2015: total energy and local energy gradients match finite diff
       st.rebuild_output_index();
       CHECK(rel_err((ep - em) / (2 * h), c ? g[i].y : g[i].x) < 1e-6);
     }
-  // Matching gradient through match_energy (exemplar neighbourhood regathered at m).
+  // Matching gradient through match_energy (exemplar neighborhood regathered at m).
   // (Masks are active but no image crosses a domain border under a 1e-6 move.)
-  Neighbourhood nb;
+  Neighborhood nb;
   st.gather_output(st.quad[3], nb);
   Vec2 gm;
   const Vec2 m{0.47, 0.52};
   match_energy(st, 3, nb, m, &gm);
   CHECK(rel_err((match_energy(st, 3, nb, {m.x + h, m.y}) - match_energy(st, 3, nb, {m.x - h, m.y})) / (2 * h), gm.x) < 1e-6);
   CHECK(rel_err((match_energy(st, 3, nb, {m.x, m.y + h}) - match_energy(st, 3, nb, {m.x, m.y - h})) / (2 * h), gm.y) < 1e-6);
-  // Gradient with respect to a candidate point (sampling control's local optimisation).
+  // Gradient with respect to a candidate point (sampling control's local optimization).
   std::vector<double> ch(size_t(st.out.D), 1.0);
   const std::vector<size_t> qs = st.quads_near({0.5, 0.5});
   const ExtraPoint e{{0.41, 0.63}, ch.data()};
@@ -273,7 +273,7 @@ TEST_CASE("roveri2015: sampling control fills a hole and removes a duplicate", "
   {
     SynthesisState st = identity_state(ex, ex.subset(keep), 2.0);
     const size_t k = nearest_quad(st, ex[hole]);
-    Neighbourhood nb;
+    Neighborhood nb;
     st.gather_pair(k, nb);
     REQUIRE(sampling_error(nb, st.ex_nb[k], st.kp) < 0);
     SamplingOptions so;

@@ -57,6 +57,6 @@ TEST_CASE("tiled_copy: quadrant metrics 0 when aligned, seeded offsets otherwise
   CHECK(a[0].x == b[0].x);
   CHECK(a[0].x != c[0].x);
   CHECK(quadrant_metrics(ex, a).chamfer > 0);  // shifted copies are cut by the quadrants
-  CHECK_THROWS_WITH(run({{"offset", "centre"}}, 1), Catch::Contains("method.offset"));
+  CHECK_THROWS_WITH(run({{"offset", "center"}}, 1), Catch::Contains("method.offset"));
   CHECK_THROWS_AS(run({{"offset", {0.1}}}, 1), InputError);
 }

@@ -145,10 +145,10 @@ TEST_CASE("the stop flag saves a checkpoint and throws; resuming from it finishe
   CHECK(same_bits(synthesize(ex, &stopped.checkpoints[0]).output, whole.output));
 }
 
-TEST_CASE("the resume comparison sees a perturbed generator, optimiser or position", "[optim][checkpoint]") {
+TEST_CASE("the resume comparison sees a perturbed generator, optimizer or position", "[optim][checkpoint]") {
   const PointSet ex = test::small_exemplar(1, false);
   const Run whole = synthesize(ex);
-  // a checkpoint in the middle of the first stage: the optimiser has moments, the generator has drawn
+  // a checkpoint in the middle of the first stage: the optimizer has moments, the generator has drawn
   SynthesisState st = deserialize_state(whole.checkpoints[2], "test");
   REQUIRE(st.iteration > 0);
   REQUIRE_FALSE(st.optimizer.empty());
@@ -201,7 +201,7 @@ std::string edited(const std::string& bytes, const std::function<void(SynthesisS
 TEST_CASE("a restored state is checked against the plan: indices, counts, flags, finite values", "[optim][checkpoint]") {
   const PointSet ex = test::small_exemplar(2, true);
   const Run whole = synthesize(ex);
-  const std::string& mid = whole.checkpoints[2];  // inside the first stage: moving points, optimiser moments
+  const std::string& mid = whole.checkpoints[2];  // inside the first stage: moving points, optimizer moments
   {
     const SynthesisState st = deserialize_state(mid, "test");
     REQUIRE(st.moving.defined());
@@ -227,10 +227,10 @@ TEST_CASE("a restored state is checked against the plan: indices, counts, flags,
       {"finished stages", [](SynthesisState& s) { s.stages.push_back(json::object()); }},
       {"not finite", [](SynthesisState& s) { s.moving[0][0] = std::nanf(""); }},
       {"not finite", [](SynthesisState& s) { s.stage_losses[0] = INFINITY; }},
-      {"optimiser state 'exp_avg'", [](SynthesisState& s) { s.optimizer["exp_avg"] = torch::zeros({3, 2}); }},
-      {"optimiser state 'exp_avg_sq'", [](SynthesisState& s) { s.optimizer["exp_avg_sq"] = -s.optimizer["exp_avg_sq"] - 1; }},
-      {"optimiser state 'step'", [](SynthesisState& s) { s.optimizer["step"] = torch::tensor(int64_t{0}); }},
-      {"optimiser state 'momentum'", [](SynthesisState& s) { s.optimizer["momentum"] = torch::zeros({1}); }},
+      {"optimizer state 'exp_avg'", [](SynthesisState& s) { s.optimizer["exp_avg"] = torch::zeros({3, 2}); }},
+      {"optimizer state 'exp_avg_sq'", [](SynthesisState& s) { s.optimizer["exp_avg_sq"] = -s.optimizer["exp_avg_sq"] - 1; }},
+      {"optimizer state 'step'", [](SynthesisState& s) { s.optimizer["step"] = torch::tensor(int64_t{0}); }},
+      {"optimizer state 'momentum'", [](SynthesisState& s) { s.optimizer["momentum"] = torch::zeros({1}); }},
       {"best iterate", [](SynthesisState& s) { s.stage_best = torch::zeros({1, 2}); }},
       {"another type", [](SynthesisState& s) { s.stages.push_back({{"relaxed", "yes"}}); }},
       {"generator", [](SynthesisState& s) { s.rng = "not a generator"; }},

@@ -16,7 +16,7 @@ using namespace ppsynth;
 namespace {
 
 // A lattice of spacing 0.1 on [0, 1.6] x [0, 1] (two classes in columns): its structure is the
-// same along x and along y, so any squeeze shows in the nearest-neighbour vectors.
+// same along x and along y, so any squeeze shows in the nearest-neighbor vectors.
 PointSet lattice(double width, double height) {
   PointSet ex(Domain{0, 0, width, height});
   int col = 0;
@@ -25,7 +25,7 @@ PointSet lattice(double width, double height) {
   return ex;
 }
 
-// Mean |dx| and |dy| from each point to its nearest neighbour along each axis (the closest
+// Mean |dx| and |dy| from each point to its nearest neighbor along each axis (the closest
 // point in the same row, and in the same column).
 std::pair<double, double> axis_spacings(const PointSet& ps) {
   double sx = 0, sy = 0;

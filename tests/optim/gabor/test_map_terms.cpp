@@ -14,10 +14,10 @@ using namespace ppsynth;
 
 namespace {
 
-// Pulls the moving points towards the centre, and counts what the engine told it.
-class CentreMapTerm : public MapTerm {
+// Pulls the moving points towards the center, and counts what the engine told it.
+class CenterMapTerm : public MapTerm {
  public:
-  explicit CentreMapTerm(const nlohmann::json&) {}
+  explicit CenterMapTerm(const nlohmann::json&) {}
   void begin_run(const MapTermRun& run) override { ++runs, grid = run.settings.res; }
   void begin_group(const Stage&, const PointSet& output) override { ++groups, output_points = output.size(); }
   void begin_stage(const Stage&) override { ++stages; }
@@ -31,7 +31,7 @@ class CentreMapTerm : public MapTerm {
   static inline size_t output_points = 0;
 };
 
-double mean_distance_to_centre(const PointSet& ps) {
+double mean_distance_to_center(const PointSet& ps) {
   double s = 0;
   for (size_t i = 0; i < ps.size(); ++i) s += std::hypot(ps[i].x - 0.5, ps[i].y - 0.5);
   return s / ps.size();
@@ -39,10 +39,10 @@ double mean_distance_to_centre(const PointSet& ps) {
 
 }  // namespace
 
-PPSYNTH_REGISTER(ppsynth::MapTermRegistry, "test_centre", (nlohmann::json{{"weight", 0.0}}),
-                 (nlohmann::json{{"weight", "[0, inf)"}}), "test only: pulls points to the centre",
+PPSYNTH_REGISTER(ppsynth::MapTermRegistry, "test_center", (nlohmann::json{{"weight", 0.0}}),
+                 (nlohmann::json{{"weight", "[0, inf)"}}), "test only: pulls points to the center",
                  [](const nlohmann::json& p) -> std::unique_ptr<ppsynth::MapTerm> {
-                   return std::make_unique<CentreMapTerm>(p);
+                   return std::make_unique<CenterMapTerm>(p);
                  })
 
 TEST_CASE("A map term registered in a test file acts in a synthesis", "[optim][map_terms][synthesis]") {
@@ -56,22 +56,22 @@ TEST_CASE("A map term registered in a test file acts in a synthesis", "[optim][m
     return MethodRegistry::instance().create(spec, "method")->synthesize(ex, ctx);
   };
   const auto plain = run(nlohmann::json::object());
-  CentreMapTerm::reset();
-  const auto pulled = run({{"test_centre", {{"weight", 1000.0}}}});
-  CHECK(CentreMapTerm::runs == 1);
-  CHECK(CentreMapTerm::groups == 2);
-  CHECK(CentreMapTerm::stages == 4);  // 2 classes x 2 quick sigmas
-  CHECK(CentreMapTerm::evaluations >= 4);
-  CHECK(CentreMapTerm::with_jitter == CentreMapTerm::evaluations);  // jitter is on by default
-  CHECK(CentreMapTerm::grid == 24);                                  // the --quick grid
-  CHECK(CentreMapTerm::output_points == 64);
-  INFO("plain " << mean_distance_to_centre(plain) << " pulled " << mean_distance_to_centre(pulled));
-  CHECK(mean_distance_to_centre(pulled) < mean_distance_to_centre(plain) - 0.01);
-  CentreMapTerm::reset();
-  run({{"test_centre", {{"weight", 0.0}}}});  // weight 0: not created, not run
-  CHECK(CentreMapTerm::runs == 0);
+  CenterMapTerm::reset();
+  const auto pulled = run({{"test_center", {{"weight", 1000.0}}}});
+  CHECK(CenterMapTerm::runs == 1);
+  CHECK(CenterMapTerm::groups == 2);
+  CHECK(CenterMapTerm::stages == 4);  // 2 classes x 2 quick sigmas
+  CHECK(CenterMapTerm::evaluations >= 4);
+  CHECK(CenterMapTerm::with_jitter == CenterMapTerm::evaluations);  // jitter is on by default
+  CHECK(CenterMapTerm::grid == 24);                                  // the --quick grid
+  CHECK(CenterMapTerm::output_points == 64);
+  INFO("plain " << mean_distance_to_center(plain) << " pulled " << mean_distance_to_center(pulled));
+  CHECK(mean_distance_to_center(pulled) < mean_distance_to_center(plain) - 0.01);
+  CenterMapTerm::reset();
+  run({{"test_center", {{"weight", 0.0}}}});  // weight 0: not created, not run
+  CHECK(CenterMapTerm::runs == 0);
 
   CHECK_THROWS_WITH(run({{"no_such_term", {{"weight", 1.0}}}}), Catch::Contains("method.map_terms.no_such_term") && Catch::Contains("class_own"));
-  CHECK_THROWS_WITH(run({{"test_centre", {{"weight", 1.0}, {"strength", 2}}}}), Catch::Contains("method.map_terms.test_centre.strength"));
-  CHECK_THROWS_WITH(run({{"test_centre", {{"weight", -1.0}}}}), Catch::Contains("method.map_terms.test_centre.weight"));
+  CHECK_THROWS_WITH(run({{"test_center", {{"weight", 1.0}, {"strength", 2}}}}), Catch::Contains("method.map_terms.test_center.strength"));
+  CHECK_THROWS_WITH(run({{"test_center", {{"weight", -1.0}}}}), Catch::Contains("method.map_terms.test_center.weight"));
 }

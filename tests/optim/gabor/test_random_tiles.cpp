@@ -58,8 +58,8 @@ TEST_CASE("the cut partitions the torus's points into u x u tiles, each in its o
       sum = sum.defined() ? sum + s : s;
     }
     for (int k : seen) CHECK(k == 1);
-    // Back from a tile to the torus: p = frac(offset + (corner + local) / u), so neighbours
-    // within a tile are neighbours on the torus (the scale is u, nothing else).
+    // Back from a tile to the torus: p = frac(offset + (corner + local) / u), so neighbors
+    // within a tile are neighbors on the torus (the scale is u, nothing else).
     for (const auto& t : tiles) {
       const auto rows = t.rows.accessor<int64_t, 1>();
       const auto loc_t = t.local.detach().to(torch::kFloat64), p_t = pts.detach().to(torch::kFloat64);

@@ -131,7 +131,7 @@ TEST_CASE("The pattern rule with end_on best marks each new best check and no ot
     CHECK_FALSE(v.stop);  // the window is longer than the stage
     if (v.best) marked.push_back(it);
   }
-  // The record pairs each check's PCF MSE as optimised (the torus: the stop watches it) with
+  // The record pairs each check's PCF MSE as optimized (the torus: the stop watches it) with
   // the one as seen (the plane square, as the evaluation measures: the best is chosen by it).
   REQUIRE(record.size() == 40u);
   auto seen = [&](int it) { return record[2 * static_cast<size_t>((it - 9) / 10) + 1]; };
@@ -173,7 +173,7 @@ TEST_CASE("The pattern rule with end_on best marks each new best check and no ot
   }
   CHECK(start_marked);
   CHECK(marks == 0);
-  CHECK(worse_record.size() == 14u);  // the start and six checks, each as optimised and as seen
+  CHECK(worse_record.size() == 14u);  // the start and six checks, each as optimized and as seen
   // Ending on the last iterate, the start is not measured (the stopping window is unchanged).
   auto last_rule = StoppingRuleRegistry::instance().create(json{{"type", "pattern"}}, "method.convergence");
   last_rule->begin_stage(ex);

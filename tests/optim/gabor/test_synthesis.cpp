@@ -126,7 +126,9 @@ TEST_CASE("Same config and seed give the same output", "[optim][synthesis]") {
 
 TEST_CASE("Bad method parameters are errors naming the key", "[optim][synthesis]") {
   CHECK_THROWS_WITH(gabor(json{{"c1", "big"}}), Catch::Contains("c1"));
-  CHECK_THROWS_WITH(gabor(json{{"optimiser", json{{"type", "adam"}}}}), Catch::Contains("optimiser"));
+  // The British spelling of `optimizer` is an unknown key, not an alias (written in two pieces so
+  // that a spelling pass leaves it as it is).
+  CHECK_THROWS_WITH(gabor(json{{"optim" "iser", json{{"type", "adam"}}}}), Catch::Contains("optim" "iser"));
   auto ex = jittered_grid_points(16, 5);
   SynthesisContext ctx;
   ctx.quick = true;

@@ -30,7 +30,7 @@ OutputShape shape_of(const json& output, const PointSet& ex) {
 }
 
 struct Run {
-  PointSet start;  // the initialisation as the run reports it (init.txt, `--init`)
+  PointSet start;  // the initialization as the run reports it (init.txt, `--init`)
   PointSet output;
   std::vector<std::string> checkpoints;
   json stats;
@@ -177,7 +177,7 @@ TEST_CASE("the exemplar-context border: exact counts inside the rectangle, the p
   const double pad_points = run.stats["frozen_pad_points"].get<double>();
   CHECK(pad_points == Approx(ring * static_cast<double>(ex.size())).epsilon(0.25));
   CHECK(run.stats["canvas_points"].get<double>() == Approx(static_cast<double>(out.size()) + pad_points));
-  // The initialisation it reports is the synthesised points' start (what `--init` takes
+  // The initialization it reports is the synthesized points' start (what `--init` takes
   // back), without the pad.
   CHECK(run.start.class_counts() == out.class_counts());
   for (size_t i = 0; i < run.start.size(); ++i) CHECK(shape.domain().contains(run.start[i], 0.0));
@@ -265,7 +265,7 @@ namespace {
 
 // The pattern along vertical lines of a strip output: per line, the points within 0.25 of it
 // (away from the output's border) against all such points of the output: their density, mean
-// nearest-neighbour distance and share of points closer than 0.3 mean spacings, as ratios
+// nearest-neighbor distance and share of points closer than 0.3 mean spacings, as ratios
 // (density, spacing) or a difference (close share) to the whole strip's.
 struct LineStats {
   double density = 0, spacing = 0, close = 0;

@@ -13,7 +13,7 @@ using namespace ppsynth;
 
 namespace {
 
-// Pulls the moving points towards the centre of the square.
+// Pulls the moving points towards the center of the square.
 class PullToCentre : public PointTerm {
  public:
   explicit PullToCentre(const nlohmann::json&) {}
@@ -24,7 +24,7 @@ class PullToCentre : public PointTerm {
   static inline int classes_seen = 0;
 };
 
-double mean_distance_to_centre(const PointSet& ps) {
+double mean_distance_to_center(const PointSet& ps) {
   double s = 0;
   for (size_t i = 0; i < ps.size(); ++i) s += std::hypot(ps[i].x - 0.5, ps[i].y - 0.5);
   return s / ps.size();
@@ -32,9 +32,9 @@ double mean_distance_to_centre(const PointSet& ps) {
 
 }  // namespace
 
-PPSYNTH_REGISTER(ppsynth::PointTermRegistry, "test_pull_to_centre", (nlohmann::json{{"weight", 0.0}}),
+PPSYNTH_REGISTER(ppsynth::PointTermRegistry, "test_pull_to_center", (nlohmann::json{{"weight", 0.0}}),
                  (nlohmann::json{{"weight", "[0, inf)"}}),
-                 "test only: pulls points to the centre",
+                 "test only: pulls points to the center",
                  [](const nlohmann::json& p) -> std::unique_ptr<ppsynth::PointTerm> {
                    return std::make_unique<PullToCentre>(p);
                  })
@@ -52,17 +52,17 @@ TEST_CASE("A point term registered in a test file acts in a synthesis", "[optim]
   };
   const auto plain = run(nlohmann::json::object());
   PullToCentre::classes_seen = 0;
-  const auto pulled = run({{"test_pull_to_centre", {{"weight", 1000.0}}}});
+  const auto pulled = run({{"test_pull_to_center", {{"weight", 1000.0}}}});
   CHECK(PullToCentre::classes_seen == 2);
-  INFO("plain " << mean_distance_to_centre(plain) << " pulled " << mean_distance_to_centre(pulled));
-  CHECK(mean_distance_to_centre(pulled) < mean_distance_to_centre(plain) - 0.01);
+  INFO("plain " << mean_distance_to_center(plain) << " pulled " << mean_distance_to_center(pulled));
+  CHECK(mean_distance_to_center(pulled) < mean_distance_to_center(plain) - 0.01);
   // weight 0: not created, not run.
   PullToCentre::classes_seen = 0;
-  run({{"test_pull_to_centre", {{"weight", 0.0}}}});
+  run({{"test_pull_to_center", {{"weight", 0.0}}}});
   CHECK(PullToCentre::classes_seen == 0);
 
   CHECK_THROWS_WITH(run({{"no_such_term", {{"weight", 1.0}}}}), Catch::Contains("method.terms.no_such_term") && Catch::Contains("separation"));
-  CHECK_THROWS_WITH(run({{"test_pull_to_centre", {{"weight", 1.0}, {"strength", 2}}}}), Catch::Contains("method.terms.test_pull_to_centre.strength"));
-  CHECK_THROWS_WITH(run({{"test_pull_to_centre", {{"weight", -1.0}}}}), Catch::Contains("method.terms.test_pull_to_centre.weight"));
-  CHECK_THROWS_WITH(run({{"test_pull_to_centre", 3}}), Catch::Contains("method.terms.test_pull_to_centre"));
+  CHECK_THROWS_WITH(run({{"test_pull_to_center", {{"weight", 1.0}, {"strength", 2}}}}), Catch::Contains("method.terms.test_pull_to_center.strength"));
+  CHECK_THROWS_WITH(run({{"test_pull_to_center", {{"weight", -1.0}}}}), Catch::Contains("method.terms.test_pull_to_center.weight"));
+  CHECK_THROWS_WITH(run({{"test_pull_to_center", 3}}), Catch::Contains("method.terms.test_pull_to_center"));
 }

@@ -101,7 +101,7 @@ TEST_CASE("Separation in a synthesis: adds to the loss, bad values name the key"
   FirstLoss plain, separated;
   run(json::object(), plain);
   // fraction 2: twice the exemplar's closest distance (/ u) is more than a Poisson-disk
-  // initialisation's spacing, so the first evaluation already pays for some pairs.
+  // initialization's spacing, so the first evaluation already pays for some pairs.
   run(json{{"terms", {{"separation", {{"weight", 1.0}, {"fraction", 2.0}}}}}}, separated);
   CHECK(separated.first > plain.first);
   FirstLoss unused;
