@@ -6,7 +6,9 @@
 // config name, its default parameters (JSON; the only place those defaults live), the
 // allowed range of each numeric one (core/config/param_bounds.hpp) and a one-line
 // description. Creating it from config merges the user's parameters over the defaults and
-// refuses unknown keys, wrong types and values out of range, naming the key path.
+// refuses unknown keys, wrong types and values out of range, naming the key path; the factory
+// gets that key path too, so that what it refuses itself is named the way the user wrote it
+// ("method.feature_net.kernel_size", not "feature_net.kernel_size").
 #include <functional>
 #include <map>
 #include <memory>
@@ -25,7 +27,9 @@ namespace ppsynth {
 template <class Base, class... Args>
 class Registry {
  public:
-  using Factory = std::function<std::unique_ptr<Base>(const nlohmann::json& params, Args...)>;
+  // params: the defaults merged with the user's, types and ranges checked; key_path: where
+  // they sit in the config ("method.feature_net").
+  using Factory = std::function<std::unique_ptr<Base>(const nlohmann::json& params, const std::string& key_path, Args...)>;
   struct Entry {
     Factory make;
     nlohmann::json defaults;  // every parameter with its default value
@@ -71,6 +75,17 @@ class Registry {
   // Returns the part and fills `resolved` (if given) with the defaults-merged spec.
   std::unique_ptr<Base> create(const nlohmann::json& spec, const std::string& key_path,
                                Args... args, nlohmann::json* resolved = nullptr) const {
+    nlohmann::json merged = resolve(spec, key_path);
+    if (resolved) *resolved = merged;
+    const Entry& e = entries_.at(merged["type"].get<std::string>());
+    merged.erase("type");
+    return e.make(merged, key_path, args...);
+  }
+  // The spec as create() would build from it: its part's defaults merged with the user's
+  // parameters, types and ranges checked, "type" kept. For a caller that needs a parameter's
+  // value (a memory estimate) without building the part: it reads the declared default, never
+  // a copy of it.
+  nlohmann::json resolve(const nlohmann::json& spec, const std::string& key_path) const {
     if (!spec.is_object() || !spec.contains("type") || !spec["type"].is_string())
       throw config_error(key_path, "expected an object with a string \"type\"");
     const std::string type = spec["type"];
@@ -79,11 +94,8 @@ class Registry {
     params.erase("type");
     nlohmann::json merged = apply_defaults(e.defaults, params, key_path);
     check_bounds(merged, e.bounds, key_path);
-    if (resolved) {
-      *resolved = merged;
-      (*resolved)["type"] = type;
-    }
-    return e.make(merged, args...);
+    merged["type"] = type;
+    return merged;
   }
   // Every registered part with its defaults (for `ppsynth config --defaults`).
   nlohmann::json describe() const {

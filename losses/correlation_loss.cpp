@@ -32,11 +32,11 @@ PPSYNTH_REGISTER(ppsynth::LossRegistry, "correlation",
                  (ppsynth::json{{"layers", {2}}, {"weight", 1.0}, {"gradient", "exact"}}),
                  (ppsynth::json{{"layers", "int [0, 15]"}, {"weight", "[0, inf)"}}),
                  "deep-correlation loss (global structure); gradient: exact | published",
-                 [](const ppsynth::json& p) -> std::unique_ptr<ppsynth::FeatureLoss> {
+                 [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::FeatureLoss> {
                    const std::string g = p["gradient"].get<std::string>();
                    ppsynth::CorrelationGradient mode;
                    if (g == "exact") mode = ppsynth::CorrelationGradient::Exact;
                    else if (g == "published") mode = ppsynth::CorrelationGradient::Published;
-                   else throw ppsynth::config_error("correlation.gradient", "expected \"exact\" or \"published\", got \"" + g + "\"");
-                   return std::make_unique<ppsynth::CorrelationLoss>(ppsynth::loss_layers(p, "correlation"), mode);
+                   else throw ppsynth::config_error(key + ".gradient", "expected \"exact\" or \"published\", got \"" + g + "\"");
+                   return std::make_unique<ppsynth::CorrelationLoss>(ppsynth::loss_layers(p, key), mode);
                  })

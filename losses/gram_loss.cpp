@@ -61,6 +61,6 @@ torch::Tensor GramLoss::forward(const Features& out) {
 PPSYNTH_REGISTER(ppsynth::LossRegistry, "gram", (ppsynth::json{{"layers", {0, 1, 2}}, {"weight", 0.08}}),
                  (ppsynth::json{{"layers", "int [0, 15]"}, {"weight", "[0, inf)"}}),
                  "Gram-matrix loss over the listed layers (local structure)",
-                 [](const ppsynth::json& p) -> std::unique_ptr<ppsynth::FeatureLoss> {
-                   return std::make_unique<ppsynth::GramLoss>(ppsynth::loss_layers(p, "gram"));
+                 [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::FeatureLoss> {
+                   return std::make_unique<ppsynth::GramLoss>(ppsynth::loss_layers(p, key));
                  })

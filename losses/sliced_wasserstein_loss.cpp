@@ -67,6 +67,6 @@ class SlicedWassersteinLoss : public FeatureLoss {
 PPSYNTH_REGISTER(ppsynth::LossRegistry, "sliced_wasserstein", (ppsynth::json{{"layers", {0, 1, 2}}, {"weight", 1.0}}),
                  (ppsynth::json{{"layers", "int [0, 15]"}, {"weight", "[0, inf)"}}),
                  "sliced Wasserstein loss on per-pixel features (Heitz et al. 2021; Fig. 14)",
-                 [](const ppsynth::json& p) -> std::unique_ptr<ppsynth::FeatureLoss> {
-                   return std::make_unique<ppsynth::SlicedWassersteinLoss>(ppsynth::loss_layers(p, "sliced_wasserstein"));
+                 [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::FeatureLoss> {
+                   return std::make_unique<ppsynth::SlicedWassersteinLoss>(ppsynth::loss_layers(p, key));
                  })

@@ -64,14 +64,14 @@ class FixedBankNet : public FeatureNet {
 
 }  // namespace
 
-torch::Tensor filter_bank(const std::string& name, int K) {
-  if (K < 3 || K % 2 == 0) throw config_error("feature_net.kernel_size", "must be odd and >= 3");
+torch::Tensor filter_bank(const std::string& name, int K, const std::string& key_path) {
+  if (K < 3 || K % 2 == 0) throw config_error(key_path + ".kernel_size", "must be odd and >= 3");
   std::vector<torch::Tensor> f;
   auto append = [&](std::vector<torch::Tensor> v) { f.insert(f.end(), v.begin(), v.end()); };
   if (name == "gaussian" || name == "all") append(gaussians(K));
   if (name == "sobel" || name == "all") append(sobels(K));
   if (name == "derivative" || name == "all") append(derivatives(K));
-  if (f.empty()) throw config_error("feature_net.bank", "unknown bank '" + name + "' (gaussian, sobel, derivative, all)");
+  if (f.empty()) throw config_error(key_path + ".bank", "unknown bank '" + name + "' (gaussian, sobel, derivative, all)");
   return torch::stack(f).unsqueeze(1);
 }
 
@@ -81,8 +81,8 @@ PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "fixed_bank",
                  (ppsynth::json{{"bank", "all"}, {"kernel_size", 7}, {"depth", 3}, {"instance_norm", true}, {"relu", true}}),
                  (ppsynth::json{{"kernel_size", "int [1, 63]"}, {"depth", "int [1, 16]"}}),
                  "fixed filter banks (Fig. 10): gaussian | sobel | derivative | all",
-                 [](const ppsynth::json& p, int in_channels, uint64_t) -> std::unique_ptr<ppsynth::FeatureNet> {
-                   auto bank = ppsynth::filter_bank(p["bank"].get<std::string>(), ppsynth::get_int(p, "kernel_size", "feature_net"));
-                   return std::make_unique<ppsynth::FixedBankNet>(bank, in_channels, ppsynth::get_int(p, "depth", "feature_net"),
+                 [](const ppsynth::json& p, const std::string& key, int in_channels, uint64_t) -> std::unique_ptr<ppsynth::FeatureNet> {
+                   auto bank = ppsynth::filter_bank(p["bank"].get<std::string>(), p["kernel_size"].get<int>(), key);
+                   return std::make_unique<ppsynth::FixedBankNet>(bank, in_channels, p["depth"].get<int>(),
                                                                  p["instance_norm"], p["relu"]);
                  })

@@ -13,7 +13,8 @@
 
 namespace ppsynth {
 
-// B x 1 x K x K filters of a named bank ("gaussian", "sobel", "derivative", "all").
-torch::Tensor filter_bank(const std::string& name, int kernel_size = 7);
+// B x 1 x K x K filters of a named bank ("gaussian", "sobel", "derivative", "all"); K odd and
+// >= 3. A flaw is a config error naming key_path + ".bank" or ".kernel_size".
+torch::Tensor filter_bank(const std::string& name, int kernel_size, const std::string& key_path);
 
 }  // namespace ppsynth

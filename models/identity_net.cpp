@@ -18,6 +18,6 @@ class IdentityNet : public FeatureNet {
 PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "identity", (ppsynth::json{{"depth", 3}}),
                  (ppsynth::json{{"depth", "int [1, 16]"}}),
                  "no filters: the maps themselves at every layer (Fig. 12b)",
-                 [](const ppsynth::json& p, int, uint64_t) -> std::unique_ptr<ppsynth::FeatureNet> {
-                   return std::make_unique<ppsynth::IdentityNet>(ppsynth::get_int(p, "depth", "feature_net"));
+                 [](const ppsynth::json& p, const std::string& key, int, uint64_t) -> std::unique_ptr<ppsynth::FeatureNet> {
+                   return std::make_unique<ppsynth::IdentityNet>(p["depth"].get<int>());
                  })

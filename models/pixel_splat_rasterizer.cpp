@@ -51,6 +51,6 @@ class PixelSplatRasterizer : public Rasterizer {
 PPSYNTH_REGISTER(ppsynth::RasterizerRegistry, "pixel_splat", (ppsynth::json::object()),
                  ppsynth::json::object(),
                  "bilinear splat of points into pixels (Fig. 12c: random filters only)",
-                 [](const ppsynth::json&, ppsynth::RasterizerArgs a) -> std::unique_ptr<ppsynth::Rasterizer> {
+                 [](const ppsynth::json&, const std::string&, ppsynth::RasterizerArgs a) -> std::unique_ptr<ppsynth::Rasterizer> {
                    return std::make_unique<ppsynth::PixelSplatRasterizer>(a.res);
                  })

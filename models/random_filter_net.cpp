@@ -119,27 +119,29 @@ Features RandomFilterNet::forward(const torch::Tensor& maps) {
 
 }  // namespace ppsynth
 
+// The defaults are RandomFilterNetOptions' own (random_filter_net.hpp), declared there once.
 PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "random",
-                 (ppsynth::json{{"channels", 120}, {"kernel_size", 7}, {"depth", 3},
-                                {"instance_norm", true}, {"relu", true}, {"precision", "float32"}}),
+                 (ppsynth::json{{"channels", ppsynth::RandomFilterNetOptions{}.channels},
+                                {"kernel_size", ppsynth::RandomFilterNetOptions{}.kernel_size},
+                                {"depth", ppsynth::RandomFilterNetOptions{}.depth},
+                                {"instance_norm", ppsynth::RandomFilterNetOptions{}.instance_norm},
+                                {"relu", ppsynth::RandomFilterNetOptions{}.relu},
+                                {"precision", "float32"}}),
                  (ppsynth::json{{"channels", "int [1, 4096]"}, {"kernel_size", "int [1, 63]"}, {"depth", "int [1, 16]"}}),
                  "the paper's random-filter network (Glorot-uniform, frozen)",
-                 [](const ppsynth::json& p, int in_channels, uint64_t seed) -> std::unique_ptr<ppsynth::FeatureNet> {
+                 [](const ppsynth::json& p, const std::string& key, int in_channels, uint64_t seed) -> std::unique_ptr<ppsynth::FeatureNet> {
                    ppsynth::RandomFilterNetOptions o;
                    o.in_channels = in_channels;
-                   o.channels = ppsynth::get_int(p, "channels", "feature_net");
-                   o.kernel_size = ppsynth::get_int(p, "kernel_size", "feature_net");
-                   o.depth = ppsynth::get_int(p, "depth", "feature_net");
+                   o.channels = p["channels"].get<int>();
+                   o.kernel_size = p["kernel_size"].get<int>();
+                   o.depth = p["depth"].get<int>();
                    o.instance_norm = p["instance_norm"];
                    o.relu = p["relu"];
                    o.seed = seed;
                    const ppsynth::NetworkPrecision prec =
-                       ppsynth::resolve_network_precision(p["precision"].get<std::string>(), "method.feature_net.precision");
+                       ppsynth::resolve_network_precision(p["precision"].get<std::string>(), key + ".precision");
                    o.dtype = prec.dtype;
                    o.precision_reason = prec.reason;
-                   if (o.channels < 1) throw ppsynth::config_error("feature_net.channels", "must be >= 1");
-                   if (o.kernel_size < 1 || o.kernel_size % 2 == 0)
-                     throw ppsynth::config_error("feature_net.kernel_size", "must be odd and >= 1");
-                   if (o.depth < 1) throw ppsynth::config_error("feature_net.depth", "must be >= 1");
+                   if (o.kernel_size % 2 == 0) throw ppsynth::config_error(key + ".kernel_size", "must be odd");
                    return std::make_unique<ppsynth::RandomFilterNet>(o);
                  })

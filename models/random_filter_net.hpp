@@ -5,9 +5,10 @@
 //   block2: conv kxk ch->ch stride 2, [IN], [ReLU]                         -> F2 (1/2)
 //   block3: conv kxk ch->ch stride 2, [IN], [ReLU]                         -> F3 (1/4)
 //
-// Defaults: ch = 120, k = 7, instance norm (no affine, eps 1e-5) and ReLU on. Weights
-// Glorot-uniform, biases PyTorch's default conv init, all drawn from the seed. `depth`
-// adds/removes stride-2 blocks (depth 3 = the paper's 4 filtering layers).
+// Defaults: RandomFilterNetOptions below (the registry's defaults are read from it): ch = 120,
+// k = 7, instance norm (no affine, eps 1e-5) and ReLU on. Weights Glorot-uniform, biases
+// PyTorch's default conv init, all drawn from the seed. `depth` adds/removes stride-2 blocks
+// (depth 3 = the paper's 4 filtering layers).
 #include "models/feature_net.hpp"
 
 namespace ppsynth {

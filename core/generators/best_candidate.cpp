@@ -61,7 +61,7 @@ PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "best_candidate",
                  (nlohmann::json{{"m", "(0, 10000]"}, {"margin", "[0, 0.5)"}}),
                  "Mitchell best-candidate (toroidal distances, m * count candidates; margin 0.01 = "
                  "the published initialization's [0.01, 0.99]^2)",
-                 [](const nlohmann::json& p) {
+                 [](const nlohmann::json& p, const std::string& key) {
                    auto g = std::make_unique<ppsynth::BestCandidateGen>();
                    g->opt.m = p["m"].get<double>();
                    g->opt.margin = p["margin"].get<double>();

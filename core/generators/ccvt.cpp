@@ -143,7 +143,7 @@ PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "ccvt",
                  (nlohmann::json{{"points_per_site", 1024}, {"max_iterations", 300}, {"neighbor_sites", 6}}),
                  (nlohmann::json{{"points_per_site", "int [1, 1000000]"}, {"max_iterations", "int [0, inf)"}, {"neighbor_sites", "int [1, 1000]"}}),
                  "capacity-constrained Voronoi tessellation (Balzer et al. 2009), discrete, toroidal",
-                 [](const nlohmann::json& p) {
+                 [](const nlohmann::json& p, const std::string& key) {
                    auto g = std::make_unique<ppsynth::CcvtGen>();
                    g->opt.points_per_site = p["points_per_site"].get<int>();
                    g->opt.max_iterations = p["max_iterations"].get<int>();

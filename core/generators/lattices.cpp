@@ -126,7 +126,7 @@ struct HexGen : PointGenerator {
 
 PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "jittered_grid", (nlohmann::json{{"jitter", 1.0}}),
                  (nlohmann::json{{"jitter", "[0, 1]"}}),
-                 "one uniform point per grid cell (jitter 1 = whole cell)", [](const nlohmann::json& p) {
+                 "one uniform point per grid cell (jitter 1 = whole cell)", [](const nlohmann::json& p, const std::string& key) {
                    auto g = std::make_unique<ppsynth::JitteredGen>();
                    g->jitter = p["jitter"].get<double>();
                    return g;
@@ -134,11 +134,11 @@ PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "jittered_grid", (nlohmann::json{{"
 PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "regular_grid", nlohmann::json::object(),
                  nlohmann::json::object(),
                  "cell centers of a regular grid",
-                 [](const nlohmann::json&) { return std::make_unique<ppsynth::RegularGen>(); })
+                 [](const nlohmann::json&, const std::string&) { return std::make_unique<ppsynth::RegularGen>(); })
 PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "hexagonal_lattice", (nlohmann::json{{"random_offset", false}}),
                  nlohmann::json::object(),
                  "hexagonal (triangular) lattice with torus-compatible spacing; point count close to n",
-                 [](const nlohmann::json& p) {
+                 [](const nlohmann::json& p, const std::string& key) {
                    auto g = std::make_unique<ppsynth::HexGen>();
                    g->random_offset = p["random_offset"].get<bool>();
                    return g;

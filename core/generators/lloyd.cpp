@@ -61,7 +61,7 @@ PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "lloyd",
                  (nlohmann::json{{"iterations", 10}, {"samples_per_point", 64}}),
                  (nlohmann::json{{"iterations", "int [0, 100000]"}, {"samples_per_point", "int [1, 100000]"}}),
                  "toroidal Lloyd relaxation of uniform points (sampled Voronoi cells)",
-                 [](const nlohmann::json& p) {
+                 [](const nlohmann::json& p, const std::string& key) {
                    auto g = std::make_unique<ppsynth::LloydGen>();
                    g->opt.iterations = p["iterations"].get<int>();
                    g->opt.samples_per_point = p["samples_per_point"].get<int>();

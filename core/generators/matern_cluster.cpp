@@ -63,7 +63,7 @@ PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "matern_cluster",
                  (nlohmann::json{{"parent_intensity", 0.0}, {"mean_children", 8.0}, {"radius", 0.05}}),
                  (nlohmann::json{{"parent_intensity", "[0, inf)"}, {"mean_children", "(0, inf)"}, {"radius", "(0, 0.5]"}}),
                  "Matern cluster process conditioned on n points (parent_intensity 0 = n / mean_children)",
-                 [](const nlohmann::json& p) {
+                 [](const nlohmann::json& p, const std::string& key) {
                    auto g = std::make_unique<ppsynth::MaternGen>();
                    g->opt.parent_intensity = p["parent_intensity"].get<double>();
                    g->opt.mean_children = p["mean_children"].get<double>();

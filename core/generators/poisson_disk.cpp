@@ -62,7 +62,7 @@ PPSYNTH_REGISTER(
     (nlohmann::json{{"radius", 0.0}, {"relative_radius", 0.65}, {"max_attempts", 100000}, {"require_all", false}}),
     (nlohmann::json{{"radius", "[0, 0.5]"}, {"relative_radius", "[0, 1]"}, {"max_attempts", "int [1, 1000000000]"}}),
     "dart-throwing Poisson disk (minimum distance `radius`, or relative_radius * 2 r_max when radius = 0)",
-    [](const nlohmann::json& p) {
+    [](const nlohmann::json& p, const std::string& key) {
       auto g = std::make_unique<ppsynth::PoissonDiskGen>();
       g->opt.radius = p["radius"].get<double>();
       g->opt.relative_radius = p["relative_radius"].get<double>();

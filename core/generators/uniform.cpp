@@ -29,4 +29,4 @@ struct UniformGen : PointGenerator {
 PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "uniform", nlohmann::json::object(),
                  nlohmann::json::object(),
                  "uniform random points (white noise)",
-                 [](const nlohmann::json&) { return std::make_unique<ppsynth::UniformGen>(); })
+                 [](const nlohmann::json&, const std::string&) { return std::make_unique<ppsynth::UniformGen>(); })

@@ -10,6 +10,7 @@
 #include "core/log.hpp"
 #include "core/run_directory.hpp"
 #include "core/run_json.hpp"
+#include "optim/run/checkpoint_store.hpp"
 #include "optim/run/run_synthesis.hpp"
 
 namespace fs = std::filesystem;
@@ -98,7 +99,7 @@ RowState run_sweep_task(const std::string& sweep_dir, const std::string& row_id,
         spdlog::info("[{}] {} is done already", row.id, row.label);
         return RowState::Done;
       case RunDirState::Unfinished:
-        if (fs::exists(dir + "/checkpoint.bin")) {
+        if (CheckpointStore(checkpoint_file_in(dir)).exists()) {
           spdlog::info("[{}] resuming {}", row.id, row.label);
           resume_synthesis(dir, req);
           break;

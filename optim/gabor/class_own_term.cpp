@@ -43,6 +43,6 @@ torch::Tensor ClassOwnMapTerm::evaluate(const torch::Tensor& moving, const torch
 PPSYNTH_REGISTER(ppsynth::MapTermRegistry, "class_own", (nlohmann::json{{"weight", 0.0}}),
                  (nlohmann::json{{"weight", "[0, inf)"}}),
                  "from the second class on, the loss on the moving class's own maps vs the exemplar class's own",
-                 [](const nlohmann::json&) -> std::unique_ptr<ppsynth::MapTerm> {
+                 [](const nlohmann::json&, const std::string&) -> std::unique_ptr<ppsynth::MapTerm> {
                    return std::make_unique<ppsynth::ClassOwnMapTerm>();
                  })

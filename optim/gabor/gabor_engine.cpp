@@ -74,11 +74,7 @@ PointSet initial_output(const PointSet& ex, const SynthesisContext& ctx, const I
       if (start.size() != n)
         throw InputError("the initialization has " + std::to_string(start.size()) + " points of class " +
                          std::to_string(c) + "; the synthesis needs " + std::to_string(n));
-      for (size_t i = 0; i < n; ++i)
-        if (!area.contains(start[i]))
-          throw InputError("the initialization's point " + std::to_string(i + 1) + " of class " + std::to_string(c) +
-                           " lies outside the synthesis domain [" + std::to_string(area.x0) + ", " + std::to_string(area.x1) +
-                           "] x [" + std::to_string(area.y0) + ", " + std::to_string(area.y1) + "]");
+      check_initialization_inside(start, area, "gabor (class " + std::to_string(c) + ")", "the synthesis domain");
     } else if (!shape.rectangle) {
       start = init.initialize(n, c, ctx.seed + 1000003ull * (c + 1), canvas);
     } else {

@@ -255,10 +255,13 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   }
   {  // one iteration keeps the output grid's maps and every layer's activations and gradients
     const double cells = std::pow(static_cast<double>(s.out_res), 2);
-    auto number_or = [&](const char* key, double fallback) {  // the net's own registry checks the types later
-      return s.feature_net.contains(key) && s.feature_net[key].is_number() ? s.feature_net[key].get<double>() : fallback;
-    };
-    const double in_ch = 10.0 * (1 + s.attr_cols.size()), net_ch = number_or("channels", 120), layers = number_or("depth", 3);
+    // The network's parameters as its registry resolves them (its declared defaults under the
+    // user's). A network without `channels` is costed as the largest fixed bank's (12 filters
+    // per input map; identity: 1), so the estimate never falls short.
+    const json net = FeatureNetRegistry::instance().resolve(s.feature_net, "method.feature_net");
+    const double in_ch = 10.0 * (1 + s.attr_cols.size());
+    const double net_ch = net.contains("channels") ? net["channels"].get<double>() : 12 * in_ch;
+    const double layers = net.contains("depth") ? net["depth"].get<double>() : 1;
     check_memory(cells * 4.0 * (3 * in_ch + 6 * net_ch * layers + s.k * in_ch),
                  "an output grid of " + std::to_string(s.out_res) + " x " + std::to_string(s.out_res) +
                      (shape.rectangle ? " (method.window.pixels)"

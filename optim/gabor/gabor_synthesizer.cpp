@@ -14,6 +14,6 @@ PointSet GaborSynthesizer::synthesize(const PointSet& exemplar, const SynthesisC
 PPSYNTH_REGISTER(ppsynth::MethodRegistry, "gabor", ppsynth::gabor_defaults(),
                  ppsynth::gabor_bounds(),
                  "Huang et al. 2022: Gabor maps + random filters + Gram/correlation losses",
-                 [](const ppsynth::json& p) -> std::unique_ptr<ppsynth::SynthesisMethod> {
+                 [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::SynthesisMethod> {
                    return std::make_unique<ppsynth::GaborSynthesizer>(p);
                  })

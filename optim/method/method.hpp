@@ -69,16 +69,35 @@ class SynthesisInterrupted : public std::runtime_error {
   SynthesisInterrupted() : std::runtime_error("interrupted; the last checkpoint holds the state") {}
 };
 
-// Everything a method gets besides its own parameters.
-struct SynthesisContext {
+// What the caller of a synthesis gives besides its config (the command, Python, bench, tests:
+// synthesize() in optim/run/synthesize.hpp), and what the method gets of it as part of its
+// SynthesisContext: one type, declared once.
+struct SynthesisOptions {
+  bool quick = false;                          // tiny grids, few iterations (tests, --quick)
+  std::vector<SynthesisObserver*> observers;   // told of every stage and iteration
+  // An explicit initialization, else the config's init_file, else the method's initializer.
+  const PointSet* initialization = nullptr;
+  // Checkpoints, for methods that can resume (SynthesisMethod::can_resume). The method hands
+  // its state as opaque bytes to `save_checkpoint` at every stage boundary and at least every
+  // `checkpoint_seconds` of wall time (SynthesisContext); the run layer stores them. With
+  // `resume_state` (bytes from an earlier save_checkpoint of the same config, seed and
+  // exemplar) it continues from there instead of starting; a resume_state of another
+  // synthesis, or a damaged one, is a CheckpointError (core/checkpoint_file.hpp) naming
+  // `resume_source`, before any work. When `stop` becomes true (a signal), it saves a
+  // checkpoint at the end of the current iteration and throws SynthesisInterrupted.
+  std::function<void(const std::string& state)> save_checkpoint;
+  const std::string* resume_state = nullptr;
+  std::string resume_source = "checkpoint";
+  const std::atomic<bool>* stop = nullptr;
+};
+
+// Everything a method gets besides its own parameters: the caller's options and what the run
+// layer resolved from the config.
+struct SynthesisContext : SynthesisOptions {
   uint64_t seed = 95;
   // The output's size and shape (core/output_shape.hpp): the paper's u x u unit square, or
   // a rectangle in exemplar units (every method returns a PointSet on output.domain()).
   OutputShape output;
-  std::vector<SynthesisObserver*> observers;
-  // Optional explicit initialization (else the method's own initializer runs).
-  const PointSet* initialization = nullptr;
-  bool quick = false;  // tiny grids and few iterations (tests, --quick)
   // Where a method built on LibTorch keeps its tensors: "cpu" or "cuda:N", the config's
   // runtime.device resolved and checked (optim/run/runtime.hpp); whether float32 products
   // there run on TF32 tensor cores and whether CUDA picks deterministic algorithms (both
@@ -90,21 +109,12 @@ struct SynthesisContext {
   // stage, wall time per phase, resolved settings such as the grid and sigmas).
   nlohmann::json* stats = nullptr;
 
-  // Checkpoints, for methods that can resume (SynthesisMethod::can_resume). The method hands
-  // its state as opaque bytes to `save_checkpoint` at every stage boundary and at least every
-  // `checkpoint_seconds` of wall time; the run layer stores them. With `resume_state` (bytes
-  // from an earlier save_checkpoint of the same config, seed and exemplar) it continues from
-  // there instead of starting. When `stop` becomes true (a signal), it saves a checkpoint at
-  // the end of the current iteration and throws SynthesisInterrupted.
-  std::function<void(const std::string& state)> save_checkpoint;
+  // The checkpoints' interval (SynthesisOptions::save_checkpoint), and which synthesis they
+  // belong to (core/checkpoint_file.hpp's key: resolved config, seed, exemplar, quick, method
+  // version): written into every checkpoint and compared with resume_state's. Null: neither
+  // (a method tested on its own).
   double checkpoint_seconds = 60;
-  const std::string* resume_state = nullptr;
-  std::string resume_source = "checkpoint";  // names resume_state in errors (its file)
-  // Which synthesis the checkpoints belong to (core/checkpoint_file.hpp's key: resolved
-  // config, seed, exemplar, quick, method version): written into every checkpoint and compared
-  // with resume_state's. Null: neither (a method tested on its own).
   nlohmann::json checkpoint_key;
-  const std::atomic<bool>* stop = nullptr;
 
   bool stop_requested() const { return stop && stop->load(); }
   // Long work between iterations calls this often (cheap: it looks at the clock); at most
@@ -142,5 +152,13 @@ class SynthesisMethod {
 
 // {"type": "gabor" | "roveri2015" | "pcf2017" | ..., params...}
 using MethodRegistry = Registry<SynthesisMethod>;
+
+// Refuses an explicit initialization (SynthesisContext::initialization) with a point outside
+// `area`, where the method moves its points: an InputError naming the point (1-based), its
+// position and the area. `method` begins the message ("pcf2017"); `area_name` says what the
+// area is ("the synthesis canvas (the output rectangle in exemplar units, plus the clean
+// border's pad)").
+void check_initialization_inside(const PointSet& init, const Domain& area, const std::string& method,
+                                 const std::string& area_name);
 
 }  // namespace ppsynth

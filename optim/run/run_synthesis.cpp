@@ -17,6 +17,7 @@
 #include "core/run_directory.hpp"
 #include "core/run_json.hpp"
 #include "core/shell_quote.hpp"
+#include "optim/run/checkpoint_store.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/run/run_observers.hpp"
 #include "optim/run/synthesize.hpp"
@@ -26,8 +27,6 @@ namespace fs = std::filesystem;
 namespace ppsynth {
 
 namespace {
-
-const char* kCheckpoint = "checkpoint.bin";
 
 long long unix_now() { return static_cast<long long>(std::time(nullptr)); }
 
@@ -61,16 +60,12 @@ RunOutcome execute(RunOutcome o, RunDirectory& dir, const std::string& name, con
   options.quick = req.quick;
   options.observers = {&progress, &losses, &snaps, &marker_progress};
   options.observers.insert(options.observers.end(), req.observers.begin(), req.observers.end());
-  bool checkpointed = resume_state != nullptr;
-  options.save_checkpoint = [&](const std::string& bytes) {
-    AtomicFile f(o.dir + "/" + kCheckpoint, std::ios::binary);
-    f.stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    f.commit();
-    checkpointed = true;
-    dir.mark_progress({{"checkpointed", unix_now()}});
-  };
+  CheckpointStore checkpoints(checkpoint_file_in(o.dir));
+  options.save_checkpoint = checkpoints.saver([&] { dir.mark_progress({{"checkpointed", unix_now()}}); });
   options.resume_state = resume_state;
-  options.resume_source = o.dir + "/" + kCheckpoint;
+  options.resume_source = checkpoints.file();
+  // Something to resume from: the checkpoint this run continues, or one it saved.
+  auto checkpointed = [&] { return resume_state != nullptr || checkpoints.saved(); };
   options.stop = req.stop;
   const OutputShape shape = resolve_output_shape(r, o.exemplar);
   spdlog::info("[{}] {} points, {} classes -> {:.0f} points, {} ({}), seed {}", name, o.exemplar.size(), o.exemplar.num_classes(),
@@ -85,15 +80,14 @@ RunOutcome execute(RunOutcome o, RunDirectory& dir, const std::string& name, con
     write_run_outputs(o, name, req.quick, losses, res.seconds, t0);
     dir.mark_complete({{"seed", r["seed"]}});
   } catch (const SynthesisInterrupted&) {
-    if (checkpointed) throw RunInterrupted(o.dir);  // the checkpoint stays for --resume
+    if (checkpointed()) throw RunInterrupted(o.dir);  // the checkpoint stays for --resume
     dir.discard();  // stopped before its first checkpoint: nothing to resume, nothing kept
     throw RunInterrupted("");
   } catch (...) {
-    if (!checkpointed) dir.discard();  // nothing to resume from: leave nothing behind
+    if (!checkpointed()) dir.discard();  // nothing to resume from: leave nothing behind
     throw;
   }
-  std::error_code ec;
-  fs::remove(o.dir + "/" + kCheckpoint, ec);  // a finished run needs no checkpoint
+  checkpoints.remove();  // a finished run needs no checkpoint
   spdlog::info("[{}] wrote {} ({:.1f} s)", name, o.dir, o.seconds);
   return o;
 }
@@ -154,12 +148,13 @@ RunOutcome resume_synthesis(const std::string& path, const RunRequest& req) {
   const nlohmann::json marker = run_dir_marker(dir.path());
   RunOutcome o;
   o.config = read_resolved_run_config(dir.path() + "/config.json");
-  const std::string checkpoint = dir.path() + "/" + kCheckpoint;
-  if (!fs::exists(checkpoint))
+  const CheckpointStore checkpoints(checkpoint_file_in(dir.path()));
+  const std::string& checkpoint = checkpoints.file();
+  if (!checkpoints.exists())
     throw InputError("--resume " + dir.path() + ": no checkpoint (the run stopped before its first one, or its method (" +
                      o.config["method"]["type"].get<std::string>() + ") cannot resume)" + afresh_hint(dir.path()));
   o.exemplar = load_exemplar(o.config);
-  const std::string bytes = read_file_text(checkpoint);
+  const std::string bytes = checkpoints.load();
   RunRequest r = req;
   r.quick = marker.value("quick", false);
   try {  // refused before anything runs or prints

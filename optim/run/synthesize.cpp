@@ -93,9 +93,12 @@ SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec,
   check_synthesis_size(spec, exemplar);
   auto method = MethodRegistry::instance().create(spec["method"], "method");
   SynthesisContext ctx;
+  // The caller's options as they are, but a method that cannot resume neither checkpoints nor
+  // stops at a signal (it runs to its end; the run layer says so).
+  static_cast<SynthesisOptions&>(ctx) = options;
+  if (!method->can_resume()) ctx.save_checkpoint = nullptr, ctx.resume_state = nullptr, ctx.stop = nullptr;
   ctx.seed = spec["seed"].get<uint64_t>();
   ctx.output = resolve_output_shape(spec, exemplar);
-  ctx.quick = options.quick;
   // A config resolved before "runtime" existed (an older run directory's) runs on the CPU.
   const DeviceSettings device = apply_device_settings(spec.value("runtime", runtime_defaults()));
   ctx.device = device.device;
@@ -104,17 +107,12 @@ SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec,
   const auto from_file = options.initialization ? std::nullopt : load_initialization(spec);
   ctx.initialization = options.initialization ? options.initialization : from_file ? &*from_file : nullptr;
   InitialRecorder initial;
-  ctx.observers = options.observers;
   ctx.observers.push_back(&initial);
   SynthesisResult r;
   ctx.stats = &r.stats;
   if (method->can_resume()) {
-    ctx.save_checkpoint = options.save_checkpoint;
     ctx.checkpoint_seconds = spec["checkpoint_seconds"].get<double>();
-    ctx.resume_state = options.resume_state;
-    ctx.resume_source = options.resume_source;
     ctx.checkpoint_key = checkpoint_key(spec, exemplar, options.quick);
-    ctx.stop = options.stop;
     if (options.resume_state) check_checkpoint(*options.resume_state, options.resume_source, ctx.checkpoint_key);
   } else if (options.resume_state) {
     throw InputError("the method " + spec["method"].value("type", std::string("?")) + " cannot resume a checkpoint");

@@ -37,23 +37,6 @@ struct SynthesisResult {
   double seconds = 0;                // wall time of the synthesis (metrics excluded), over every process of a resumed run
 };
 
-struct SynthesisOptions {
-  bool quick = false;                          // tiny grids, few iterations (tests, --quick)
-  std::vector<SynthesisObserver*> observers;   // told of every stage and iteration
-  const PointSet* initialization = nullptr;    // else the spec's init_file, else the method's initializer
-  // Checkpoints, for methods that can resume (can_resume): the method hands its state to
-  // save_checkpoint at every stage boundary and every spec "checkpoint_seconds"; with
-  // resume_state (bytes of an earlier save of the same spec, seed and exemplar) it continues
-  // from there; when *stop turns true it saves and throws SynthesisInterrupted.
-  // Checkpoints carry the key of their synthesis (checkpoint_key); a resume_state of another
-  // synthesis, or a damaged one, is a CheckpointError (core/checkpoint_file.hpp) naming
-  // `resume_source`, before any work.
-  std::function<void(const std::string& state)> save_checkpoint;
-  const std::string* resume_state = nullptr;
-  std::string resume_source = "checkpoint";
-  const std::atomic<bool>* stop = nullptr;
-};
-
 // Runs the spec's method on `exemplar`. Same spec, seed, exemplar and thread count give the
 // same output, bit for bit, resumed or not. Errors are InputError naming the key.
 SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec, const SynthesisOptions& options = {});

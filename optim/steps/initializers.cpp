@@ -8,10 +8,6 @@
 namespace ppsynth {
 namespace {
 
-void check_margin(double margin) {
-  if (!(margin >= 0 && margin < 0.5)) throw config_error("method.init.margin", "must be in [0, 0.5)");
-}
-
 // `d` shrunk by `margin` (a fraction of its width and height) on every side.
 Domain inset(const Domain& d, double margin) {
   return Domain{d.x0 + margin * d.width(), d.y0 + margin * d.height(), d.x1 - margin * d.width(), d.y1 - margin * d.height()};
@@ -33,7 +29,7 @@ class BestCandidateInit : public Initializer {
 
 class UniformInit : public Initializer {
  public:
-  explicit UniformInit(double margin) : margin_(margin) { check_margin(margin); }
+  explicit UniformInit(double margin) : margin_(margin) {}  // in [0, 0.5): the registry's bound
   PointSet initialize(size_t n, int, uint64_t seed, const Domain& d) const override {
     return uniform_points(n, seed, inset(d, margin_));
   }
@@ -60,24 +56,22 @@ class GeneratorInit : public Initializer {
 PPSYNTH_REGISTER(ppsynth::InitializerRegistry, "best_candidate", (ppsynth::json{{"m", 10.0}, {"margin", 0.01}}),
                  (ppsynth::json{{"m", "(0, 10000]"}, {"margin", "[0, 0.5)"}}),
                  "toroidal best-candidate Poisson disk in [margin, 1-margin]^2 (the paper's)",
-                 [](const ppsynth::json& p) -> std::unique_ptr<ppsynth::Initializer> {
+                 [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::Initializer> {
                    ppsynth::BestCandidateOptions o;
-                   o.m = ppsynth::get_number(p, "m", "method.init");
-                   o.margin = ppsynth::get_number(p, "margin", "method.init");
-                   if (!(o.m > 0)) throw ppsynth::config_error("method.init.m", "must be > 0");
-                   ppsynth::check_margin(o.margin);
+                   o.m = p["m"].get<double>();
+                   o.margin = p["margin"].get<double>();
                    return std::make_unique<ppsynth::BestCandidateInit>(o);
                  })
 PPSYNTH_REGISTER(ppsynth::InitializerRegistry, "uniform", (ppsynth::json{{"margin", 0.01}}),
                  (ppsynth::json{{"margin", "[0, 0.5)"}}),
                  "uniform random positions (the supplement: random initialization works too)",
-                 [](const ppsynth::json& p) -> std::unique_ptr<ppsynth::Initializer> {
-                   return std::make_unique<ppsynth::UniformInit>(ppsynth::get_number(p, "margin", "method.init"));
+                 [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::Initializer> {
+                   return std::make_unique<ppsynth::UniformInit>(p["margin"].get<double>());
                  })
 PPSYNTH_REGISTER(ppsynth::InitializerRegistry, "generator", (ppsynth::json{{"generator", {{"type", "jittered_grid"}}}}),
                  ppsynth::json::object(),
                  "any registered point generator",
-                 [](const ppsynth::json& p) -> std::unique_ptr<ppsynth::Initializer> {
+                 [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::Initializer> {
                    return std::make_unique<ppsynth::GeneratorInit>(p["generator"]);
                  })
 PPSYNTH_DEFAULTS_KIND("initializer", ppsynth::InitializerRegistry)

@@ -43,7 +43,7 @@ PPSYNTH_REGISTER(ppsynth::StoppingRuleRegistry, "loss",
                  (ppsynth::json{{"window", "int [1, 1000000000]"}, {"check_every", "int [1, 1000000000]"},
                                 {"threshold", "[0, inf)"}}),
                  "the paper's rule: the loss fell by less than `threshold` of the stage's decrease over the last `window` iterations",
-                 [](const ppsynth::json& p) -> std::unique_ptr<ppsynth::StoppingRule> {
+                 [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::StoppingRule> {
                    return std::make_unique<ppsynth::LossStoppingRule>(p["window"].get<int>(), p["check_every"].get<int>(),
                                                                       p["threshold"].get<double>());
                  })

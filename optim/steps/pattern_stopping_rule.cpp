@@ -113,13 +113,13 @@ PPSYNTH_REGISTER(ppsynth::StoppingRuleRegistry, "pattern",
                  (ppsynth::json{{"window", "int [1, 1000000000]"}, {"check_every", "int [1, 1000000000]"},
                                 {"threshold", "[0, 1]"}, {"min_iterations", "int [0, 1000000000]"}}),
                  "stop when the PCF MSE of the stage's points to the exemplar's has not improved by `threshold` (relative) in `window` iterations; end_on: last | best (the stage ends on its best checked iterate); best_by: output (the points as one rectangle) | crops (20 exemplar-sized crops: the pattern away from the border)",
-                 [](const ppsynth::json& p) -> std::unique_ptr<ppsynth::StoppingRule> {
+                 [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::StoppingRule> {
                    const std::string end_on = p["end_on"].get<std::string>();
                    if (end_on != "last" && end_on != "best")
-                     throw ppsynth::config_error("method.convergence.end_on", "expected \"last\" or \"best\", got \"" + end_on + "\"");
+                     throw ppsynth::config_error(key + ".end_on", "expected \"last\" or \"best\", got \"" + end_on + "\"");
                    const std::string best_by = p["best_by"].get<std::string>();
                    if (best_by != "output" && best_by != "crops")
-                     throw ppsynth::config_error("method.convergence.best_by", "expected \"output\" or \"crops\", got \"" + best_by + "\"");
+                     throw ppsynth::config_error(key + ".best_by", "expected \"output\" or \"crops\", got \"" + best_by + "\"");
                    return std::make_unique<ppsynth::PatternStoppingRule>(p["window"].get<int>(), p["check_every"].get<int>(),
                                                                          p["threshold"].get<double>(),
                                                                          p["min_iterations"].get<int>(),

@@ -179,14 +179,14 @@ class LbfgsPositions : public PositionOptimizer {
 PPSYNTH_REGISTER(ppsynth::OptimizerRegistry, "adam", (ppsynth::json{{"lr", {0.005, 0.002, 0.002, 0.002}}}),
                  (ppsynth::json{{"lr", "(0, inf)"}}),
                  "Adam, fresh state per stage; lr per sigma (published: 0.005, 0.002, 0.002, 0.002)",
-                 [](const ppsynth::json& p, torch::Tensor params, int s) -> std::unique_ptr<ppsynth::PositionOptimizer> {
-                   return std::make_unique<ppsynth::AdamPositions>(params, ppsynth::learning_rate_for(p, s, "optimizer"));
+                 [](const ppsynth::json& p, const std::string& key, torch::Tensor params, int s) -> std::unique_ptr<ppsynth::PositionOptimizer> {
+                   return std::make_unique<ppsynth::AdamPositions>(params, ppsynth::learning_rate_for(p, s, key));
                  })
 PPSYNTH_REGISTER(ppsynth::OptimizerRegistry, "lbfgs", (ppsynth::json{{"lr", {0.5, 0.2, 0.2, 0.2}}, {"max_iter", 20}}),
                  (ppsynth::json{{"lr", "(0, inf)"}, {"max_iter", "int [1, 10000]"}}),
                  "L-BFGS (published: lr 100x Adam's); one step = up to max_iter evaluations",
-                 [](const ppsynth::json& p, torch::Tensor params, int s) -> std::unique_ptr<ppsynth::PositionOptimizer> {
-                   return std::make_unique<ppsynth::LbfgsPositions>(params, ppsynth::learning_rate_for(p, s, "optimizer"),
-                                                                   ppsynth::get_int(p, "max_iter", "optimizer"));
+                 [](const ppsynth::json& p, const std::string& key, torch::Tensor params, int s) -> std::unique_ptr<ppsynth::PositionOptimizer> {
+                   return std::make_unique<ppsynth::LbfgsPositions>(params, ppsynth::learning_rate_for(p, s, key),
+                                                                   p["max_iter"].get<int>());
                  })
 PPSYNTH_DEFAULTS_KIND("optimizer", ppsynth::OptimizerRegistry)

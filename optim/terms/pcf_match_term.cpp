@@ -120,6 +120,6 @@ class PcfMatchPointTerm : public PointTerm {
 PPSYNTH_REGISTER(ppsynth::PointTermRegistry, "pcf_match", (nlohmann::json{{"weight", 0.0}, {"cross", true}}),
                  (nlohmann::json{{"weight", "[0, inf)"}}),
                  "the moving class's PCF (and cross-PCFs to the frozen classes) on the output torus vs the exemplar's",
-                 [](const nlohmann::json& p) -> std::unique_ptr<ppsynth::PointTerm> {
+                 [](const nlohmann::json& p, const std::string& key) -> std::unique_ptr<ppsynth::PointTerm> {
                    return std::make_unique<ppsynth::PcfMatchPointTerm>(p);
                  })

@@ -72,9 +72,7 @@ namespace {
 // The registered form: builds the stage's thresholds at each class stage.
 class SeparationPointTerm : public PointTerm {
  public:
-  explicit SeparationPointTerm(const nlohmann::json& p) : fraction_(p["fraction"].get<double>()) {
-    if (!(fraction_ > 0 && fraction_ <= 2)) throw config_error("method.terms.separation.fraction", "must be in (0, 2]");
-  }
+  explicit SeparationPointTerm(const nlohmann::json& p) : fraction_(p["fraction"].get<double>()) {}
   void begin_class(const ClassStage& s) override {
     term_ = std::make_unique<SeparationTerm>(s.exemplar, s.output, s.moving, s.frozen, s.upscale, fraction_, s.device);
   }
@@ -92,8 +90,8 @@ class SeparationPointTerm : public PointTerm {
 }  // namespace ppsynth
 
 PPSYNTH_REGISTER(ppsynth::PointTermRegistry, "separation", (nlohmann::json{{"weight", 0.0}, {"fraction", 0.9}}),
-                 (nlohmann::json{{"weight", "[0, inf)"}, {"fraction", "[0, inf)"}}),
+                 (nlohmann::json{{"weight", "[0, inf)"}, {"fraction", "(0, 2]"}}),
                  "soft minimum distance: fraction x the exemplar's closest pair per class pair / u (at least r_i + r_j)",
-                 [](const nlohmann::json& p) -> std::unique_ptr<ppsynth::PointTerm> {
+                 [](const nlohmann::json& p, const std::string& key) -> std::unique_ptr<ppsynth::PointTerm> {
                    return std::make_unique<ppsynth::SeparationPointTerm>(p);
                  })

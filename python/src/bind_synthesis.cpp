@@ -13,7 +13,6 @@
 
 #include "bindings.hpp"
 #include "json_python.hpp"
-#include "core/atomic_file.hpp"
 #include "core/checkpoint_file.hpp"
 #include "core/config/config.hpp"
 #include "core/error.hpp"
@@ -22,6 +21,7 @@
 #include "core/processor.hpp"
 #include "core/run_directory.hpp"
 #include "core/run_json.hpp"
+#include "optim/run/checkpoint_store.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/run/run_observers.hpp"
 #include "optim/run/run_synthesis.hpp"
@@ -119,24 +119,20 @@ class CheckpointDir {
     o.resume = run_dir_state(normalize_output_dir(dir, o.option)) == RunDirState::Unfinished;
     dir_ = std::make_unique<RunDirectory>(RunDirectory::open(dir, o));
     for (const auto& e : fs::directory_iterator(dir_->path()))
-      if (const std::string name = e.path().filename().string(); name != ".ppsynth-run" && name != "checkpoint.bin")
+      if (const std::string name = e.path().filename().string(); name != ".ppsynth-run" && name != fs::path(checkpoint_file_in("")).filename())
         throw InputError("checkpoint_dir " + dir_->path() + ": holds " + name + ", which ppsynth did not write there; "
                          "name a folder of the checkpoint's own (new or empty)");
     if (!o.resume) dir_->mark_running({{"made_folder", dir_->created()}});
     made_folder_ = run_dir_marker(dir_->path()).value("made_folder", false);
+    store_ = std::make_unique<CheckpointStore>(checkpoint_file_in(dir_->path()));
   }
   const std::string& path() const { return dir_->path(); }
-  std::string bin() const { return dir_->path() + "/checkpoint.bin"; }
+  CheckpointStore& store() { return *store_; }
 
   // The bytes of its checkpoint, or nullopt when there is none yet.
   std::optional<std::string> load() const {
-    if (!fs::exists(bin())) return std::nullopt;
-    return read_file_text(bin());
-  }
-  void save(const std::string& bytes) {
-    AtomicFile f(bin(), std::ios::binary);
-    f.stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    f.commit();
+    if (!store_->exists()) return std::nullopt;
+    return store_->load();
   }
   // A finished synthesis needs no checkpoint: the marker and checkpoint.bin go (the folder
   // holds nothing else), and the folder too when ppsynth made it.
@@ -148,6 +144,7 @@ class CheckpointDir {
 
  private:
   std::unique_ptr<RunDirectory> dir_;
+  std::unique_ptr<CheckpointStore> store_;
   bool made_folder_ = false;
 };
 
@@ -212,8 +209,8 @@ py::dict synthesize_in_memory(const py::dict& exemplar_py, const py::object& con
     checkpoints = std::make_unique<CheckpointDir>(checkpoint_dir);
     resume_state = checkpoints->load();
     options.resume_state = resume_state ? &*resume_state : nullptr;
-    options.resume_source = checkpoints->bin();
-    options.save_checkpoint = [&](const std::string& bytes) { checkpoints->save(bytes); };
+    options.resume_source = checkpoints->store().file();
+    options.save_checkpoint = checkpoints->store().saver();
   }
   SynthesisResult r;
   try {

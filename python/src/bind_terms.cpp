@@ -199,7 +199,7 @@ void register_part(const std::string& kind, const std::string& name, const py::o
     base[it.key()] = it.value();
   }
   python_parts()[kind + ":" + name] = glue;
-  typename Reg::Entry e{[name, make](const json& p) { return make(name, p); }, base, base_bounds,
+  typename Reg::Entry e{[name, make](const json& p, const std::string&) { return make(name, p); }, base, base_bounds,
                         description.empty() ? kind + " written in Python" : description};
   auto& reg = Reg::instance();
   auto& mine = own_names(kind);

@@ -76,7 +76,11 @@ using ThingRegistry = Registry<Thing>;
 }  // namespace
 
 PPSYNTH_REGISTER(ThingRegistry, "seven", (json{{"v", 7}}), (json{{"v", "int [0, 100]"}}), "test part",
-                 [](const json& p) { return std::make_unique<Seven>(p["v"].get<int>()); })
+                 [](const json& p, const std::string& key) {
+                   // What a range cannot say is the factory's to refuse, under the key path it is given.
+                   if (p["v"].get<int>() == 13) throw config_error(key + ".v", "unlucky");
+                   return std::make_unique<Seven>(p["v"].get<int>());
+                 })
 
 TEST_CASE("registry creates by name with defaults and refuses duplicates", "[config]") {
   auto t = ThingRegistry::instance().create(json{{"type", "seven"}}, "thing");
@@ -85,6 +89,19 @@ TEST_CASE("registry creates by name with defaults and refuses duplicates", "[con
   CHECK_THROWS_WITH(ThingRegistry::instance().create(json{{"type", "eight"}}, "thing"), Catch::Contains("thing.type"));
   CHECK_THROWS_WITH(ThingRegistry::instance().create(json{{"type", "seven"}, {"w", 1}}, "thing"), Catch::Contains("thing.w"));
   CHECK_THROWS_AS(ThingRegistry::instance().add("seven", ThingRegistry::Entry{}), std::logic_error);
+}
+
+TEST_CASE("a registry hands its factory the key path, and resolves a spec without building the part", "[config]") {
+  // The factory's own refusal names the whole key as the caller placed the part.
+  CHECK_THROWS_WITH(ThingRegistry::instance().create(json{{"type", "seven"}, {"v", 13}}, "method.things[2]"),
+                    Catch::Contains("method.things[2].v") && Catch::Contains("unlucky"));
+  // resolve: the declared defaults under the user's keys, "type" kept, bounds checked, no part.
+  CHECK(ThingRegistry::instance().resolve(json{{"type", "seven"}}, "thing") == json{{"type", "seven"}, {"v", 7}});
+  CHECK(ThingRegistry::instance().resolve(json{{"type", "seven"}, {"v", 13}}, "thing") == json{{"type", "seven"}, {"v", 13}});
+  CHECK_THROWS_WITH(ThingRegistry::instance().resolve(json{{"type", "seven"}, {"v", 101}}, "thing"), Catch::Contains("thing.v"));
+  json resolved;
+  ThingRegistry::instance().create(json{{"type", "seven"}, {"v", 3}}, "thing", &resolved);
+  CHECK(resolved == json{{"type", "seven"}, {"v", 3}});
 }
 
 TEST_CASE("number lists (seeds, stages): numbers and ranges, in order, without repeats", "[config]") {

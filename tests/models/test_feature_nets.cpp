@@ -180,11 +180,24 @@ TEST_CASE("Feature nets from the registry: fixed banks and identity", "[models][
     CHECK(f[0].size(1) == 10 * B);
     CHECK(f[2].size(2) == 4);
   }
-  CHECK(filter_bank("gaussian")[0].sum().item<double>() == Approx(1.0));
-  CHECK(filter_bank("sobel")[0].sum().item<double>() == Approx(0.0).margin(1e-12));
+  CHECK(filter_bank("gaussian", 7, "feature_net")[0].sum().item<double>() == Approx(1.0));
+  CHECK(filter_bank("sobel", 7, "feature_net")[0].sum().item<double>() == Approx(0.0).margin(1e-12));
   auto id = reg.create(json{{"type", "identity"}}, "feature_net", 10, 1);
   CHECK(torch::equal(id->forward(x)[2], x));
   CHECK_THROWS_AS(reg.create(json{{"type", "fixed_bank"}, {"bank", "fourier"}}, "feature_net", 10, 1), InputError);
+}
+
+TEST_CASE("a feature net's own refusals name the key where the config put it", "[models][net][config]") {
+  auto& reg = FeatureNetRegistry::instance();
+  CHECK_THROWS_WITH(reg.create(json{{"type", "random"}, {"kernel_size", 4}}, "method.feature_net", 10, 1),
+                    Catch::Contains("method.feature_net.kernel_size") && Catch::Contains("odd"));
+  CHECK_THROWS_WITH(reg.create(json{{"type", "fixed_bank"}, {"bank", "fourier"}}, "method.feature_net", 10, 1),
+                    Catch::Contains("method.feature_net.bank"));
+  CHECK_THROWS_WITH(reg.create(json{{"type", "random"}, {"precision", "half"}}, "method.feature_net", 10, 1),
+                    Catch::Contains("method.feature_net.precision"));
+  // The registered defaults are RandomFilterNetOptions' own.
+  CHECK(reg.resolve(json{{"type", "random"}}, "f")["channels"] == RandomFilterNetOptions{}.channels);
+  CHECK(reg.resolve(json{{"type", "random"}}, "f")["kernel_size"] == RandomFilterNetOptions{}.kernel_size);
 }
 
 TEST_CASE("Pixel splat: bilinear, mass-preserving, differentiable", "[models][splat]") {
@@ -208,7 +221,7 @@ TEST_CASE("RandomFilterNet precision: float32, bfloat16 or auto, anything else r
   CHECK(reg.create(json{{"type", "random"}, {"channels", 4}}, "feature_net", 10, 5)->choices()["precision"] == "float32");
   CHECK(reg.create(json{{"type", "random"}, {"channels", 4}, {"precision", "bfloat16"}}, "feature_net", 10, 5)->choices()["precision"] ==
         "bfloat16");
-  CHECK_THROWS_WITH(reg.create(json{{"type", "random"}, {"precision", "half"}}, "feature_net", 10, 5),
+  CHECK_THROWS_WITH(reg.create(json{{"type", "random"}, {"precision", "half"}}, "method.feature_net", 10, 5),
                     Catch::Contains("method.feature_net.precision") && Catch::Contains("auto"));
 }
 

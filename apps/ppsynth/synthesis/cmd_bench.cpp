@@ -20,6 +20,7 @@
 
 #include "apps/ppsynth/command.hpp"
 #include "apps/ppsynth/option_checks.hpp"
+#include "optim/run/checkpoint_store.hpp"
 #include "optim/run/run_config.hpp"
 #include "core/memory_budget.hpp"
 #include "core/atomic_file.hpp"
@@ -227,38 +228,39 @@ app::RunFn setup(CLI::App& app) {
     engine_spec["method"]["max_iterations"] = o->reps + 2;
     engine_spec["checkpoint_seconds"] = 1e-9;  // a checkpoint after every iteration
     engine_spec["evaluate"] = false;
-    const std::string checkpoint_file =
-        (std::filesystem::temp_directory_path() / ("ppsynth-bench-" + std::to_string(::getpid()) + ".bin")).string();
+    CheckpointStore checkpoints(
+        (std::filesystem::temp_directory_path() / ("ppsynth-bench-" + std::to_string(::getpid()) + ".bin")).string());
     Timing checkpoint_write;
     size_t checkpoint_bytes = 0;
     SynthesisOptions engine_options;
     engine_options.observers = {&iteration_clock};
     engine_options.save_checkpoint = [&](const std::string& bytes) {
       const auto a = Clock::now();
-      AtomicFile f(checkpoint_file, std::ios::binary);
-      f.stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-      f.commit();
+      checkpoints.save(bytes);
       checkpoint_write.s.push_back(std::chrono::duration<double>(Clock::now() - a).count());
       checkpoint_bytes = std::max(checkpoint_bytes, bytes.size());
     };
     synthesize(ex, engine_spec, engine_options);
-    std::filesystem::remove(checkpoint_file);
+    checkpoints.remove();
     Timing engine;  // the first iteration (warm-up) is left out
     for (size_t i = 2; i < iteration_clock.at.size(); ++i) engine.s.push_back(iteration_clock.at[i] - iteration_clock.at[i - 1]);
     if (engine.s.empty()) engine.s.push_back(iteration_clock.at.back());
 
     // --- the convolution floor ---------------------------------------------------------
-    const int C = s.feature_net.value("channels", 120), ks = s.feature_net.value("kernel_size", 7),
-              depth = s.feature_net.value("depth", 3);
+    // The network as its registry resolves it (its declared defaults under the config's).
+    const nlohmann::json net = FeatureNetRegistry::instance().resolve(s.feature_net, "method.feature_net");
+    const bool random_net = net["type"] == "random";
+    const int C = random_net ? net["channels"].get<int>() : 0, ks = random_net ? net["kernel_size"].get<int>() : 0,
+              depth = random_net ? net["depth"].get<int>() : 0;
     // Emulated bf16 runs at about 1/100 of float32 (minutes per convolution at R = 256): its
     // throughput is taken once on a 64 x 64 map, where it is the same per FLOP.
     const bool bf16_units = !device.is_cpu() || cpu_isa().native_bf16;
     const int bf16_res = bf16_units ? R : std::min(R, 64);
     const std::vector<ConvThroughput> paths = {conv_throughput_float32(R, o->reps, device),
                                                conv_throughput_bfloat16(bf16_res, bf16_units ? o->reps : 1, device)};
-    const double flops = s.feature_net.value("type", "") == "random" ? net_flops(static_cast<int>(maps.size(1)), C, ks, depth, R) : 0;
-    const bool bf16 = s.feature_net.value("type", "") == "random" &&
-                      resolve_network_precision(s.feature_net.value("precision", "float32"), "method.feature_net.precision").dtype ==
+    const double flops = random_net ? net_flops(static_cast<int>(maps.size(1)), C, ks, depth, R) : 0;
+    const bool bf16 = random_net &&
+                      resolve_network_precision(net["precision"].get<std::string>(), "method.feature_net.precision").dtype ==
                           torch::kBFloat16;
     const double conv_gflops = paths[bf16 ? 1 : 0].gflops;  // the floor of the path this config runs
     const double floor_s = flops / (conv_gflops * 1e9);

@@ -31,27 +31,21 @@ namespace {
 
 class Pcf2017Method : public SynthesisMethod {
  public:
-  explicit Pcf2017Method(const nlohmann::json& p) {
-    const std::string kp = "method";
-    pcf_.bins = get_int(p, "bins", kp);
-    pcf_.r_a = get_number(p, "r_a", kp);
-    pcf_.r_b = get_number(p, "r_b", kp);
-    pcf_.sigma_factor = get_number(p, "sigma_factor", kp);
-    descent_.iterations = get_int(p, "iterations", kp);
-    descent_.step = get_number(p, "step", kp);
-    descent_.max_step = get_number(p, "max_step", kp);
-    descent_.grow = get_number(p, "grow", kp);
-    descent_.line_search_halvings = get_int(p, "line_search_halvings", kp);
-    quick_iterations_ = get_int(p, "quick_iterations", kp);
-    if (pcf_.bins < 2) throw config_error(kp + ".bins", "must be >= 2");
-    if (!(pcf_.r_a > 0) || !(pcf_.r_b > pcf_.r_a)) throw config_error(kp + ".r_a", "need 0 < r_a < r_b");
-    if (!(pcf_.sigma_factor > 0)) throw config_error(kp + ".sigma_factor", "must be > 0");
-    if (descent_.iterations < 0) throw config_error(kp + ".iterations", "must be >= 0");
-    if (!(descent_.step > 0)) throw config_error(kp + ".step", "must be > 0");
-    if (!(descent_.max_step >= descent_.step)) throw config_error(kp + ".max_step", "must be >= step");
-    if (!(descent_.grow >= 1)) throw config_error(kp + ".grow", "must be >= 1");
-    if (descent_.line_search_halvings < 0) throw config_error(kp + ".line_search_halvings", "must be >= 0");
-    if (quick_iterations_ < 0) throw config_error(kp + ".quick_iterations", "must be >= 0");
+  // p: the registered defaults merged with the user's, every range checked by the registry's
+  // bounds (below); what is left here are the checks between two parameters.
+  Pcf2017Method(const nlohmann::json& p, const std::string& key) {
+    pcf_.bins = p["bins"].get<int>();
+    pcf_.r_a = p["r_a"].get<double>();
+    pcf_.r_b = p["r_b"].get<double>();
+    pcf_.sigma_factor = p["sigma_factor"].get<double>();
+    descent_.iterations = p["iterations"].get<int>();
+    descent_.step = p["step"].get<double>();
+    descent_.max_step = p["max_step"].get<double>();
+    descent_.grow = p["grow"].get<double>();
+    descent_.line_search_halvings = p["line_search_halvings"].get<int>();
+    quick_iterations_ = p["quick_iterations"].get<int>();
+    if (!(pcf_.r_b > pcf_.r_a)) throw config_error(key + ".r_a", "need r_a < r_b");
+    if (!(descent_.max_step >= descent_.step)) throw config_error(key + ".max_step", "must be >= step");
   }
 
   PointSet synthesize(const PointSet& exemplar, const SynthesisContext& ctx) override {
@@ -244,11 +238,7 @@ class Pcf2017Method : public SynthesisMethod {
                          "; the synthesis needs " + std::to_string(want) + " (" + std::to_string(total) +
                          " in all: the exemplar's density of each class over " + where + ")");
     }
-    for (size_t i = 0; i < init.size(); ++i)
-      if (!canvas.contains(init[i]))
-        throw InputError("pcf2017: the initialization's point " + std::to_string(i + 1) + " (" + std::to_string(init[i].x) +
-                         ", " + std::to_string(init[i].y) + ") lies outside " + where +
-                         " (output rectangle in exemplar units, plus the clean-border pad)");
+    check_initialization_inside(init, canvas, "pcf2017", "the synthesis canvas (the output rectangle in exemplar units, plus the clean border's pad)");
   }
 
   PcfParams pcf_;
@@ -278,10 +268,10 @@ PPSYNTH_REGISTER(ppsynth::MethodRegistry, "pcf2017",
                                  {"grow", "[1, inf)"},
                                  {"line_search_halvings", "int [0, 64]"},
                                  {"bins", "int [2, 100000]"},
-                                 {"r_a", "[0, inf)"},
+                                 {"r_a", "(0, inf)"},
                                  {"r_b", "(0, inf)"},
                                  {"sigma_factor", "(0, inf)"}}),
                  "Roveri et al. 2017 (thesis Ch. 4): gradient descent on the PCF energy (Eq. 4.3), stationary, torus",
-                 [](const nlohmann::json& p) -> std::unique_ptr<ppsynth::SynthesisMethod> {
-                   return std::make_unique<ppsynth::pcf2017::Pcf2017Method>(p);
+                 [](const nlohmann::json& p, const std::string& key) -> std::unique_ptr<ppsynth::SynthesisMethod> {
+                   return std::make_unique<ppsynth::pcf2017::Pcf2017Method>(p, key);
                  })

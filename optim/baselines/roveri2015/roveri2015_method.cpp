@@ -32,59 +32,42 @@ namespace ppsynth::roveri2015 {
 
 namespace {
 
-const char* kp_ = "method";
-
-double positive(const nlohmann::json& p, const std::string& key) {
-  const double v = get_number(p, key, kp_);
-  if (!(v > 0)) throw config_error(std::string(kp_) + "." + key, "must be > 0");
-  return v;
-}
-int at_least(const nlohmann::json& p, const std::string& key, int lo) {
-  const int v = get_int(p, key, kp_);
-  if (v < lo) throw config_error(std::string(kp_) + "." + key, "must be >= " + std::to_string(lo));
-  return v;
-}
-
 class Roveri2015Method : public SynthesisMethod {
  public:
-  explicit Roveri2015Method(const nlohmann::json& p) {
-    p_.sigma_factor = positive(p, "sigma_factor");
-    p_.window_factor = positive(p, "window_factor");
-    const std::string w = get_string(p, "window", kp_);
+  // p: the registered defaults merged with the user's, every range checked by the registry's
+  // bounds (below); what is left here is the one choice the bounds cannot hold.
+  Roveri2015Method(const nlohmann::json& p, const std::string& key) {
+    auto number = [&](const char* k) { return p[k].get<double>(); };
+    auto whole = [&](const char* k) { return p[k].get<int>(); };
+    p_.sigma_factor = number("sigma_factor");
+    p_.window_factor = number("window_factor");
+    const std::string w = p["window"].get<std::string>();
     if (w == "box") p_.window = WindowKind::Box;
     else if (w == "gaussian") p_.window = WindowKind::Gaussian;
-    else throw config_error(std::string(kp_) + ".window", "expected \"box\" or \"gaussian\", got \"" + w + "\"");
-    p_.window_cutoff = positive(p, "window_cutoff");
-    p_.pair_cutoff = positive(p, "pair_cutoff");
-    p_.attribute_weight = get_number(p, "attribute_weight", kp_);
-    if (p_.attribute_weight < 0) throw config_error(std::string(kp_) + ".attribute_weight", "must be >= 0");
-    p_.quad_spacing = positive(p, "quad_spacing");
-    p_.match_restarts = at_least(p, "match_restarts", 0);
-    p_.match_iterations = at_least(p, "match_iterations", 0);
-    p_.aligned_starts = at_least(p, "aligned_starts", 0);
-    p_.match_step = positive(p, "match_step");
-    p_.match_margin = get_number(p, "match_margin", kp_);
-    if (p_.match_margin < 0) throw config_error(std::string(kp_) + ".match_margin", "must be >= 0");
-    p_.merge_iterations = at_least(p, "merge_iterations", 0);
-    p_.merge_step = positive(p, "merge_step");
-    p_.merge_tolerance = get_number(p, "merge_tolerance", kp_);
-    p_.attribute_iterations = at_least(p, "attribute_iterations", 0);
-    p_.local_global_iterations = at_least(p, "local_global_iterations", 1);
-    p_.sampling_control_iterations = at_least(p, "sampling_control_iterations", 1);
-    p_.scale_factor = get_number(p, "scale_factor", kp_);
-    if (!(p_.scale_factor > 0 && p_.scale_factor < 1))
-      throw config_error(std::string(kp_) + ".scale_factor", "must be in (0, 1)");
-    p_.min_window_ratio = get_number(p, "min_window_ratio", kp_);
-    if (!(p_.min_window_ratio > 0 && p_.min_window_ratio <= 1))
-      throw config_error(std::string(kp_) + ".min_window_ratio", "must be in (0, 1]");
-    p_.sampling_epsilon = get_number(p, "sampling_epsilon", kp_);
-    p_.candidate_iterations = at_least(p, "candidate_iterations", 0);
-    p_.max_candidate_fraction = get_number(p, "max_candidate_fraction", kp_);
-    if (!(p_.max_candidate_fraction >= 0 && p_.max_candidate_fraction <= 1))
-      throw config_error(std::string(kp_) + ".max_candidate_fraction", "must be in [0, 1]");
-    p_.patch_size = positive(p, "patch_size");
-    p_.periodic_output = get_bool(p, "periodic_output", kp_);
-    quick_scales_ = at_least(p, "quick_scales", 1);
+    else throw config_error(key + ".window", "expected \"box\" or \"gaussian\", got \"" + w + "\"");
+    p_.window_cutoff = number("window_cutoff");
+    p_.pair_cutoff = number("pair_cutoff");
+    p_.attribute_weight = number("attribute_weight");
+    p_.quad_spacing = number("quad_spacing");
+    p_.match_restarts = whole("match_restarts");
+    p_.match_iterations = whole("match_iterations");
+    p_.aligned_starts = whole("aligned_starts");
+    p_.match_step = number("match_step");
+    p_.match_margin = number("match_margin");
+    p_.merge_iterations = whole("merge_iterations");
+    p_.merge_step = number("merge_step");
+    p_.merge_tolerance = number("merge_tolerance");
+    p_.attribute_iterations = whole("attribute_iterations");
+    p_.local_global_iterations = whole("local_global_iterations");
+    p_.sampling_control_iterations = whole("sampling_control_iterations");
+    p_.scale_factor = number("scale_factor");
+    p_.min_window_ratio = number("min_window_ratio");
+    p_.sampling_epsilon = number("sampling_epsilon");
+    p_.candidate_iterations = whole("candidate_iterations");
+    p_.max_candidate_fraction = number("max_candidate_fraction");
+    p_.patch_size = number("patch_size");
+    p_.periodic_output = p["periodic_output"].get<bool>();
+    quick_scales_ = whole("quick_scales");
   }
 
   PointSet synthesize(const PointSet& exemplar, const SynthesisContext& ctx) override {
@@ -206,13 +189,7 @@ class Roveri2015Method : public SynthesisMethod {
   // An explicit initialization of a rectangle output: its points in exemplar units, inside
   // the canvas (its file's own domain may be anything, so positions are not mapped).
   static PointSet initialization_on(const PointSet& init, const Domain& canvas) {
-    for (size_t i = 0; i < init.size(); ++i)
-      if (!canvas.contains(init[i]))
-        throw InputError("roveri2015: the initialization's point " + std::to_string(i + 1) + " (" +
-                         std::to_string(init[i].x) + ", " + std::to_string(init[i].y) +
-                         ") lies outside the synthesis canvas [" + std::to_string(canvas.x0) + ", " +
-                         std::to_string(canvas.x1) + "] x [" + std::to_string(canvas.y0) + ", " +
-                         std::to_string(canvas.y1) + "] (output rectangle in exemplar units, plus the clean-border pad)");
+    check_initialization_inside(init, canvas, "roveri2015", "the synthesis canvas (the output rectangle in exemplar units, plus the clean border's pad)");
     PointSet on = init;
     on.set_domain(canvas);
     return on;
@@ -268,8 +245,8 @@ PPSYNTH_REGISTER(ppsynth::MethodRegistry, "roveri2015",
                                  {"merge_step", "(0, inf)"},
                                  {"merge_tolerance", "[0, inf)"},
                                  {"attribute_iterations", "int [0, inf)"},
-                                 {"local_global_iterations", "int [0, inf)"},
-                                 {"sampling_control_iterations", "int [0, inf)"},
+                                 {"local_global_iterations", "int [1, inf)"},
+                                 {"sampling_control_iterations", "int [1, inf)"},
                                  {"scale_factor", "(0, 1)"},
                                  {"min_window_ratio", "(0, 1]"},
                                  {"sampling_epsilon", "[0, inf)"},
@@ -279,6 +256,6 @@ PPSYNTH_REGISTER(ppsynth::MethodRegistry, "roveri2015",
                                  {"quick_scales", "int [1, 64]"}}),
                  "Roveri et al. 2015 (thesis Ch. 3): functional neighborhood matching, multi-scale local-global "
                  "solver with sampling control, random-patch-copy init",
-                 [](const nlohmann::json& p) -> std::unique_ptr<ppsynth::SynthesisMethod> {
-                   return std::make_unique<ppsynth::roveri2015::Roveri2015Method>(p);
+                 [](const nlohmann::json& p, const std::string& key) -> std::unique_ptr<ppsynth::SynthesisMethod> {
+                   return std::make_unique<ppsynth::roveri2015::Roveri2015Method>(p, key);
                  })

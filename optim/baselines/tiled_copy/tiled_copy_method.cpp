@@ -24,11 +24,11 @@ namespace {
 
 class TiledCopyMethod : public SynthesisMethod {
  public:
-  explicit TiledCopyMethod(const nlohmann::json& p) {
+  TiledCopyMethod(const nlohmann::json& p, const std::string& key) {
     const auto& o = p.at("offset");
     if (o.is_null()) return;
     if (!o.is_array() || o.size() != 2 || !o[0].is_number() || !o[1].is_number())
-      throw config_error("method.offset",
+      throw config_error(key + ".offset",
                          "expected null (a seeded random offset) or [x, y] (output units: the unit square, or exemplar units on a rectangle)");
     offset_ = {o[0].get<double>(), o[1].get<double>()};
     random_ = false;
@@ -89,6 +89,6 @@ class TiledCopyMethod : public SynthesisMethod {
 PPSYNTH_REGISTER(ppsynth::MethodRegistry, "tiled_copy", (nlohmann::json{{"offset", nullptr}}),
                  (nlohmann::json{{"offset", "[-1e6, 1e6]"}}),
                  "the exemplar tiled u x u (or over an output rectangle), shifted (offset null = seeded random, or [x, y]): the copy baseline",
-                 [](const nlohmann::json& p) -> std::unique_ptr<ppsynth::SynthesisMethod> {
-                   return std::make_unique<ppsynth::TiledCopyMethod>(p);
+                 [](const nlohmann::json& p, const std::string& key) -> std::unique_ptr<ppsynth::SynthesisMethod> {
+                   return std::make_unique<ppsynth::TiledCopyMethod>(p, key);
                  })

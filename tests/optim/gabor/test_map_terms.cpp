@@ -41,7 +41,7 @@ double mean_distance_to_center(const PointSet& ps) {
 
 PPSYNTH_REGISTER(ppsynth::MapTermRegistry, "test_center", (nlohmann::json{{"weight", 0.0}}),
                  (nlohmann::json{{"weight", "[0, inf)"}}), "test only: pulls points to the center",
-                 [](const nlohmann::json& p) -> std::unique_ptr<ppsynth::MapTerm> {
+                 [](const nlohmann::json& p, const std::string& key) -> std::unique_ptr<ppsynth::MapTerm> {
                    return std::make_unique<CenterMapTerm>(p);
                  })
 

@@ -149,7 +149,7 @@ class MeanActivationLoss : public FeatureLoss {
 }  // namespace
 PPSYNTH_REGISTER(ppsynth::LossRegistry, "test_mean_activation", (ppsynth::json{{"layers", {2}}, {"weight", 1.0}}),
                  (ppsynth::json{{"layers", "int [0, 15]"}, {"weight", "[0, inf)"}}),
-                 "test-only loss", [](const ppsynth::json&) -> std::unique_ptr<ppsynth::FeatureLoss> {
+                 "test-only loss", [](const ppsynth::json&, const std::string&) -> std::unique_ptr<ppsynth::FeatureLoss> {
                    return std::make_unique<MeanActivationLoss>();
                  })
 

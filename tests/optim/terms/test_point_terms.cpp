@@ -35,7 +35,7 @@ double mean_distance_to_center(const PointSet& ps) {
 PPSYNTH_REGISTER(ppsynth::PointTermRegistry, "test_pull_to_center", (nlohmann::json{{"weight", 0.0}}),
                  (nlohmann::json{{"weight", "[0, inf)"}}),
                  "test only: pulls points to the center",
-                 [](const nlohmann::json& p) -> std::unique_ptr<ppsynth::PointTerm> {
+                 [](const nlohmann::json& p, const std::string& key) -> std::unique_ptr<ppsynth::PointTerm> {
                    return std::make_unique<PullToCentre>(p);
                  })
 
