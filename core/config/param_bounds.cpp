@@ -61,16 +61,44 @@ std::string shown(double v) {
   return os.str();
 }
 
+// "0 or int [8, 8192]" -> {"0", "int [8, 8192]"}: a bound's alternatives.
+std::vector<std::string> alternatives(const std::string& bound) {
+  std::vector<std::string> alts;
+  size_t from = 0;
+  for (size_t at; (at = bound.find(" or ", from)) != std::string::npos; from = at + 4) alts.push_back(bound.substr(from, at - from));
+  alts.push_back(bound.substr(from));
+  return alts;
+}
+
+bool is_interval(const std::string& alt) { return alt.rfind("int ", 0) == 0 || alt.front() == '[' || alt.front() == '('; }
+
+bool within(const Interval& iv, double x) {
+  const bool below = iv.lo_open ? !(x > iv.lo) : !(x >= iv.lo);
+  const bool above = iv.hi_open ? !(x < iv.hi) : !(x <= iv.hi);
+  return !(below || above) && (!iv.integer || x == std::floor(x));
+}
+
+// A bound's alternatives as intervals (one number n as [n, n]); std::logic_error when malformed.
+std::vector<Interval> parse_bound(const std::string& bound) {
+  std::vector<Interval> intervals;
+  for (const std::string& alt : alternatives(bound))
+    if (alt.empty()) throw std::logic_error("malformed parameter bound '" + bound + "'");
+    else if (is_interval(alt)) intervals.push_back(parse_interval(alt));
+    else intervals.push_back({false, parse_end(alt, bound), parse_end(alt, bound), false, false});
+  return intervals;
+}
+
 void check_value(const nlohmann::json& v, const std::string& bound, const std::string& kp) {
   if (v.is_null()) return;  // a null default ("none") is not a number to bound
-  const Interval iv = parse_interval(bound);
+  const std::vector<Interval> intervals = parse_bound(bound);
   if (!v.is_number()) throw config_error(kp, "expected a number in " + bound);
   const double x = v.get<double>();
   if (!std::isfinite(x)) throw config_error(kp, "not a finite number");
-  if (iv.integer && x != std::floor(x)) throw config_error(kp, "expected a whole number in " + bound + ", got " + shown(x));
-  const bool below = iv.lo_open ? !(x > iv.lo) : !(x >= iv.lo);
-  const bool above = iv.hi_open ? !(x < iv.hi) : !(x <= iv.hi);
-  if (below || above) throw config_error(kp, shown(x) + " is outside the allowed range " + bound);
+  for (const Interval& iv : intervals)
+    if (within(iv, x)) return;
+  if (intervals.size() == 1 && intervals[0].integer && x != std::floor(x))
+    throw config_error(kp, "expected a whole number in " + bound + ", got " + shown(x));
+  throw config_error(kp, shown(x) + " is outside the allowed range " + bound);
 }
 
 }  // namespace
@@ -108,7 +136,7 @@ std::vector<std::string> unbounded_numbers(const nlohmann::json& defaults, const
       out.insert(out.end(), sub.begin(), sub.end());
     } else if (d.is_number() || (d.is_array() && !d.empty() && d.front().is_number())) {
       if (!b || !b->is_string()) out.push_back(kp);
-      else parse_interval(b->get<std::string>());  // malformed bounds surface here too
+      else parse_bound(b->get<std::string>());  // malformed bounds surface here too
     }
   }
   return out;

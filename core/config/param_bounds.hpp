@@ -3,6 +3,8 @@
 // each registered part gives its defaults and their bounds together). A bound is a string in
 // interval notation, with "int" in front for whole numbers:
 //     "[0, 1]"   "(0, inf)"   "int [1, inf)"   "int [0, 4096]"
+// or alternatives joined by " or ", each an interval or one number: "0 or int [8, 8192]"
+// (0 asks for the automatic choice).
 // Bounds mirror the defaults' nesting: {"convergence": {"window": "int [1, inf)"}}.
 // A parameter whose default is a number must have a bound (a test walks every registry).
 #include <string>

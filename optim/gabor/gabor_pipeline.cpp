@@ -103,7 +103,7 @@ json gabor_bounds() {
       {"c1", "(0, inf)"},
       {"c2", "(0, inf)"},
       {"num_sigmas", "int [1, 64]"},
-      {"grid", {{"res", "int [0, 8192]"}, {"min_res", "int [8, 8192]"}, {"max_res", "int [8, 8192]"}}},
+      {"grid", {{"res", "0 or int [8, 8192]"}, {"min_res", "int [8, 8192]"}, {"max_res", "int [8, 8192]"}}},
       {"k", "int [1, 1000000]"},
       {"max_iterations", "int [1, 1000000000]"},
       {"class_order", "int [0, 1000000]"},
@@ -149,7 +149,6 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   if (s.res == 0)
     s.res = grid_resolution_for(s.mean_nn_distance, get_int(p["grid"], "min_res", "method.grid"),
                                 get_int(p["grid"], "max_res", "method.grid"));
-  if (s.res < 8) throw config_error("method.grid.res", "must be >= 8 (or 0 for automatic)");
   int num_sigmas = get_int(p, "num_sigmas", "method");
   s.max_iterations = get_int(p, "max_iterations", "method");
   s.feature_net = with_channels_for_classes(p["feature_net"], K, "method.feature_net");

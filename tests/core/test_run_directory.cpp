@@ -136,6 +136,13 @@ TEST_CASE("parameter bounds", "[config][bounds]") {
   CHECK_THROWS_WITH(check_bounds({{"l", {1, -1}}}, b, "m"), Catch::Contains("m.l[1]"));
   CHECK_THROWS_WITH(check_bounds({{"n", "3"}}, b, "m"), Catch::Contains("expected a number"));
   CHECK_THROWS_AS(check_bounds({{"n", 1}}, {{"n", "[1, 2"}}, "m"), std::logic_error);
+  // Alternatives: one number or an interval ("0" asks for the automatic choice).
+  const nlohmann::json res = {{"res", "0 or int [8, 8192]"}};
+  CHECK_NOTHROW(check_bounds({{"res", 0}}, res, "grid"));
+  CHECK_NOTHROW(check_bounds({{"res", 8}}, res, "grid"));
+  CHECK_THROWS_WITH(check_bounds({{"res", 5}}, res, "grid"), Catch::Contains("grid.res") && Catch::Contains("0 or int [8, 8192]"));
+  CHECK_THROWS_WITH(check_bounds({{"res", 8.5}}, res, "grid"), Catch::Contains("grid.res"));
+  CHECK_THROWS_AS(check_bounds({{"res", 8}}, {{"res", "0 or "}}, "grid"), std::logic_error);
   CHECK(unbounded_numbers({{"n", 1}, {"s", "x"}, {"g", {{"w", 2}, {"v", 3}}}, {"c", {{"type", "t"}, {"q", 1}}}}, b) ==
         std::vector<std::string>{"g.v"});
 }
