@@ -11,7 +11,6 @@
 #include "core/checkpoint_file.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
-#include "core/formats/text_table.hpp"
 #include "core/output_shape.hpp"
 #include "core/processor.hpp"
 #include "core/run_directory.hpp"

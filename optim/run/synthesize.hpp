@@ -8,8 +8,6 @@
 //
 // A spec is a resolved run config (optim/run/run_config.hpp); its "exemplar" key is not used
 // here (the exemplar is given), its "method", "seed", "upscale", "init_file" and "evaluate" are.
-#include <atomic>
-#include <functional>
 #include <string>
 #include <vector>
 

@@ -17,7 +17,6 @@
 #include "core/config/config.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
-#include "core/formats/text_table.hpp"
 #include "core/processor.hpp"
 #include "core/run_directory.hpp"
 #include "core/run_json.hpp"
