@@ -50,6 +50,13 @@ PointSet parse_point_synthesis(const std::string& text, const std::string& sourc
     sx = sy = std::max(w, h);
     domain.x1 = w / sx;
     domain.y1 = h / sy;
+    // A short side below one ulp of the long side (1e-18 against 1e308 even rounds to 0) is a
+    // line at double precision, not a domain: the points could not be told apart across it.
+    if (std::min(domain.x1, domain.y1) < std::numeric_limits<double>::epsilon())
+      throw file_error(source, 0,
+                       "the points' extent is " + format_real(w) + " by " + format_real(h) +
+                           ": an aspect ratio beyond 1/DBL_EPSILON cannot be scaled uniformly "
+                           "(read with per-axis scaling, or rescale the file)");
   }
 
   // Classes: a constant column is one class; else distinct values ascending -> 0..K-1.

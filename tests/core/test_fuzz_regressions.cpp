@@ -72,3 +72,24 @@ TEST_CASE("fuzz: a config parent name too long for the file system is an InputEr
   CHECK_THROWS_AS(load_config(path), InputError);
   CHECK_THROWS_WITH(load_config(path), Catch::Contains("qqqq"));
 }
+
+// fuzz_point_synthesis (round trip, found in CI): uniform scaling of a 1e-18 by 1e308 extent
+// gave a domain of width 0 (1e-18 / 1e308 rounds to 0); it validated, and its write did not
+// read back ("all points share one x"). A short side below 2^-52 of the long side is refused.
+TEST_CASE("fuzz: a Point-Synthesis extent too thin to scale uniformly is an InputError", "[fuzz][formats]") {
+  const std::string text = "0e308 -03e18 1 0\n-1e-18 1e308 2 3\n";
+  ReadOptions uniform;
+  uniform.format = Format::PointSynthesis;
+  uniform.scaling = AxisScaling::Uniform;
+  CHECK_THROWS_AS(parse_points(text, "thin.txt", uniform), InputError);
+  CHECK_THROWS_WITH(parse_points(text, "thin.txt", uniform),
+                    Catch::Contains("thin.txt") && Catch::Contains("aspect ratio") && Catch::Contains("per-axis"));
+  // Per-axis scaling maps each side onto [0, 1] and reads it.
+  ReadOptions per_axis;
+  per_axis.format = Format::PointSynthesis;
+  const PointSet ps = parse_points(text, "thin.txt", per_axis);
+  CHECK(ps.domain().x1 == 1.0);
+  CHECK(ps[1].x == 0.0);
+  // A wide but representable aspect (1e6) still scales uniformly.
+  CHECK(parse_points("0 0 1\n1e6 1 1\n", "wide.txt", uniform).domain().y1 == 1e-6);
+}
