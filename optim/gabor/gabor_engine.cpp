@@ -6,11 +6,7 @@
 #include <numeric>
 #include <sstream>
 
-#include <spdlog/fmt/fmt.h>
-
 #include "core/checkpoint_file.hpp"
-#include "core/memory_budget.hpp"
-#include "core/metrics/border.hpp"
 #include "models/gabor_feature_maps.hpp"
 #include "models/point_tensor.hpp"
 #include "optim/steps/initializer.hpp"
@@ -114,12 +110,6 @@ std::vector<size_t> concat(const std::vector<size_t>& a, const std::vector<size_
   return v;
 }
 
-bool inside(const Domain& d, const Vec2& p) { return p.x >= d.x0 && p.x <= d.x1 && p.y >= d.y0 && p.y <= d.y1; }
-
-Domain intersection(const Domain& a, const Domain& b) {
-  return Domain{std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
-}
-
 // Every layer cut to the part {x0, y0, x1, y1} of the grid (fractions; x along columns, y
 // along rows, as the maps lie): the losses then measure that part only. Gram matrices
 // average over the positions they get and the deep correlation normalizes by its overlap,
@@ -155,9 +145,6 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
   map_terms_ = create_map_terms(p_["map_terms"]);
   for (auto& t : map_terms_) t.term->begin_run(MapTermRun{p_, s_, exemplar, ctx.seed, device_});
   terms_ = create_point_terms(p_["terms"]);
-  if (s_.relax_iterations > 0)
-    relax_terms_ = create_weighted_terms<PointTerm>(
-        json{{"separation", {{"weight", p_["border_relax"]["separation"]}}}}, "method.border_relax");
   rule_ = StoppingRuleRegistry::instance().create(p_["convergence"], "method.convergence");
   OptimizerRegistry::instance().entry(p_["optimizer"].value("type", ""), "method.optimizer.type");
   auto init = InitializerRegistry::instance().create(p_["init"], "method.init");
@@ -175,6 +162,8 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
     state_.final_points.assign(out_.size(), 0);
     std::fill(state_.final_points.begin() + static_cast<std::ptrdiff_t>(pad_begin_), state_.final_points.end(), 1);
   }
+  for (const Stage& stage : plan_)
+    if (std::find(kinds_.begin(), kinds_.end(), stage.kind) == kinds_.end()) kinds_.push_back(stage.kind);
   stats_ = {{"grid_res", s_.res}, {"output_grid_res", s_.out_res}, {"grid_res_per_sigma", s_.sigma_res},
             {"output_grid_res_per_sigma", s_.sigma_out_res}, {"k", s_.k}, {"sigmas", s_.sigmas},
             {"mean_nn_distance", s_.mean_nn_distance},
@@ -190,7 +179,7 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
   }
   for (const auto& t : map_terms_) stats_["map_terms"][t.name] = t.weight;
   for (const auto& t : terms_) stats_["terms"][t.name] = t.weight;
-  for (const auto& t : relax_terms_) stats_["border_relax_terms"][t.name] = t.weight;
+  for (const auto& kind : kinds_) kind->describe(stats_);
 }
 
 void GaborEngine::restore(const std::string& bytes) {
@@ -219,8 +208,8 @@ void GaborEngine::restore(const std::string& bytes) {
     ev.max_iterations = iteration_cap(plan_[r.stage]);
     ev.loss = r.loss;
     ev.seconds = r.seconds;
-    ev.window = plan_[r.stage].window.index;
-    ev.windows = plan_[r.stage].window.count;
+    ev.window = plan_[r.stage].geometry->index();
+    ev.windows = plan_[r.stage].geometry->count();
     earlier.push_back(ev);
   }
   ctx_.resumed(earlier);
@@ -277,11 +266,8 @@ void GaborEngine::check_restored(const std::string& source) const {
   };
   check_points(s.group_moving, true);
   check_points(s.group_frozen, false);
-  auto same = [](const std::vector<int64_t>& a, const std::vector<size_t>& b) {
-    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](int64_t x, size_t y) { return static_cast<size_t>(x) == y; });
-  };
-  if (stage.window.torus && (!same(s.group_moving, stage.moving) || !same(s.group_frozen, stage.frozen)))
-    throw refuse("points other than those of " + stage.label);
+  if (const std::string problem = stage.geometry->restored_points_problem(stage, s.group_moving, s.group_frozen); !problem.empty())
+    throw refuse(problem);
 }
 
 PointSet GaborEngine::synthesized() const {
@@ -345,76 +331,33 @@ PointSet GaborEngine::run() {
 
 void GaborEngine::enter_group(const Stage& stage) {
   group_ = stage.group;
-  window_ = stage.window;
+  geometry_ = stage.geometry;
   const int K = exemplar_.num_classes(), class_step = group_ % K;  // window plans: K groups per window
   if (p_["fresh_net_per_class"].get<bool>() && group_ > 0)
     pipe_->redraw_network(class_step == 0 ? ctx_.seed : ctx_.seed + 7919ull * class_step);
   // A group continues one optimization: its points and positions come from the checkpoint
   // when resumed inside it, else from the plan (or the window's choice) and the output.
   const bool fresh = !state_.moving.defined();
-  if (fresh && window_.torus) {
-    state_.group_moving.assign(stage.moving.begin(), stage.moving.end());
-    state_.group_frozen.assign(stage.frozen.begin(), stage.frozen.end());
-  } else if (fresh) {
-    choose_window_points(stage);
-  }
+  if (fresh)
+    geometry_->choose_points(stage, out_, state_.final_points, [this] { ctx_.poll(); }, state_.group_moving,
+                             state_.group_frozen);
   moving_idx_.assign(state_.group_moving.begin(), state_.group_moving.end());
   frozen_idx_.assign(state_.group_frozen.begin(), state_.group_frozen.end());
   // The group's tensors go to the device once, here (and back at the stage's end).
-  frozen_ = to_local(out_.subset(frozen_idx_)).to(device_);
+  frozen_ = geometry_->to_local(out_.subset(frozen_idx_)).to(device_);
   out_weights_ = s_.attr_cols.empty() ? torch::Tensor()
                                       : map_weights(concat(frozen_idx_, moving_idx_), stage.target_classes).to(device_);
   // Fresh: from the output; resumed: the checkpoint's (read on the CPU).
-  state_.moving = (fresh ? to_local(out_.subset(moving_idx_)) : state_.moving).to(device_);
+  state_.moving = (fresh ? geometry_->to_local(out_.subset(moving_idx_)) : state_.moving).to(device_);
   if (state_.stage_best.defined()) state_.stage_best = state_.stage_best.to(device_);
   state_.moving.set_requires_grad(true);
-  if (!window_.torus) {
-    const Domain& g = window_.grid;
-    const auto& m = window_.movable;
-    const auto local = torch::TensorOptions().dtype(state_.moving.scalar_type()).device(device_);
-    lo_ = torch::tensor({{(m.x0 - g.x0) / g.width(), (m.y0 - g.y0) / g.height()}}, torch::kFloat64).to(local);
-    hi_ = torch::tensor({{(m.x1 - g.x0) / g.width(), (m.y1 - g.y0) / g.height()}}, torch::kFloat64).to(local);
-  }
   measured_.clear();
-  if (!window_.torus && s_.statistics_in_output) {
-    const Domain& g = window_.grid;
-    const Domain o = intersection(g, shape_.domain());
-    measured_ = {(o.x0 - g.x0) / g.width(), (o.y0 - g.y0) / g.height(), (o.x1 - g.x0) / g.width(), (o.y1 - g.y0) / g.height()};
-  }
-  for (auto* terms : {&terms_, &relax_terms_})
-    for (auto& t : *terms) t.term->begin_class(ClassStage{exemplar_, out_, moving_idx_, frozen_idx_, s_.upscale, device_});
+  if (s_.statistics_in_output) measured_ = geometry_->part_inside(shape_.domain());
+  const ClassStage class_stage{exemplar_, out_, moving_idx_, frozen_idx_, s_.upscale, device_};
+  for (auto& t : terms_) t.term->begin_class(class_stage);
+  for (auto& kind : kinds_)
+    for (auto& t : kind->terms()) t.term->begin_class(class_stage);
   for (auto& t : map_terms_) t.term->begin_group(stage, out_);
-}
-
-void GaborEngine::choose_window_points(const Stage& stage) {
-  std::vector<char> in_play(exemplar_.num_classes(), 0);
-  for (int c : stage.target_classes) in_play[c] = 1;
-  state_.group_moving.clear();
-  state_.group_frozen.clear();
-  for (size_t i = 0; i < out_.size(); ++i) {
-    if (i % 65536 == 0) ctx_.poll();
-    const int c = out_.cls(i);
-    if (c < 0 || c >= static_cast<int>(in_play.size()) || !in_play[c]) continue;
-    if (c == stage.own_class && !state_.final_points[i] && inside(window_.movable, out_[i]))
-      state_.group_moving.push_back(static_cast<int64_t>(i));
-    else if (inside(window_.context, out_[i]))
-      state_.group_frozen.push_back(static_cast<int64_t>(i));
-  }
-}
-
-torch::Tensor GaborEngine::to_local(const PointSet& points) const {
-  if (window_.torus) return positions_tensor(points);  // the unit square is its own grid
-  auto xy = positions_tensor(points, torch::kFloat64);
-  const Domain& g = window_.grid;
-  xy = (xy - torch::tensor({{g.x0, g.y0}}, torch::kFloat64)) / g.width();
-  return xy.to(torch::kFloat32);
-}
-
-torch::Tensor GaborEngine::confined(const torch::Tensor& moving) const {
-  if (window_.torus) return wrap_unit(moving);
-  // Kept inside the movable rectangle with an identity gradient (as wrap_unit's): a point
-  // pushed past the edge sits on it, and the loss can still pull it back.
-  return moving + (torch::max(torch::min(moving, hi_), lo_) - moving).detach();
 }
 
 torch::Tensor GaborEngine::map_weights(const std::vector<size_t>& rows, const std::vector<int>& classes) const {
@@ -447,16 +390,10 @@ void GaborEngine::enter_stage(const Stage& stage) {
   rule_->begin_stage(ex_active);
   for (auto& t : map_terms_) t.term->begin_stage(stage);
   phases_.targets += since(t0);
-  relax_mask_ = torch::Tensor();
-  if (stage.border_relax) {
-    relax_parked_ = parked_over_uniform();
-    // A class the relax leaves alone (method.border_relax.parked) keeps every point where it is.
-    relax_mask_ = (relax_this_class() ? border_band() : torch::zeros({static_cast<int64_t>(moving_idx_.size()), 1}, torch::kBool))
-                      .to(device_);
-  }
-  json optimizer = p_["optimizer"];
-  if (stage.border_relax && s_.relax_lr > 0) optimizer["lr"] = json::array({s_.relax_lr});
-  optimizer_ = OptimizerRegistry::instance().create(optimizer, "method.optimizer", state_.moving, stage.sigma_index);
+  start_ = stage.kind->start(StageStartView{stage, s_, out_, moving_idx_, state_.stages});
+  if (start_.moving_mask.defined()) start_.moving_mask = start_.moving_mask.to(device_);
+  optimizer_ = OptimizerRegistry::instance().create(stage.kind->optimizer(p_["optimizer"], s_), "method.optimizer",
+                                                    state_.moving, stage.sigma_index);
   if (!state_.optimizer.empty()) optimizer_->load_state(state_.optimizer, ctx_.resume_source);  // resumed inside the stage
   stage_start_ = Clock::now();
   // Resumed inside the stage: its clock goes on from the last iteration recorded before.
@@ -464,44 +401,12 @@ void GaborEngine::enter_stage(const Stage& stage) {
     stage_start_ -= std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(state_.history.back().seconds));
   if (state_.iteration == 0) {
     ProgressEvent begin = event(stage);
-    if (stage.border_relax)  // why a relax moves nothing, where the user watches
-      begin.note = fmt::format("{:.2f} x uniform points' share within 1 % of the edge (method.border_relax.parked {:g}): {}",
-                               relax_parked_, s_.relax_parked, relax_mask_.any().item<bool>() ? "relaxing its band" : "nothing to move");
+    begin.note = start_.note;  // why the stage moves what it moves, where the user watches
     ctx_.stage_begin(begin);
   }
 }
 
-int GaborEngine::iteration_cap(const Stage& stage) const {
-  return stage.border_relax ? s_.relax_iterations : s_.max_iterations;
-}
-
-bool GaborEngine::relax_this_class() const {
-  if (s_.relax_parked <= 0 || relax_parked_ > s_.relax_parked) return true;
-  // An earlier class parked and was relaxed: this one is relaxed too, parked or not. Its
-  // sigma stages measured the unrolled grid, where its pairs with the relaxed classes
-  // across the seam were never seen (lemon_4c_v2's later classes: docs/lab/large_outputs.md).
-  // state_.stages is the checkpoint's, so a resumed run decides as the uninterrupted one.
-  return std::any_of(state_.stages.begin(), state_.stages.end(), [](const json& s) { return s.value("relaxed", false); });
-}
-
-double GaborEngine::parked_over_uniform() const {
-  PointSet own;  // the u x u torus's unit square
-  for (size_t i : moving_idx_) own.add(out_[i]);
-  return moving_idx_.empty() ? 0.0 : border_fraction(own) / uniform_border_fraction(own.domain());
-}
-
-torch::Tensor GaborEngine::border_band() const {
-  // From the positions the stage starts from (out_ changes only at stage ends, and a
-  // checkpoint holds it), so a run resumed inside the stage moves the same points.
-  const double b = s_.relax_band;
-  auto mask = torch::zeros({static_cast<int64_t>(moving_idx_.size()), 1}, torch::kBool);
-  auto m = mask.accessor<bool, 2>();
-  for (size_t i = 0; i < moving_idx_.size(); ++i) {
-    const Vec2 p = out_[moving_idx_[i]];
-    m[static_cast<int64_t>(i)][0] = p.x < b || p.x > 1 - b || p.y < b || p.y > 1 - b;
-  }
-  return mask;
-}
+int GaborEngine::iteration_cap(const Stage& stage) const { return stage.kind->iteration_cap(s_); }
 
 ProgressEvent GaborEngine::event(const Stage& stage) const {
   ProgressEvent ev;
@@ -511,11 +416,11 @@ ProgressEvent GaborEngine::event(const Stage& stage) const {
   ev.iteration = state_.iteration;
   ev.max_iterations = iteration_cap(stage);
   ev.seconds = since(stage_start_);
-  ev.window = stage.window.index;
-  ev.windows = stage.window.count;
-  if (!stage.window.torus) ev.window_grid = stage.window.grid;
+  ev.window = stage.geometry->index();
+  ev.windows = stage.geometry->count();
+  ev.window_grid = stage.geometry->grid();
   const size_t next = static_cast<size_t>(state_.stage) + 1;
-  ev.window_ends = stage.window.count <= 1 || next >= plan_.size() || plan_[next].window.index != stage.window.index;
+  ev.window_ends = ev.windows <= 1 || next >= plan_.size() || plan_[next].geometry->index() != ev.window;
   return ev;
 }
 
@@ -534,7 +439,8 @@ torch::Tensor GaborEngine::measure(const torch::Tensor& points, const torch::Ten
 }
 
 torch::Tensor GaborEngine::evaluate(const Stage& stage) {
-  const auto mv = confined(relax_mask_.defined() ? torch::where(relax_mask_, state_.moving, state_.moving.detach()) : state_.moving);
+  const torch::Tensor& mask = start_.moving_mask;
+  const auto mv = geometry_->confine(mask.defined() ? torch::where(mask, state_.moving, state_.moving.detach()) : state_.moving);
   auto pts = frozen_.size(0) > 0 ? torch::cat({frozen_, mv}) : mv;
   torch::Tensor l, jitter;
   if (s_.measure_tiles()) {  // the mean over the tiles of the cut (optim/gabor/random_tiles.hpp)
@@ -546,7 +452,8 @@ torch::Tensor GaborEngine::evaluate(const Stage& stage) {
       l = l.defined() ? l + v : v;
     }
   } else {
-    if (s_.measure == GaborSettings::Measure::rolled || stage.border_relax) pts = roll_torus(pts, tile_offset(ctx_.seed, state_.stage, state_.iteration, 1));
+    if (s_.measure == GaborSettings::Measure::rolled || stage.kind->rolls_grid())
+      pts = roll_torus(pts, tile_offset(ctx_.seed, state_.stage, state_.iteration, 1));
     jitter = pipe_->draw_jitter(jitter_rng_);
     l = measure(pts, out_weights_, jitter, stage, false);
   }
@@ -557,11 +464,10 @@ torch::Tensor GaborEngine::evaluate(const Stage& stage) {
   }
   // The paper's loss (+ map terms) at the stage's first evaluation: the unit of the point
   // terms, so one weight serves every scene and sigma (optim/terms/point_term.hpp).
-  const bool relax_terms = stage.border_relax && !relax_terms_.empty();
-  if ((!terms_.empty() || relax_terms) && state_.stage_scale < 0) state_.stage_scale = l.item<double>();
+  auto& own_terms = stage.kind->terms();  // the stage kind's, beside the run's
+  if ((!terms_.empty() || !own_terms.empty()) && state_.stage_scale < 0) state_.stage_scale = l.item<double>();
   for (auto& t : terms_) l = l + t.weight * state_.stage_scale * t.term->evaluate(mv, frozen_);
-  if (relax_terms)
-    for (auto& t : relax_terms_) l = l + t.weight * state_.stage_scale * t.term->evaluate(mv, frozen_);
+  for (auto& t : own_terms) l = l + t.weight * state_.stage_scale * t.term->evaluate(mv, frozen_);
   const auto td = Clock::now();
   l.backward();
   phases_.loss += std::chrono::duration<double>(td - tc).count();
@@ -574,17 +480,18 @@ void GaborEngine::run_stage(const Stage& stage) {
   // (optim/steps/stopping_rule.hpp). True: the stage has converged.
   auto judge = [&](int it) {
     const StopVerdict v =
-        rule_->judge(StageView{state_.stage_losses, it, [this] { return points_in_play(); }, window_.torus,
-                               window_.torus ? 1.0 / s_.upscale : 1.0},
+        rule_->judge(StageView{state_.stage_losses, it, [this] { return points_in_play(); }, geometry_->periodic(),
+                               geometry_->periodic() ? 1.0 / s_.upscale : 1.0},
                      state_.stage_watch);
     if (v.best) state_.stage_best = state_.moving.detach().clone();
     return v.stop;
   };
-  // A border relax runs its fixed count: its pattern is the finished stage's, judged already.
-  const bool judged = !stage.border_relax;
-  // A relax with no point to move (its class does not park, or none is near the edge) ends at
-  // once: its iterations would leave every point where it is.
-  if (stage.border_relax && !relax_mask_.any().item<bool>()) return;
+  // A kind that is not judged (the border relax: its pattern is the finished stage's, judged
+  // already) runs its fixed count.
+  const bool judged = stage.kind->judged();
+  // A stage whose kind moves no point (a relax whose class does not park, or none near the
+  // edge) ends at once: its iterations would leave every point where it is.
+  if (start_.moving_mask.defined() && !start_.moving_mask.any().item<bool>()) return;
   if (judged && state_.iteration == 0) judge(-1);  // the stage's start, a candidate to end on (a stop there is ignored)
   while (state_.iteration < iteration_cap(stage)) {
     const int it = state_.iteration;
@@ -616,19 +523,16 @@ void GaborEngine::finish_stage(const Stage& stage) {
     // A rule that keeps the stage's best iterate: the stage ends there (the group's next
     // stage starts from it too, as `moving` is the tensor it goes on with).
     if (state_.stage_best.defined()) state_.moving.copy_(state_.stage_best);
-    auto w = confined(state_.moving).to(torch::kCPU, torch::kFloat64);
+    auto w = geometry_->confine(state_.moving).to(torch::kCPU, torch::kFloat64);
     auto a = w.accessor<double, 2>();
-    for (size_t i = 0; i < moving_idx_.size(); ++i) out_[moving_idx_[i]] = to_output(window_, a[i][0], a[i][1]);
+    for (size_t i = 0; i < moving_idx_.size(); ++i) out_[moving_idx_[i]] = geometry_->to_output(a[i][0], a[i][1]);
   }
   ProgressEvent ev = event(stage);
   state_.stages.push_back({{"stage", stage.label}, {"class", stage.own_class}, {"sigma", stage.sigma}, {"k", stage.k},
                            {"iterations", state_.iteration},
                            {"final_loss", state_.stage_losses.empty() ? 0.0 : state_.stage_losses.back()},
                            {"seconds", ev.seconds}});
-  if (stage.border_relax) {  // what decided it
-    state_.stages.back()["parked_over_uniform"] = relax_parked_;
-    state_.stages.back()["relaxed"] = state_.iteration > 0;
-  }
+  state_.stages.back().update(start_.record);  // what the kind decided (the relax: its share, relaxed or not)
   ctx_.stage_end(ev, out_);
   // The next stage starts: a fresh optimizer and convergence window; a new group also
   // starts from the wrapped output positions.
@@ -640,37 +544,19 @@ void GaborEngine::finish_stage(const Stage& stage) {
   state_.stage_scale = -1;
   state_.optimizer.clear();
   optimizer_.reset();
-  relax_mask_ = torch::Tensor();
+  start_ = StageStart();
   if (state_.stage >= static_cast<int>(plan_.size()) || plan_[state_.stage].group != stage.group) {
-    if (!window_.torus)  // the window's own part is done: no later window moves it
-      for (size_t i : moving_idx_)
-        if (inside(window_.interior, out_[i])) state_.final_points[i] = 1;
+    geometry_->group_done(out_, moving_idx_, state_.final_points);
     state_.moving = torch::Tensor();
   }
-  // A window is done: its buffers go back to the kernel, so that the heap kept for speed
-  // within a window (optim/run/runtime.hpp) does not grow window after window.
-  if (!window_.torus && ev.window_ends) release_freed_memory();
+  if (ev.window_ends) geometry_->window_done();
 }
 
 PointSet GaborEngine::points_in_play() const {
   torch::NoGradGuard ng;
-  const auto mv = confined(state_.moving);
+  const auto mv = geometry_->confine(state_.moving);
   const auto local = (frozen_.size(0) > 0 ? torch::cat({frozen_, mv}) : mv).to(torch::kCPU, torch::kFloat64);
-  const auto a = local.accessor<double, 2>();
-  const Domain& g = window_.grid;
-  // A window's pattern is its grid's part of where points move: a frozen exemplar pad
-  // ("context") is the exemplar's, and counting it would hide how the moving points change.
-  PointSet ps(window_.torus ? Domain{} : intersection(g, shape_.moving_area()));
-  const int64_t frozen = frozen_.size(0);
-  for (int64_t i = 0; i < local.size(0); ++i) {
-    // Moving points as finish_stage writes them (held inside the movable part); a window's
-    // frozen ones where they are, which may be past the grid (the filter below leaves those
-    // out). On the torus both are the positions themselves.
-    const bool frozen_in_window = i < frozen && !window_.torus;
-    const Vec2 p = frozen_in_window ? Vec2{g.x0 + g.width() * a[i][0], g.y0 + g.height() * a[i][1]} : to_output(window_, a[i][0], a[i][1]);
-    if (inside(ps.domain(), p)) ps.add(p);  // a window's frozen context beyond its grid is not its pattern
-  }
-  return ps;
+  return geometry_->pattern(local, frozen_.size(0), shape_.moving_area());
 }
 
 void GaborEngine::save_checkpoint() {

@@ -12,6 +12,10 @@
 //                   [+ point terms on the positions (optim/terms/point_term.hpp); not in the paper]
 //                   -> backward -> PositionOptimizer step        (until the StoppingRule)
 //
+// What a stage does with its points (which move, for how long, rolled or not, at which rate,
+// with which terms of its own) is its kind's (optim/gabor/stage_kind.hpp): the paper's sigma
+// stage, or the border relax after a class's (optim/gabor/border_relax_stage.hpp).
+//
 // Everything that changes while it runs lives in the state, so the state can be saved at any
 // iteration (SynthesisContext::save_checkpoint) and a run restored from it takes the very
 // same steps. Everything else (targets, networks, rasterizers) is a function of the config,
@@ -55,9 +59,6 @@ class GaborEngine {
   // InputError naming `source` otherwise.
   void check_restored(const std::string& source) const;
   void enter_group(const Stage& stage);   // networks, neighbors, point terms of a new group
-  void choose_window_points(const Stage& stage);  // a window group's moving and frozen points
-  torch::Tensor confined(const torch::Tensor& moving) const;  // wrapped (torus) or kept in the window
-  torch::Tensor to_local(const PointSet& points) const;       // output -> the group's grid coordinates
   torch::Tensor map_weights(const std::vector<size_t>& rows, const std::vector<int>& classes) const;
   void enter_stage(const Stage& stage);   // targets and a fresh (or restored) optimizer
   void run_stage(const Stage& stage);
@@ -72,13 +73,7 @@ class GaborEngine {
   json runtime_record() const;      // device, precision, determinism, maps path (run.json's "runtime")
   PointSet synthesized() const;     // out_ without a frozen exemplar pad, on the area where points move
   ProgressEvent event(const Stage& stage) const;
-  int iteration_cap(const Stage& stage) const;  // the border relax's count, else method.max_iterations
-  // A border relax stage's relax_mask_: its class's points near the edge (border_band) when
-  // relax_this_class(), else none; parked_over_uniform() is the share that decides (within
-  // 1 % of the edge, over uniform points'), on the stage's start.
-  torch::Tensor border_band() const;
-  double parked_over_uniform() const;
-  bool relax_this_class() const;  // it parks, or an earlier class parked (or parked = 0)
+  int iteration_cap(const Stage& stage) const;  // its kind's
 
   json p_;
   const PointSet& exemplar_;
@@ -93,9 +88,9 @@ class GaborEngine {
   std::unique_ptr<GaborPipeline> pipe_;
   std::vector<WeightedMapTerm> map_terms_;
   std::vector<WeightedPointTerm> terms_;
-  std::vector<WeightedPointTerm> relax_terms_;  // method.border_relax.separation: in relax stages only
   std::unique_ptr<StoppingRule> rule_;
   SynthesisPlan plan_;
+  std::vector<std::shared_ptr<StageKind>> kinds_;  // the plan's stage kinds, each once, in plan order
   PointSet out_;
   size_t pad_begin_ = 0;  // out_[pad_begin_..] is the frozen exemplar pad ("border": "context")
   SynthesisState state_;
@@ -105,17 +100,15 @@ class GaborEngine {
 
   // The current group and stage (rebuilt from the plan and the state).
   int group_ = -1;
-  StageWindow window_;                   // the group's window (the unit torus for the paper's plan)
+  std::shared_ptr<const StageGeometry> geometry_;  // the group's: the unit torus, or a window
   std::vector<size_t> moving_idx_, frozen_idx_;
   torch::Tensor frozen_, out_weights_;
-  torch::Tensor lo_, hi_;                // the window's movable rectangle, local coordinates (1 x 2)
   // method.window.statistics = "output": the grid's part inside the output rectangle, as
   // fractions of the grid {x0, y0, x1, y1}; empty: the losses measure the whole grid.
   std::vector<double> measured_;
-  // A border relax stage: [moving x 1], true for the points in the band (the others get no
-  // gradient, so a fresh Adam leaves them where they are); undefined in every other stage.
-  torch::Tensor relax_mask_;
-  double relax_parked_ = 0;  // parked_over_uniform() where the relax stage started
+  // What the stage's kind decided as it started; its mask on the device: the moving points
+  // without it get no gradient, so a fresh Adam leaves them where they are.
+  StageStart start_;
   std::unique_ptr<PositionOptimizer> optimizer_;
   Clock::time_point stage_start_, last_checkpoint_, run_start_;
   double seconds_before_ = 0;  // wall time of the processes before a resume (from the checkpoint)

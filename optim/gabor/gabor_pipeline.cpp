@@ -198,6 +198,7 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
     if (quick) s.relax_iterations = std::min(s.relax_iterations, s.max_iterations);
     s.relax_band = get_number(r, "band", "method.border_relax") * s.mean_nn_distance / s.upscale;
     s.relax_parked = get_number(r, "parked", "method.border_relax");
+    s.relax_separation = get_number(r, "separation", "method.border_relax");
     const json& after = r["after"];
     if (after != "class" && after != "all")
       throw config_error("method.border_relax.after", "expected \"class\" (after each class's sigma stages) or \"all\" "

@@ -44,15 +44,17 @@ struct GaborSettings {
   enum class Measure { grid, tiles, rolled };
   Measure measure = Measure::grid;
   bool measure_tiles() const { return measure == Measure::tiles; }
-  // method.border_relax: the relax stage after each class's sigmas (0: none, the paper's;
-  // null or "auto", the default, resolves to 60 on the u x u square measured as one grid, else 0);
-  // its band in output units (the unit square) and Adam's rate (0: the finest sigma's); a
-  // class is relaxed when its share within 1 % of the edge exceeds relax_parked x uniform's
-  // or an earlier class was relaxed (0: always).
+  // method.border_relax (optim/gabor/border_relax_stage.hpp): the relax stage after each
+  // class's sigmas (0: none, the paper's; null or "auto", the default, resolves to 60 on the
+  // u x u square measured as one grid, else 0); its band in output units (the unit square),
+  // Adam's rate (0: the finest sigma's) and separation term's weight; a class is relaxed when
+  // its share within 1 % of the edge exceeds relax_parked x uniform's or an earlier class was
+  // relaxed (0: always).
   int relax_iterations = 0;
   double relax_band = 0;
   double relax_lr = 0;
   double relax_parked = 0;
+  double relax_separation = 0;
   // method.border_relax.after "all" (the default): the relax stages follow every class's sigma
   // stages (which stay the paper's bit for bit), each measuring every class; "class" (false):
   // each follows its own class's.

@@ -3,21 +3,18 @@
 #include <algorithm>
 
 #include "optim/gabor/gabor_pipeline.hpp"
+#include "optim/gabor/sigma_stage.hpp"
 
 namespace ppsynth {
-
-Vec2 to_output(const StageWindow& w, double u, double v) {
-  if (w.torus) return {u, v};
-  const Domain& g = w.grid;
-  const Domain& m = w.movable;
-  return {std::clamp(g.x0 + g.width() * u, m.x0, m.x1), std::clamp(g.y0 + g.height() * v, m.y0, m.y1)};
-}
 
 SynthesisPlan class_sigma_plan(const PointSet& exemplar, const GaborSettings& s,
                                const std::vector<std::vector<size_t>>& out_index) {
   SynthesisPlan plan;
-  SynthesisPlan relax_after_all;  // method.border_relax.after "all": appended after every class
+  SynthesisPlan after_all;  // class-end stages after every class's (border_relax.after "all")
   const int K = exemplar.num_classes();
+  const auto sigma_stage = std::make_shared<SigmaStage>();
+  const auto torus = std::make_shared<TorusGeometry>();
+  const auto class_end = class_end_kinds(s);
   // The neighbor count of a stage whose targets hold `points` exemplar points.
   auto k_for = [&](size_t points) { return s.k_per_stage ? static_cast<int>(std::min<size_t>(s.k, points)) : s.k; };
   for (int st = 0; st < K; ++st) {
@@ -39,27 +36,32 @@ SynthesisPlan class_sigma_plan(const PointSet& exemplar, const GaborSettings& s,
       stage.own_class = cls;
       stage.moving = out_index[cls];
       stage.frozen = frozen;
+      stage.kind = sigma_stage;
+      stage.geometry = torus;
       plan.push_back(stage);
-      if (j + 1 == s.sigmas.size() && s.relax_iterations > 0) {  // the finest sigma's settings, the border band only
-        stage.label = of_class + "border relax";
-        stage.border_relax = true;
-        if (!s.relax_after_all || K == 1) {  // one class: after it is after all
-          plan.push_back(std::move(stage));
+      if (j + 1 < s.sigmas.size()) continue;
+      int own_groups = 0;  // after-all kinds so far: each takes K groups of its own
+      for (const auto& kind : class_end) {  // the finest sigma's settings
+        Stage end = stage;
+        end.label = of_class + kind->label();
+        end.kind = kind;
+        if (!kind->after_all_classes() || K == 1) {  // one class: after it is after all
+          plan.push_back(std::move(end));
           continue;
         }
         // After every class: a group of its own, beside every other point of every class,
         // measured against the targets of all classes (the last class's stages measure them).
-        stage.group = K + st;
-        stage.target_classes = s.class_order;
-        stage.k = k_for(exemplar.size());
-        stage.frozen.clear();
+        end.group = K * ++own_groups + st;
+        end.target_classes = s.class_order;
+        end.k = k_for(exemplar.size());
+        end.frozen.clear();
         for (int other : s.class_order)
-          if (other != cls) stage.frozen.insert(stage.frozen.end(), out_index[other].begin(), out_index[other].end());
-        relax_after_all.push_back(std::move(stage));
+          if (other != cls) end.frozen.insert(end.frozen.end(), out_index[other].begin(), out_index[other].end());
+        after_all.push_back(std::move(end));
       }
     }
   }
-  plan.insert(plan.end(), relax_after_all.begin(), relax_after_all.end());
+  plan.insert(plan.end(), after_all.begin(), after_all.end());
   return plan;
 }
 

@@ -5,41 +5,29 @@
 // moving points' optimization (the paper: the sigmas of one class continue from each other's
 // unwrapped positions); a new group starts from the output's wrapped positions.
 //
-// The paper's plan (class_sigma_plan): one group per class in class order, one stage per
-// sigma, earlier classes frozen, the maps on the unit square read as a torus; with
-// method.border_relax one more stage per class relaxes its border band: after every class's
-// stages, a group of its own each (border_relax.after "all", the default), or last in its
-// class's group ("class"). The windows of
-// a large canvas (optim/gabor/window_plan.hpp) are another plan for the same engine
-// (optim/gabor/gabor_engine.hpp): the same class and sigma stages, once per window.
+// Each stage carries two policies the engine (optim/gabor/gabor_engine.hpp) asks, never
+// branching on which they are: its kind (what it does with its points: the paper's sigma
+// stage, the border relax; optim/gabor/stage_kind.hpp) and its geometry (where its points live:
+// the unit torus, a window; optim/gabor/stage_geometry.hpp).
+//
+// The paper's plan (class_sigma_plan): one group per class in class order, one sigma stage per
+// sigma, earlier classes frozen, on the torus; each class-end kind the settings ask for
+// (method.border_relax) adds one more stage per class, at the finest sigma's settings: after
+// every class's stages, a group of its own each (border_relax.after "all", the default), or
+// last in its class's group ("class"). The windows of a large canvas
+// (optim/gabor/window_plan.hpp) are another plan: the same class and sigma stages, once per
+// window, each window's stages on its window geometry.
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/point_set.hpp"
+#include "optim/gabor/stage_geometry.hpp"
+#include "optim/gabor/stage_kind.hpp"
 
 namespace ppsynth {
 
 struct GaborSettings;
-
-// Where a stage's maps are computed, in output coordinates. The grid covers the square
-// `grid`; positions enter the maps in its local coordinates, (p - corner) / side.
-struct StageWindow {
-  Domain grid{};           // a square
-  bool torus = true;       // the paper: moving positions wrap on the unit square
-  // Windows (torus false) choose their points when their group starts, from the positions
-  // of the moment: the moving ones are the class's points inside `movable` not yet final;
-  // frozen are the other points of the stage's classes inside `context` (the grid and the
-  // reach of the maps beyond it). Moving points stay inside `movable`; the ones inside
-  // `interior` when the group ends are final (no later window moves them).
-  Domain movable{}, interior{}, context{};
-  int index = 0, count = 1;  // window i of n (0-based)
-};
-
-// A grid-local position (u, v) in output coordinates: on the torus as it is; in a window,
-// corner + side * (u, v) kept inside `movable`. Local positions are float: a point held at the
-// movable edge in float maps back up to a few 1e-8 beyond it, and an output point outside
-// its domain is one the readers refuse.
-Vec2 to_output(const StageWindow& window, double u, double v);
 
 struct Stage {
   std::string label;                   // "class 1/2 (id 0), sigma 1/4": progress and loss curves
@@ -49,12 +37,12 @@ struct Stage {
   int k = 0;                           // neighbors per grid position
   std::vector<int> target_classes;     // exemplar classes the targets are computed from
   int own_class = -1;                  // the moving class (for per-class terms); -1: none
-  StageWindow window;
-  // method.border_relax: only the moving points near the grid's edge move (those within the
-  // band when the stage starts), on the grid rolled every iteration, for a fixed number of
-  // iterations (no stopping rule).
-  bool border_relax = false;
-  std::vector<size_t> moving, frozen;  // indices into the output (torus plans; windows choose their own)
+  // Where its points live (optim/gabor/stage_geometry.hpp): the unit torus, or a window.
+  std::shared_ptr<const StageGeometry> geometry;
+  // What the stage does with its points (optim/gabor/stage_kind.hpp): the paper's sigma stage,
+  // or a class-end kind (the border relax) after the finest sigma, with its settings.
+  std::shared_ptr<StageKind> kind;
+  std::vector<size_t> moving, frozen;  // indices into the output (the torus plan's; windows choose their own)
 };
 
 using SynthesisPlan = std::vector<Stage>;

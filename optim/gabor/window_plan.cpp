@@ -54,7 +54,6 @@ WindowLayout window_layout(const Domain& canvas, const Domain& moving_area, doub
   for (int j = 0; j < w.ny; ++j)
     for (int i = 0; i < w.nx; ++i) {
       StageWindow s;
-      s.torus = false;
       s.grid = Domain{ax.grid0[i], ay.grid0[j], ax.grid0[i] + w.side, ay.grid0[j] + w.side};
       s.interior = Domain{ax.interior0[i], ay.interior0[j], ax.interior1[i], ay.interior1[j]};
       s.movable = Domain{std::max(s.interior.x0, moving_area.x0), std::max(s.interior.y0, moving_area.y0),
@@ -72,10 +71,11 @@ SynthesisPlan window_plan(const PointSet& exemplar, const GaborSettings& s, cons
   const SynthesisPlan per_window = class_sigma_plan(exemplar, s, none);
   SynthesisPlan plan;
   for (const auto& w : layout.windows) {
+    const auto geometry = std::make_shared<WindowGeometry>(w);
     for (Stage st : per_window) {
       st.label = "window " + std::to_string(w.index + 1) + "/" + std::to_string(w.count) + ", " + st.label;
       st.group += w.index * exemplar.num_classes();
-      st.window = w;
+      st.geometry = geometry;
       plan.push_back(std::move(st));
     }
   }

@@ -1,4 +1,4 @@
-// method.border_relax (optim/gabor/stage_plan.hpp): after each class's sigma stages on the u x u
+// method.border_relax (optim/gabor/border_relax_stage.hpp): after each class's sigma stages on the u x u
 // torus, a stage that moves only that class's points within the band of the grid's edge, on
 // the rolled grid. It must leave every other point where the stage found it, move the band,
 // resume bit for bit, and be refused where there is no grid edge. By default ("auto") it runs

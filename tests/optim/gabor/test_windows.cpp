@@ -202,27 +202,27 @@ TEST_CASE("the exemplar-context border: exact counts inside the rectangle, the p
 TEST_CASE("a point held at a window's movable edge maps back inside it, not 1e-8 beyond", "[optim][windows]") {
   // A context run wrote (1.09, -3.1e-08) into a [0, 2] x [0, 2] output, which the readers then
   // refused: the edge is held in float grid-local coordinates. Over many pads (grids) the naive
-  // map back lands outside for some; to_output never does.
+  // map back lands outside for some; WindowGeometry::to_output never does.
   int naive_outside = 0;
   for (int k = 1; k <= 400; ++k) {
     const double pad = 0.001 * k;
     StageWindow w;
-    w.torus = false;
     w.grid = {-pad, -pad, 2 + pad, 2 + pad};
     w.movable = w.interior = {0, 0, 2, 2};
+    const WindowGeometry window(w);
     const double side = w.grid.width();
     const double lo = static_cast<float>((0 - w.grid.x0) / side), hi = static_cast<float>((2 - w.grid.x0) / side);
     naive_outside += !w.movable.contains({w.grid.x0 + side * lo, w.grid.y0 + side * hi}, 0.0);
     for (double u : {lo, hi})
       for (double v : {lo, hi}) {
         INFO("pad " << pad << ", local " << u << ", " << v);
-        CHECK(w.movable.contains(to_output(w, u, v), 0.0));
+        CHECK(w.movable.contains(window.to_output(u, v), 0.0));
       }
   }
   CHECK(naive_outside > 0);
-  StageWindow torus;  // the paper's square: positions are the output's, unchanged
-  CHECK(to_output(torus, 0.25, 0.999).x == 0.25);
-  CHECK(to_output(torus, 0.25, 0.999).y == 0.999);
+  const TorusGeometry torus;  // the paper's square: positions are the output's, unchanged
+  CHECK(torus.to_output(0.25, 0.999).x == 0.25);
+  CHECK(torus.to_output(0.25, 0.999).y == 0.999);
 }
 
 TEST_CASE("window statistics \"output\": the losses measure the grid's part inside the output only", "[optim][windows]") {
