@@ -33,14 +33,14 @@ torch::Tensor border_band(const PointSet& output, const std::vector<size_t>& mov
 
 }  // namespace
 
-BorderRelaxStage::BorderRelaxStage(const GaborSettings& s) : after_all_(s.relax_after_all) {
-  terms_ = create_weighted_terms<PointTerm>(json{{"separation", {{"weight", s.relax_separation}}}}, "method.border_relax");
+BorderRelaxStage::BorderRelaxStage(const GaborSettings& s) : after_all_(s.border_relax.after_all) {
+  terms_ = create_weighted_terms<PointTerm>(json{{"separation", {{"weight", s.border_relax.separation}}}}, "method.border_relax");
 }
 
-int BorderRelaxStage::iteration_cap(const GaborSettings& s) const { return s.relax_iterations; }
+int BorderRelaxStage::iteration_cap(const GaborSettings& s) const { return s.border_relax.iterations; }
 
 nlohmann::json BorderRelaxStage::optimizer(nlohmann::json spec, const GaborSettings& s) const {
-  if (s.relax_lr > 0) spec["lr"] = json::array({s.relax_lr});  // else the finest sigma's
+  if (s.border_relax.lr > 0) spec["lr"] = json::array({s.border_relax.lr});  // else the finest sigma's
   return spec;
 }
 
@@ -51,15 +51,15 @@ StageStart BorderRelaxStage::start(const StageStartView& v) const {
   // stages measured the unrolled grid, where its pairs with the relaxed classes across the
   // seam were never seen (lemon_4c_v2's later classes: docs/lab/large_outputs.md). The
   // records are the checkpoint's, so a resumed run decides as the uninterrupted one.
-  const bool relax = s.relax_parked <= 0 || parked > s.relax_parked ||
+  const bool relax = s.border_relax.parked <= 0 || parked > s.border_relax.parked ||
                      std::any_of(v.finished_stages.begin(), v.finished_stages.end(),
                                  [](const json& r) { return r.value("relaxed", false); });
   StageStart st;
-  st.moving_mask = relax ? border_band(v.output, v.moving, s.relax_band)
+  st.moving_mask = relax ? border_band(v.output, v.moving, s.border_relax.band)
                          : torch::zeros({static_cast<int64_t>(v.moving.size()), 1}, torch::kBool);
   const bool moves = st.moving_mask.any().item<bool>();
   st.note = fmt::format("{:.2f} x uniform points' share within 1 % of the edge (method.border_relax.parked {:g}): {}",
-                        parked, s.relax_parked, moves ? "relaxing its band" : "nothing to move");
+                        parked, s.border_relax.parked, moves ? "relaxing its band" : "nothing to move");
   st.record = {{"parked_over_uniform", parked}, {"relaxed", moves}};
   return st;
 }
@@ -71,7 +71,7 @@ void BorderRelaxStage::describe(nlohmann::json& stats) const {
 PPSYNTH_REGISTER(StageKindRegistry, "border_relax", json::object(), json::object(),
                  "method.border_relax: after each class's sigma stages, its points near the torus's grid edge move",
                  [](const json&, const std::string&, const GaborSettings& s) -> std::unique_ptr<StageKind> {
-                   if (s.relax_iterations <= 0) return nullptr;
+                   if (s.border_relax.iterations <= 0) return nullptr;
                    return std::make_unique<BorderRelaxStage>(s);
                  })
 

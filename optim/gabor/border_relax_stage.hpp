@@ -6,8 +6,8 @@
 // (the pattern is the finished stage's, judged already), at its own rate, with a separation
 // term. A class is relaxed when its share of points within 1 % of the edge exceeds `parked` x
 // uniform points' share, or when an earlier class was relaxed (its pairs with the relaxed
-// classes across the seam were never measured). Settings: GaborSettings::relax_* (resolved
-// from method.border_relax in optim/gabor/gabor_pipeline.cpp).
+// classes across the seam were never measured). Its options, declared once with their
+// defaults and ranges: GaborSettings::border_relax (optim/gabor/border_relax_options.hpp).
 #include "optim/gabor/stage_kind.hpp"
 
 namespace ppsynth {

@@ -10,7 +10,7 @@ void ClassOwnMapTerm::begin_run(const MapTermRun& run) {
   exemplar_ = &run.exemplar;
   settings_ = run.settings;
   seed_ = run.seed;
-  fresh_net_ = run.params["fresh_net_per_class"].get<bool>();
+  fresh_net_ = run.settings.fresh_net_per_class;
   if (run.exemplar.num_classes() > 1) pipe_ = std::make_unique<GaborPipeline>(run.params, run.settings, run.seed, run.device);
 }
 

@@ -137,10 +137,6 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
       jitter_rng_(ctx.seed ^ 0x9e3779b97f4a7c15ull) {
   validate(exemplar, "exemplar");
   s_ = resolve_gabor_settings(p_, exemplar, shape_, ctx.quick);
-  if (shape_.rectangle && !p_["terms"].empty())  // they assume the unit torus (optim/terms/point_term.hpp)
-    throw config_error("method.terms", "point terms work on the paper's u x u outputs only, not with \"output\"");
-  if (shape_.rectangle && !p_["map_terms"].empty())
-    throw config_error("method.map_terms", "map terms work on the paper's u x u outputs only, not with \"output\"");
   pipe_ = std::make_unique<GaborPipeline>(p_, s_, ctx.seed, device_);
   map_terms_ = create_map_terms(p_["map_terms"]);
   for (auto& t : map_terms_) t.term->begin_run(MapTermRun{p_, s_, exemplar, ctx.seed, device_});
@@ -333,7 +329,7 @@ void GaborEngine::enter_group(const Stage& stage) {
   group_ = stage.group;
   geometry_ = stage.geometry;
   const int K = exemplar_.num_classes(), class_step = group_ % K;  // window plans: K groups per window
-  if (p_["fresh_net_per_class"].get<bool>() && group_ > 0)
+  if (s_.fresh_net_per_class && group_ > 0)
     pipe_->redraw_network(class_step == 0 ? ctx_.seed : ctx_.seed + 7919ull * class_step);
   // A group continues one optimization: its points and positions come from the checkpoint
   // when resumed inside it, else from the plan (or the window's choice) and the output.

@@ -13,10 +13,6 @@
 
 namespace ppsynth {
 
-// method.border_relax.iterations "auto" on the u x u square: the count the clean-border
-// criterion was measured with (docs/lab/large_outputs.md).
-constexpr int k_auto_relax_iterations = 60;
-
 json gabor_defaults() {
   return json{
       {"c1", 1.0},
@@ -56,34 +52,9 @@ json gabor_defaults() {
       // every iteration: the grid's edge never stays where a point could park on it;
       // optim/gabor/random_tiles.hpp).
       {"measure", "grid"},
-      // Not in the paper: after each class's sigma stages on the u x u torus, `iterations` more
-      // at the finest sigma that move only that class's points within `band` mean
-      // nearest-neighbor spacings (of the output) of the grid's edge, the rest frozen, with the
-      // grid rolled by a random offset every iteration as "rolled" does: the points the
-      // published grid parked on its edge go back into the pattern around them (Adam at `lr`,
-      // null: the finest sigma's rate). 0 iterations: the paper's border. `separation`: the
-      // weight of the separation point term (optim/terms/separation_term.hpp) in the relax stages
-      // only, beside any method.terms: across the rolled seam the Gabor losses pull a class's
-      // close pairs into one point (lemon_4c_v2's class 0: docs/lab/large_outputs.md), and the
-      // term keeps the exemplar's spacing while the sigma stages stay the paper's. 0: off.
-      // `parked`: a class is relaxed only when more of its points lie within 1 % of the
-      // grid's edge (the border band) than `parked` x what uniform points put there
-      // (1.5: the bound; 0: every class), or when an earlier class was relaxed (its
-      // pairs with that class across the seam were never measured). Where no class parks
-      // there is no pile to take apart, and a relax would only spread the band (it keeps the
-      // band's count): poisson_n64c2_point at the full settings parks nowhere and came out
-      // thinner at the seam (docs/lab/large_outputs.md). `after`: "all" puts the relaxes after
-      // every class's sigma stages, which then are the paper's bit for bit as on a one-class
-      // exemplar: class by class in class order, its band moving, every other point of every
-      // class frozen, against the targets of all classes. "class" puts each class's relax
-      // right after its own sigma stages, so the later classes are synthesized beside the
-      // relaxed ones: lemon_4c_v2 scored worse so (docs/lab/large_outputs.md). One class: the same.
-      // `iterations` null or "auto" (the default: the clean border, the published one
-      // kept as an option): 60 on the u x u square measured as one grid without map_terms, 0 where
-      // there is no fixed grid edge to relax (rectangles take output.border instead; "tiles"
-      // and "rolled" move the edge). 0: the paper's border, as the shipped configs/runs set it
-      // to reproduce the paper (configs/paper runs them).
-      {"border_relax", {{"iterations", nullptr}, {"band", 1.0}, {"lr", nullptr}, {"separation", 1.0}, {"parked", 1.5}, {"after", "all"}}},
+      // Not in the paper: the border relax stage after each class's sigma stages
+      // (optim/gabor/border_relax_options.hpp declares its keys, defaults and ranges).
+      {"border_relax", BorderRelaxOptions::defaults()},
       // Rectangle outputs ("output": {"size"} or {"points"}) run window by window
       // (optim/gabor/window_plan.hpp): windows of at most `pixels` grid positions across; a margin
       // of 3 sigma_max + `receptive_field` positions (the network's half-width) on each side
@@ -108,7 +79,7 @@ json gabor_bounds() {
       {"max_iterations", "int [1, 1000000000]"},
       {"class_order", "int [0, 1000000]"},
       {"window", {{"pixels", "int [16, 8192]"}, {"receptive_field", "int [0, 1000]"}}},
-      {"border_relax", {{"band", "(0, inf)"}, {"separation", "[0, inf)"}, {"parked", "[0, 1000]"}}},
+      {"border_relax", BorderRelaxOptions::bounds()},
       {"quick", {{"res", "int [8, 8192]"}, {"channels", "int [1, 4096]"}, {"max_iterations", "int [1, 1000000000]"},
                  {"num_sigmas", "int [1, 64]"}}},
   };
@@ -185,37 +156,20 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
                                          "(output.size or output.points) takes output.border instead");
   if (s.measure != GaborSettings::Measure::grid && !p["map_terms"].empty())
     throw config_error("method.measure", named + " does not combine with method.map_terms (their maps are the unrolled grid's)");
-  {
-    const json& r = p["border_relax"];
-    const json& iterations = r["iterations"];
-    const bool relax_auto = iterations.is_null() || iterations == "auto";
-    // A count is bounded as every other parameter is; gabor_bounds() cannot hold it, since it
-    // would refuse "auto".
-    if (!relax_auto) check_bounds(r, json{{"iterations", "int [0, 1000000000]"}}, "method.border_relax");
-    // Where "auto" relaxes: the paper's square, its whole grid measured, no maps of other terms.
-    const bool has_grid_edge = !shape.rectangle && s.measure == GaborSettings::Measure::grid && p["map_terms"].empty();
-    s.relax_iterations = relax_auto ? (has_grid_edge ? k_auto_relax_iterations : 0) : get_int(r, "iterations", "method.border_relax");
-    if (quick) s.relax_iterations = std::min(s.relax_iterations, s.max_iterations);
-    s.relax_band = get_number(r, "band", "method.border_relax") * s.mean_nn_distance / s.upscale;
-    s.relax_parked = get_number(r, "parked", "method.border_relax");
-    s.relax_separation = get_number(r, "separation", "method.border_relax");
-    const json& after = r["after"];
-    if (after != "class" && after != "all")
-      throw config_error("method.border_relax.after", "expected \"class\" (after each class's sigma stages) or \"all\" "
-                                                      "(after every class's), not " + after.dump());
-    s.relax_after_all = after == "all";
-    const json& lr = r["lr"];
-    if (!lr.is_null() && !(lr.is_number() && lr.get<double>() > 0))
-      throw config_error("method.border_relax.lr", "expected null (the finest sigma's rate) or a number > 0");
-    s.relax_lr = lr.is_null() ? 0.0 : lr.get<double>();
-    if (s.relax_iterations > 0 && shape.rectangle)
-      throw config_error("method.border_relax", "relaxes the border of the paper's u x u square; a rectangle output "
-                                                "(output.size or output.points) takes output.border instead");
-    if (s.relax_iterations > 0 && s.measure != GaborSettings::Measure::grid)
-      throw config_error("method.border_relax", "needs method.measure \"grid\" (the other measures have no grid edge to park on)");
-    if (s.relax_iterations > 0 && !p["map_terms"].empty())
-      throw config_error("method.border_relax", "does not combine with method.map_terms (their maps are the unrolled grid's)");
-  }
+  BorderRelaxContext relax;
+  relax.rectangle = shape.rectangle;
+  relax.measured_whole = s.measure == GaborSettings::Measure::grid;
+  relax.map_terms = !p["map_terms"].empty();
+  relax.quick = quick;
+  relax.max_iterations = s.max_iterations;
+  relax.mean_nn_distance = s.mean_nn_distance;
+  relax.upscale = s.upscale;
+  s.border_relax = BorderRelaxOptions::resolve(p["border_relax"], relax);
+  s.fresh_net_per_class = get_bool(p, "fresh_net_per_class", "method");
+  if (shape.rectangle && !p["terms"].empty())  // they assume the unit torus (optim/terms/point_term.hpp)
+    throw config_error("method.terms", "point terms work on the paper's u x u outputs only, not with \"output\"");
+  if (shape.rectangle && !p["map_terms"].empty())
+    throw config_error("method.map_terms", "map terms work on the paper's u x u outputs only, not with \"output\"");
   if (!shape.rectangle) {
     s.out_res = s.upscale * s.res;
     s.out_scale = s.upscale;

@@ -16,6 +16,7 @@
 #include "losses/composite_loss.hpp"
 #include "models/feature_net.hpp"
 #include "models/rasterizer.hpp"
+#include "optim/gabor/border_relax_options.hpp"
 
 namespace ppsynth {
 
@@ -44,21 +45,7 @@ struct GaborSettings {
   enum class Measure { grid, tiles, rolled };
   Measure measure = Measure::grid;
   bool measure_tiles() const { return measure == Measure::tiles; }
-  // method.border_relax (optim/gabor/border_relax_stage.hpp): the relax stage after each
-  // class's sigmas (0: none, the paper's; null or "auto", the default, resolves to 60 on the
-  // u x u square measured as one grid, else 0); its band in output units (the unit square),
-  // Adam's rate (0: the finest sigma's) and separation term's weight; a class is relaxed when
-  // its share within 1 % of the edge exceeds relax_parked x uniform's or an earlier class was
-  // relaxed (0: always).
-  int relax_iterations = 0;
-  double relax_band = 0;
-  double relax_lr = 0;
-  double relax_parked = 0;
-  double relax_separation = 0;
-  // method.border_relax.after "all" (the default): the relax stages follow every class's sigma
-  // stages (which stay the paper's bit for bit), each measuring every class; "class" (false):
-  // each follows its own class's.
-  bool relax_after_all = false;
+  BorderRelaxOptions border_relax;  // method.border_relax (optim/gabor/border_relax_options.hpp)
   // The grid of each sigma stage (coarse -> fine): `res` and `out_res` at every stage, or with
   // method.grid.per_sigma coarser grids at the coarser sigmas, keeping the finest stage's
   // grid positions per sigma (the Gabor frequencies scale with 1/sigma, so each stage's
@@ -71,6 +58,7 @@ struct GaborSettings {
   std::vector<int> class_order;
   int max_iterations = 0;
   bool jitter = true;
+  bool fresh_net_per_class = false;  // a new random network per class group (the published attribute scenes)
   json feature_net;             // the net spec after --quick shrinking
 };
 

@@ -20,10 +20,12 @@
 #include "tests/support/gabor_runs.hpp"
 #include "tests/support/same_bits.hpp"
 #include "tests/support/small_exemplar.hpp"
+#include "tests/support/stage_ends.hpp"
 
 using namespace ppsynth;
 using ppsynth::test::method_params;
 using ppsynth::test::same_bits;
+using ppsynth::test::StageEnds;
 
 namespace {
 
@@ -34,17 +36,6 @@ json relaxed_method(int iterations, double separation = 1.0, double parked = 0) 
               {"border_relax", {{"iterations", iterations}, {"band", 1.0}, {"separation", separation}, {"parked", parked}, {"after", "class"}}},
               {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 5}, {"num_sigmas", 2}}}};
 }
-
-// The output at every stage's end, with the stage's label; the note of every stage's beginning.
-struct StageEnds : SynthesisObserver {
-  std::vector<std::string> labels, notes;
-  std::vector<PointSet> points;
-  void on_stage_begin(const ProgressEvent& e) override { notes.push_back(e.note); }
-  void on_stage_end(const ProgressEvent& e, const PointSet& p) override {
-    labels.push_back(e.stage);
-    points.push_back(p);
-  }
-};
 
 // A relax stage of class c, from `before` to `after`: checks that every point but class c's
 // within `band` of the edge stayed bit for bit; adds the band's points and those that moved.
@@ -135,7 +126,7 @@ TEST_CASE("by default the relaxes follow every class's sigma stages, which stay 
   bad["border_relax"]["after"] = "each";
   OutputShape square;
   square.upscale = 2;
-  CHECK(resolve_gabor_settings(method_params(after_all), ex, square, false).relax_after_all);
+  CHECK(resolve_gabor_settings(method_params(after_all), ex, square, false).border_relax.after_all);
   // One class: after it is after all, the plan "class" makes, bit for bit.
   const PointSet one = test::small_exemplar(1, false);
   auto one_run = [&](const json& m) {
@@ -284,8 +275,8 @@ TEST_CASE("method.border_relax is refused where there is no grid edge, naming th
   OutputShape square;
   square.upscale = 2;
   json relax = {{"type", "gabor"}, {"border_relax", {{"iterations", 10}}}};
-  CHECK(resolve_gabor_settings(method_params(relax), ex, square, false).relax_iterations == 10);
-  CHECK(resolve_gabor_settings(method_params(relax), ex, square, true).relax_iterations == 4);  // --quick's cap
+  CHECK(resolve_gabor_settings(method_params(relax), ex, square, false).border_relax.iterations == 10);
+  CHECK(resolve_gabor_settings(method_params(relax), ex, square, true).border_relax.iterations == 4);  // --quick's cap
   const OutputShape rect = resolve_output_shape(resolve_run_config(json{{"output", {{"size", {2, 2}}}}}, {}), ex);
   CHECK_THROWS_WITH(resolve_gabor_settings(method_params(relax), ex, rect, false), Catch::Contains("method.border_relax"));
   json tiles = relax;
@@ -309,8 +300,8 @@ TEST_CASE("method.border_relax is refused where there is no grid edge, naming th
   // Off (0 iterations, as configs/runs set it) it is the paper's plan, wherever the output goes.
   json off = relax;
   off["border_relax"]["iterations"] = 0;
-  CHECK(resolve_gabor_settings(method_params(off), ex, square, false).relax_iterations == 0);
-  CHECK(resolve_gabor_settings(method_params(off), ex, rect, false).relax_iterations == 0);
+  CHECK(resolve_gabor_settings(method_params(off), ex, square, false).border_relax.iterations == 0);
+  CHECK(resolve_gabor_settings(method_params(off), ex, rect, false).border_relax.iterations == 0);
 }
 
 TEST_CASE("by default (null, \"auto\") the border is relaxed on the u x u square measured as one grid, and nowhere else", "[optim][border_relax]") {
@@ -321,20 +312,20 @@ TEST_CASE("by default (null, \"auto\") the border is relaxed on the u x u square
   CHECK(method_params(plain)["border_relax"]["iterations"].is_null());
   json named = plain;
   named["border_relax"] = {{"iterations", "auto"}};
-  CHECK(resolve_gabor_settings(method_params(named), ex, square, false).relax_iterations == 60);
-  CHECK(resolve_gabor_settings(method_params(plain), ex, square, false).relax_iterations == 60);
-  CHECK(resolve_gabor_settings(method_params(plain), ex, square, true).relax_iterations == 4);  // --quick's cap
+  CHECK(resolve_gabor_settings(method_params(named), ex, square, false).border_relax.iterations == 60);
+  CHECK(resolve_gabor_settings(method_params(plain), ex, square, false).border_relax.iterations == 60);
+  CHECK(resolve_gabor_settings(method_params(plain), ex, square, true).border_relax.iterations == 4);  // --quick's cap
   // No fixed grid edge: a rectangle (output.border instead), tiles, rolled, maps of other terms.
   const OutputShape rect = resolve_output_shape(resolve_run_config(json{{"output", {{"size", {2, 2}}}}}, {}), ex);
-  CHECK(resolve_gabor_settings(method_params(plain), ex, rect, false).relax_iterations == 0);
+  CHECK(resolve_gabor_settings(method_params(plain), ex, rect, false).border_relax.iterations == 0);
   for (const char* measure : {"tiles", "rolled"}) {
     json m = plain;
     m["measure"] = measure;
-    CHECK(resolve_gabor_settings(method_params(m), ex, square, false).relax_iterations == 0);
+    CHECK(resolve_gabor_settings(method_params(m), ex, square, false).border_relax.iterations == 0);
   }
   json own = plain;
   own["map_terms"] = {{"class_own", {{"weight", 1}}}};
-  CHECK(resolve_gabor_settings(method_params(own), ex, square, false).relax_iterations == 0);
+  CHECK(resolve_gabor_settings(method_params(own), ex, square, false).border_relax.iterations == 0);
   // The shipped paper configs keep the published border.
   for (const char* name : {"lines", "lemon_4c_v2", "poisson_n64c2_point", "ps_Tree1"}) {
     INFO(name);

@@ -12,6 +12,7 @@
 #include "optim/method/method.hpp"
 #include "tests/support/same_bits.hpp"
 #include "tests/support/small_exemplar.hpp"
+#include "tests/support/stage_ends.hpp"
 
 using namespace ppsynth;
 
@@ -45,17 +46,7 @@ PPSYNTH_REGISTER(StageKindRegistry, "test_left_half", json::object(), json::obje
                    return std::make_unique<LeftHalfStage>();
                  })
 
-struct Ends : SynthesisObserver {
-  std::vector<std::string> labels, notes;
-  std::vector<PointSet> points;
-  void on_stage_begin(const ProgressEvent& e) override { notes.push_back(e.note); }
-  void on_stage_end(const ProgressEvent& e, const PointSet& p) override {
-    labels.push_back(e.stage);
-    points.push_back(p);
-  }
-};
-
-PointSet run(const PointSet& ex, Ends& ends, json* stats) {
+PointSet run(const PointSet& ex, test::StageEnds& ends, json* stats) {
   const json method = {{"type", "gabor"},
                        {"border_relax", {{"iterations", 0}}},
                        {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 5}, {"num_sigmas", 2}}}};
@@ -71,7 +62,7 @@ PointSet run(const PointSet& ex, Ends& ends, json* stats) {
 
 TEST_CASE("a stage kind added by one file runs in the plan", "[optim][stage_kinds][synthesis]") {
   const PointSet ex = test::small_exemplar(2, false);
-  Ends paper, with_kind;
+  test::StageEnds paper, with_kind;
   json stats;
   run(ex, paper, nullptr);
   {
