@@ -247,8 +247,11 @@ TEST_CASE("pcf2017 on a rectangle: each class at its density, attributes kept", 
   // An explicit initialization: the exact per-class counts of the canvas, inside it.
   PointSet init(Domain{0, 0, 3, 3});
   const auto want = published.class_counts(ex, published.domain());
-  for (int k = 0; k < 2; ++k)
-    for (const Vec2& p : uniform_points(want[k], 10 + k, Domain{0, 0, 3, 3}).positions()) init.add(p, k);
+  for (int k = 0; k < 2; ++k) {
+    // Named: a range-for over a temporary's member would outlive the temporary (found by ASan).
+    const PointSet drawn = uniform_points(want[k], 10 + k, Domain{0, 0, 3, 3});
+    for (const Vec2& p : drawn.positions()) init.add(p, k);
+  }
   CHECK(run(spec, ex, published, 95, nullptr, &init).size() == init.size());
   PointSet short_init = init.subset_class(0);
   CHECK_THROWS_WITH(run(spec, ex, published, 95, nullptr, &short_init),
