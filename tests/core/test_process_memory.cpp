@@ -11,6 +11,7 @@
 #endif
 
 #include "core/memory_budget.hpp"
+#include "tests/support/sanitizers.hpp"
 
 using namespace ppsynth;
 
@@ -18,17 +19,7 @@ namespace {
 
 // AddressSanitizer replaces malloc and free: its allocator keeps freed blocks in quarantine, so
 // glibc's heap, what release_freed_memory() trims, is not the one the blocks come from.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kGlibcHeap = false;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kGlibcHeap = false;
-#else
-constexpr bool kGlibcHeap = true;
-#endif
-#else
-constexpr bool kGlibcHeap = true;
-#endif
+constexpr bool kGlibcHeap = !test::kAddressSanitizer;
 
 double resident_mib() {  // VmRSS: the current resident set, not the peak
   std::ifstream in("/proc/self/status");
