@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <type_traits>
+#include <utility>
 
 #include "core/checkpoint_file.hpp"
 #include "core/config/defaults_catalog.hpp"
@@ -21,8 +24,20 @@ double learning_rate_for(const json& p, int s, const std::string& kp) {
 
 namespace {
 
-// The key under which libtorch's optimizers keep a parameter's state.
-std::string state_key(const torch::Tensor& p) { return c10::guts::to_string(p.unsafeGetTensorImpl()); }
+// The key under which LibTorch's optimizers keep a parameter's state: its TensorImpl's address,
+// printed as text up to LibTorch 1.x (what c10::guts::to_string wrote, an ostream of the
+// pointer) and the pointer itself from 2.x on. The map's own key type says which.
+// (A template, so that the branch this LibTorch does not take is not compiled.)
+template <class Key = std::decay_t<decltype(std::declval<torch::optim::Optimizer&>().state())>::key_type>
+Key state_key(const torch::Tensor& p) {
+  if constexpr (std::is_same_v<Key, std::string>) {
+    std::ostringstream text;
+    text << p.unsafeGetTensorImpl();
+    return text.str();
+  } else {
+    return p.unsafeGetTensorImpl();
+  }
+}
 
 // Checks of a restored state (optim/gabor/synthesis_state.hpp reads the tensors; these are their values).
 class StateReader {
