@@ -40,6 +40,10 @@ namespace ppsynth {
 // Which implementation evaluates the maps: `automatic` takes the CPU kernel for CPU tensors
 // (unless PPSYNTH_GABOR_MAPS=tensor_ops) and the tensor operations for any other device.
 enum class GaborMapsPath { automatic, cpu_kernel, tensor_ops };
+// Whether PPSYNTH_GABOR_MAPS=tensor_ops asks CPU tensors to take the tensor operations
+// (unset or "auto": no); read once per process, InputError naming the variable for any other
+// value. configure_runtime (optim/run/runtime.hpp) asks it before a command does anything.
+bool gabor_maps_tensor_ops_forced();
 
 struct GaborMapsOptions {
   int res = 128;           // grid positions per axis (the output grid is u * exemplar res)

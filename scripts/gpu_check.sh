@@ -6,7 +6,8 @@
 #   2. runs the device tests (ppsynth_tests "[device]": the tensor-operation Gabor maps against
 #      the CPU kernel, on the CPU and on CUDA; --device and run.json; a CUDA synthesis twice);
 #   3. checks that the same config and seed give the same bits twice on the device;
-#   4. benches `lines` on the device (ppsynth bench: per phase, per iteration) in float32 and TF32;
+#   4. benches `lines` on the device (ppsynth bench: per phase, per iteration) in float32, TF32,
+#      and float32 with cuDNN autotuning (runtime.deterministic=false);
 #   5. runs `lines` at its default settings: seed 95 alone (the whole run's time), then seeds
 #      96-99 side by side while the time budget lasts (quality over seeds);
 #   6. prints a summary against the targets: <= 25 ms per iteration, <= 30 s per run, PCF MSE,
@@ -21,8 +22,8 @@
 #   GPU_CHECK_DEVICE   cuda (default) or cpu
 #   GPU_CHECK_SECONDS  the time budget of the whole script (default 460)
 #   GPU_CHECK_BUILD    the build folder (default build-gpu)
-# Into OUT_DIR (at most 8 files, as the device tool returns them): summary.txt, configure.log,
-# build.log, device_tests.log, bench_float32.json, bench_tf32.json, runs.json.
+# Into OUT_DIR (six files; the device tool returns at most eight): summary.txt, configure.log,
+# build.log, device_tests.log, benches.json (the three benches' --json), runs.json.
 set -uo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="${1:-${OUT:-$here/gpu_check}}"
@@ -107,13 +108,16 @@ fi
 # --- 4. bench ------------------------------------------------------------------------------
 bench_sizes=()
 [ "$device" = cpu ] && bench_sizes=(--set method.grid.res=24 --set method.feature_net.channels=8)
-for prec in float32 tf32; do
-  tf32=false
-  [ "$prec" = tf32 ] && tf32=true
-  ppsynth bench "$lines" --device "$device" --reps "$reps" --skip-setup --set runtime.tf32=$tf32 "${bench_sizes[@]}" \
-    --json "$out/bench_$prec.json" > "$work/bench_$prec.txt" 2>&1 || { cat "$work/bench_$prec.txt"; fail "bench ($prec)"; }
-  say "bench, $prec:"
-  grep -E "^ppsynth bench|ONE|Gabor|network|loss|neighbor" "$work/bench_$prec.txt" | tee -a "$summary"
+# float32 (the default: IEEE float32, cuDNN's deterministic algorithms), TF32, and float32
+# with cuDNN autotuning (runtime.deterministic=false: faster algorithms, bits may vary).
+for variant in float32 tf32 float32_autotune; do
+  settings=(--set runtime.tf32=false --set runtime.deterministic=true)
+  [ "$variant" = tf32 ] && settings=(--set runtime.tf32=true --set runtime.deterministic=true)
+  [ "$variant" = float32_autotune ] && settings=(--set runtime.tf32=false --set runtime.deterministic=false)
+  ppsynth bench "$lines" --device "$device" --reps "$reps" --skip-setup "${settings[@]}" "${bench_sizes[@]}" \
+    --json "$work/bench_$variant.json" > "$work/bench_$variant.txt" 2>&1 || { cat "$work/bench_$variant.txt"; fail "bench ($variant)"; }
+  say "bench, $variant:"
+  grep -E "^ppsynth bench|ONE|Gabor|network|loss|neighbor" "$work/bench_$variant.txt" | tee -a "$summary"
 done
 
 # --- 5. whole runs -------------------------------------------------------------------------
@@ -159,13 +163,15 @@ for r in runs:
     print(f"seed {r['seed']}: {r['seconds']:.1f} s synthesis ({r['total_seconds']:.1f} s with evaluation), "
           f"{r['iterations']} iterations, {r['ms_per_iteration']:.1f} ms/iteration; PCF MSE {r['pcf_mse']:.4f}, "
           f"Wasserstein {r['wasserstein']:.3f}, Chamfer {r['chamfer']:.3f}; {r['runtime']}")
-for prec in ("float32", "tf32"):
+benches = {}
+for variant in ("float32", "tf32", "float32_autotune"):
     try:
-        b = json.load(open(os.path.join(out, f"bench_{prec}.json")))
-        print(f"bench {prec} on {b['device']}: iteration {1e3 * b['iteration_median_s']:.1f} ms (forward + backward), "
+        b = benches[variant] = json.load(open(os.path.join(work, f"bench_{variant}.json")))
+        print(f"bench {variant} on {b['device']}: iteration {1e3 * b['iteration_median_s']:.1f} ms (forward + backward), "
               f"run iteration {1e3 * b['run_iteration_median_s']:.1f} ms (+ step + checkpoint) [target <= 25 ms]")
     except (OSError, ValueError, KeyError):
-        print(f"bench {prec}: no result")
+        print(f"bench {variant}: no result")
+json.dump(benches, open(os.path.join(out, "benches.json"), "w"), indent=2)
 if runs:
     first = runs[0]
     print(f"whole run (seed {first['seed']}): {first['seconds']:.1f} s [target <= 30 s]")

@@ -160,10 +160,13 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
   }
   for (const Stage& stage : plan_)
     if (std::find(kinds_.begin(), kinds_.end(), stage.kind) == kinds_.end()) kinds_.push_back(stage.kind);
+  // Made before the list below: what it may throw (a bad PPSYNTH_GABOR_MAPS) is not thrown
+  // from inside a braced list of JSON values.
+  json runtime = runtime_record();
   stats_ = {{"grid_res", s_.res}, {"output_grid_res", s_.out_res}, {"grid_res_per_sigma", s_.sigma_res},
             {"output_grid_res_per_sigma", s_.sigma_out_res}, {"k", s_.k}, {"sigmas", s_.sigmas},
             {"mean_nn_distance", s_.mean_nn_distance},
-            {"map_terms", json::object()}, {"terms", json::object()}, {"runtime", runtime_record()}};
+            {"map_terms", json::object()}, {"terms", json::object()}, {"runtime", std::move(runtime)}};
   if (shape_.rectangle) {
     const Domain c = shape_.canvas();
     stats_["output"] = shape_.describe();

@@ -13,6 +13,7 @@
 #include <torch/torch.h>
 
 #include "core/error.hpp"
+#include "models/gabor_feature_maps.hpp"
 
 namespace ppsynth {
 
@@ -115,6 +116,7 @@ RuntimeSettings configure_runtime() {
   if (s.threads == 0) s.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   torch::set_num_threads(s.threads);
   s.keeps_freed_memory = keep_freed_memory();
+  gabor_maps_tensor_ops_forced();
   return s;
 }
 

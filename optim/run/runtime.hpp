@@ -32,7 +32,8 @@ struct RuntimeSettings {
   bool keeps_freed_memory = false;
 };
 
-// Reads PPSYNTH_THREADS and PPSYNTH_MALLOC (InputError naming the variable when malformed),
+// Reads PPSYNTH_THREADS, PPSYNTH_MALLOC and PPSYNTH_GABOR_MAPS (InputError naming the variable
+// when malformed, before a command writes anything),
 // applies them and returns what was applied. Calling it again re-reads the thread count; the
 // allocator is set once per process.
 RuntimeSettings configure_runtime();

@@ -44,7 +44,7 @@ void check_synthesis_size(const nlohmann::json& spec, const PointSet& exemplar) 
   if (shape.rectangle) {
     const double expected = static_cast<double>(exemplar.size()) * out.area() / E.area();
     if (expected < 1) {
-      char what[160];
+      char what[256];
       std::snprintf(what, sizeof what, "%s hold about %.2g points at the exemplar's density; an output needs at least one",
                     size, expected);
       throw config_error(key, what);

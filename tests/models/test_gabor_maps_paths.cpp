@@ -30,7 +30,9 @@ Evaluated evaluate(GaborMapsOptions o, const torch::Tensor& pts, const torch::Te
                    const torch::Tensor& probe, double sigma, const torch::Device& device) {
   GaborFeatureMaps maps(o);
   maps->to(device);
-  auto p = pts.to(device).set_requires_grad(true);
+  // A leaf of its own: on the CPU `to` returns `pts` itself, and a gradient asked of it would
+  // make the next device's copy a non-leaf with no .grad (seen on CUDA).
+  auto p = pts.detach().to(device).requires_grad_(true);
   auto m = maps->forward(p, w.defined() ? w.to(device) : w, sigma, jitter.defined() ? jitter.to(device) : jitter);
   (m * probe.to(device)).sum().backward();
   return {m.detach().cpu(), p.grad().cpu()};

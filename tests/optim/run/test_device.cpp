@@ -116,7 +116,7 @@ TEST_CASE("On CUDA, one evaluation's loss and gradient equal the CPU's within fl
   for (const torch::Device device : {torch::Device(torch::kCPU), torch::Device("cuda:0")}) {
     GaborPipeline pipe(p, s, 9, device);
     pipe.set_targets(positions_tensor(ex), {}, s.sigmas.back());
-    auto x = start.to(device).set_requires_grad(true);
+    auto x = start.detach().to(device).requires_grad_(true);  // a leaf of its own on each device
     auto l = pipe.loss(pipe.features(pipe.output_maps(wrap_unit(x), {}, s.sigmas.back(), {})));
     l.backward();
     loss.push_back(l.item<double>());
