@@ -6,9 +6,11 @@
 #include "core/config/param_bounds.hpp"
 #include "core/memory_budget.hpp"
 #include "core/metrics/nearest_neighbor.hpp"
-#include "models/feature_grid.hpp"
 #include "models/gabor_feature_maps.hpp"
+#include "optim/gabor/grid_options.hpp"
+#include "optim/gabor/quick_options.hpp"
 #include "optim/gabor/sigma_schedule.hpp"
+#include "optim/gabor/window_options.hpp"
 #include "optim/gabor/window_plan.hpp"
 
 namespace ppsynth {
@@ -18,9 +20,7 @@ json gabor_defaults() {
       {"c1", 1.0},
       {"c2", 2.6},
       {"num_sigmas", 4},
-      // res 0 = clamp(round(9/d), min_res, max_res); per_sigma: coarser grids at the coarser
-      // sigmas (GaborSettings::sigma_res), the finest stage's grid unchanged
-      {"grid", {{"res", 0}, {"min_res", 128}, {"max_res", 256}, {"per_sigma", false}}},
+      {"grid", GridOptions::defaults()},  // optim/gabor/grid_options.hpp
       {"k", GaborMapsOptions{}.k},                                 // neighbors: min(M, k)
       // M = the exemplar points of the classes in play at a class stage (the published disk
       // and multi-attribute optimizers); false: M = all exemplar points (its point optimizer).
@@ -55,17 +55,10 @@ json gabor_defaults() {
       // Not in the paper: the border relax stage after each class's sigma stages
       // (optim/gabor/border_relax_options.hpp declares its keys, defaults and ranges).
       {"border_relax", BorderRelaxOptions::defaults()},
-      // Rectangle outputs ("output": {"size"} or {"points"}) run window by window
-      // (optim/gabor/window_plan.hpp): windows of at most `pixels` grid positions across; a margin
-      // of 3 sigma_max + `receptive_field` positions (the network's half-width) on each side
-      // of an interior (null or "auto"), or a length in exemplar units. `statistics`: where
-      // the losses measure the output's features: "grid" (the whole window grid, as the paper
-      // measures its square) or "output" (the grid's part inside the output rectangle: the
-      // pad of a clean or context border is seen by the maps but not measured, so its outer
-      // edge, where plane maps lose a point's influence, asks nothing of the rectangle).
-      {"window", {{"pixels", 384}, {"margin", nullptr}, {"receptive_field", 16}, {"statistics", "grid"}}},
-      // --quick: every knob that sets the cost, shrunk (tests and smoke runs).
-      {"quick", {{"res", 24}, {"channels", 8}, {"max_iterations", 4}, {"num_sigmas", 2}}},
+      // Rectangle outputs run window by window (optim/gabor/window_options.hpp).
+      {"window", WindowOptions::defaults()},
+      // --quick: every knob that sets the cost, shrunk (optim/gabor/quick_options.hpp).
+      {"quick", QuickOptions::defaults()},
   };
 }
 
@@ -74,14 +67,13 @@ json gabor_bounds() {
       {"c1", "(0, inf)"},
       {"c2", "(0, inf)"},
       {"num_sigmas", "int [1, 64]"},
-      {"grid", {{"res", "0 or int [8, 8192]"}, {"min_res", "int [8, 8192]"}, {"max_res", "int [8, 8192]"}}},
+      {"grid", GridOptions::bounds()},
       {"k", "int [1, 1000000]"},
       {"max_iterations", "int [1, 1000000000]"},
       {"class_order", "int [0, 1000000]"},
-      {"window", {{"pixels", "int [16, 8192]"}, {"receptive_field", "int [0, 1000]"}}},
+      {"window", WindowOptions::bounds()},
       {"border_relax", BorderRelaxOptions::bounds()},
-      {"quick", {{"res", "int [8, 8192]"}, {"channels", "int [1, 4096]"}, {"max_iterations", "int [1, 1000000000]"},
-                 {"num_sigmas", "int [1, 64]"}}},
+      {"quick", QuickOptions::bounds()},
   };
 }
 
@@ -116,19 +108,19 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   s.upscale = shape.rectangle ? 1 : shape.upscale;
   const int K = exemplar.num_classes();
   s.mean_nn_distance = mean_nn_distance(exemplar);
-  s.res = get_int(p["grid"], "res", "method.grid");
-  if (s.res == 0)
-    s.res = grid_resolution_for(s.mean_nn_distance, get_int(p["grid"], "min_res", "method.grid"),
-                                get_int(p["grid"], "max_res", "method.grid"));
+  const GridOptions grid = GridOptions::resolve(p["grid"], s.mean_nn_distance);
+  const WindowOptions window = WindowOptions::resolve(p["window"]);
+  s.res = grid.res;
   int num_sigmas = get_int(p, "num_sigmas", "method");
   s.max_iterations = get_int(p, "max_iterations", "method");
   s.feature_net = with_channels_for_classes(p["feature_net"], K, "method.feature_net");
   const int full_res = s.res, full_num_sigmas = num_sigmas;  // the window margin's (below)
   if (quick) {
-    s.res = std::min(s.res, get_int(p["quick"], "res", "method.quick"));
-    s.max_iterations = std::min(s.max_iterations, get_int(p["quick"], "max_iterations", "method.quick"));
-    num_sigmas = std::min(num_sigmas, get_int(p["quick"], "num_sigmas", "method.quick"));
-    if (s.feature_net.value("type", "") == "random") s.feature_net["channels"] = get_int(p["quick"], "channels", "method.quick");
+    const QuickOptions q = QuickOptions::resolve(p["quick"]);
+    s.res = std::min(s.res, q.res);
+    s.max_iterations = std::min(s.max_iterations, q.max_iterations);
+    num_sigmas = std::min(num_sigmas, q.num_sigmas);
+    if (s.feature_net.value("type", "") == "random") s.feature_net["channels"] = q.channels;
   }
   if (s.max_iterations < 1) throw config_error("method.max_iterations", "must be >= 1");
   s.sigmas = sigma_schedule(s.mean_nn_distance, get_number(p, "c1", "method"), get_number(p, "c2", "method"), num_sigmas);
@@ -138,13 +130,7 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   s.k_per_stage = p["k_per_stage"].get<bool>();
   s.attr_cols = map_attribute_columns(exemplar, p["map_attributes"]);
   s.jitter = p["jitter"].get<bool>();
-  const bool per_sigma = get_bool(p["grid"], "per_sigma", "method.grid");
-  auto grid_per_sigma = [&](const std::vector<double>& sigmas, int res) {  // at most res; the finest sigma gets res itself
-    std::vector<int> r;
-    for (double sigma : sigmas) r.push_back(per_sigma ? std::max(8, static_cast<int>(std::ceil(res * sigmas.back() / sigma - 1e-9))) : res);
-    return r;
-  };
-  s.sigma_res = grid_per_sigma(s.sigmas, s.res);
+  s.sigma_res = grid.per_stage(s.sigmas, s.res);
   const json& measure = p["measure"];
   if (!measure.is_string() || (measure != "grid" && measure != "tiles" && measure != "rolled"))
     throw config_error("method.measure", "expected \"grid\", \"tiles\" or \"rolled\", got " + measure.dump());
@@ -176,36 +162,24 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
     for (int r : s.sigma_res) s.sigma_out_res.push_back(s.upscale * r);
   } else {  // a window: at most `pixels` across, at most the canvas
     const Domain c = shape.canvas();
-    const double side = std::min({get_int(p["window"], "pixels", "method.window") / static_cast<double>(s.res), c.width(), c.height()});
+    const double side = std::min({window.pixels / static_cast<double>(s.res), c.width(), c.height()});
     s.out_res = std::max(8, static_cast<int>(std::lround(side * s.res)));
     s.out_scale = side;
     for (int r : s.sigma_res) s.sigma_out_res.push_back(std::max(8, static_cast<int>(std::lround(side * r))));
-    const json& m = p["window"]["margin"];
-    if (m.is_null() || (m.is_string() && m.get<std::string>() == "auto")) {
-      // The maps' reach plus the network's receptive field, at the stage where they reach farthest.
-      const int rf = get_int(p["window"], "receptive_field", "method.window");
-      auto reach = [&](const std::vector<double>& sigmas, const std::vector<int>& res) {
-        double r = 0;
-        for (size_t i = 0; i < sigmas.size(); ++i) r = std::max(r, 3 * sigmas[i] + rf / static_cast<double>(res[i]));
-        return r;
-      };
-      s.window_margin = reach(s.sigmas, s.sigma_res);
+    if (!window.margin) {
+      s.window_margin = window.auto_margin(s.sigmas, s.sigma_res);
       // --quick's coarser grid reaches farther than the full settings' (lines: 1.14 against
       // 0.60 exemplar units); where its margin leaves the windows no interior, the full
       // settings' is taken, so that a smoke run takes every output the real run takes.
       if (quick && !windows_fit(c, side, s.window_margin)) {
         const auto sigmas = sigma_schedule(s.mean_nn_distance, get_number(p, "c1", "method"), get_number(p, "c2", "method"),
                                            full_num_sigmas);
-        s.window_margin = std::min(s.window_margin, reach(sigmas, grid_per_sigma(sigmas, full_res)));
+        s.window_margin = std::min(s.window_margin, window.auto_margin(sigmas, grid.per_stage(sigmas, full_res)));
       }
-    } else if (m.is_number() && m.get<double>() >= 0)
-      s.window_margin = m.get<double>();
-    else
-      throw config_error("method.window.margin", "expected null (\"auto\") or a length >= 0 in exemplar units");
-    const json& st = p["window"]["statistics"];
-    if (!st.is_string() || (st != "grid" && st != "output"))
-      throw config_error("method.window.statistics", "expected \"grid\" or \"output\", got " + st.dump());
-    s.statistics_in_output = st == "output";
+    } else {
+      s.window_margin = *window.margin;
+    }
+    s.statistics_in_output = window.statistics_in_output;
   }
   {  // one iteration keeps the output grid's maps and every layer's activations and gradients
     const double cells = std::pow(static_cast<double>(s.out_res), 2);

@@ -82,12 +82,12 @@ torch::Tensor WindowGeometry::to_local(const PointSet& points) const {
 torch::Tensor WindowGeometry::confine(const torch::Tensor& moving) const {
   // Kept inside the movable rectangle with an identity gradient (as wrap_unit's): a point
   // pushed past the edge sits on it, and the loss can still pull it back.
+  // The bounds as scalars: nothing is made or copied to the device per iteration.
   const Domain& g = w_.grid;
   const Domain& m = w_.movable;
-  const auto local = torch::TensorOptions().dtype(moving.scalar_type()).device(moving.device());
-  const auto lo = torch::tensor({{(m.x0 - g.x0) / g.width(), (m.y0 - g.y0) / g.height()}}, torch::kFloat64).to(local);
-  const auto hi = torch::tensor({{(m.x1 - g.x0) / g.width(), (m.y1 - g.y0) / g.height()}}, torch::kFloat64).to(local);
-  return moving + (torch::max(torch::min(moving, hi), lo) - moving).detach();
+  const auto x = moving.select(1, 0).clamp((m.x0 - g.x0) / g.width(), (m.x1 - g.x0) / g.width());
+  const auto y = moving.select(1, 1).clamp((m.y0 - g.y0) / g.height(), (m.y1 - g.y0) / g.height());
+  return moving + (torch::stack({x, y}, 1) - moving).detach();
 }
 
 Vec2 WindowGeometry::to_output(double u, double v) const {
