@@ -149,11 +149,11 @@ json add_panel_section(HtmlReport& rep, const ReproduceConfig& c, const Reproduc
         stages.push_back({run + "/snapshots/stage" + (k < 10 ? "0" : "") + std::to_string(k) + ".png", "after stage " + std::to_string(k)});
       if (!stages.empty()) rep.add_image_row(stages);
     }
-    if (col.stats.contains("stages")) {
+    if (!col.stages.empty()) {
       std::vector<std::vector<std::string>> rows;
-      for (auto& st : col.stats["stages"])
-        rows.push_back({st.value("stage", ""), format_cell(st.value("sigma", json(nullptr)), 5), format_cell(st.value("iterations", json(nullptr))),
-                        format_cell(st.value("final_loss", json(nullptr)), 6), format_cell(st.value("seconds", json(nullptr)), 2)});
+      for (const StageRecord& st : col.stages)
+        rows.push_back({st.stage, format_cell(st.details.value("sigma", json(nullptr)), 5), format_cell(json(st.iterations)),
+                        format_cell(json(st.final_loss), 6), format_cell(json(st.seconds), 2)});
       rep.add_table({"stage", "sigma", "iterations", "final loss", "seconds"}, rows, "per stage");
     }
     rep.add_code_block(col.config.dump(2), "resolved run config (" + col.column + ")");

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/point_set.hpp"
+#include "optim/method/stage_record.hpp"
 #include "experiments/gather/gather.hpp"
 
 namespace ppsynth {
@@ -42,7 +43,7 @@ struct ColumnResult {
   std::string run_dir;        // relative to the report directory; "" for init / reference
   std::string source;         // where the points came from (file or run directory)
   nlohmann::json config;      // resolved run config (synthesized columns)
-  nlohmann::json stats;       // the method's own statistics (iterations, grid, ...)
+  std::vector<StageRecord> stages;  // a staged method's stages (the report's per-stage table)
   double seconds = 0;         // wall time of the run (synthesis + its outputs)
   double synthesis_seconds = 0;
   int iterations = 0;         // optimization iterations over all stages

@@ -110,9 +110,9 @@ ColumnResult synthesize(const ReproduceConfig& c, const PanelSpec& p, const std:
   r.run_dir = rel;
   r.source = reused.empty() ? rel : rel + " (reused from " + reused + ")";
   r.config = out.config;
-  r.stats = out.stats;
+  r.stages = out.stages;
   r.seconds = out.seconds;
-  r.iterations = total_iterations(out.stats);
+  r.iterations = total_iterations(out.stages, out.stats);
   read_run_json(r, out.dir);
   if (pr.exemplar.empty()) pr.exemplar = out.exemplar;
   if (column == "ours") {
@@ -211,13 +211,13 @@ void run_panel(const ReproduceConfig& c, const PanelSpec& p, const ReproduceOpti
 
 }  // namespace
 
-int total_iterations(const json& stats) {
-  if (!stats.is_object()) return 0;
-  if (stats.contains("stages") && stats["stages"].is_array()) {
+int total_iterations(const std::vector<StageRecord>& stages, const json& stats) {
+  if (!stages.empty()) {
     int n = 0;
-    for (auto& s : stats["stages"]) n += s.value("iterations", 0);
+    for (const StageRecord& s : stages) n += s.iterations;
     return n;
   }
+  if (!stats.is_object()) return 0;
   if (stats.contains("scales") && stats["scales"].is_array()) {  // roveri2015: merging steps per scale
     int n = 0;
     for (auto& s : stats["scales"]) n += s.value("merge_iterations", 0);

@@ -53,7 +53,7 @@ StageStart BorderRelaxStage::start(const StageStartView& v) const {
   // records are the checkpoint's, so a resumed run decides as the uninterrupted one.
   const bool relax = s.border_relax.parked <= 0 || parked > s.border_relax.parked ||
                      std::any_of(v.finished_stages.begin(), v.finished_stages.end(),
-                                 [](const json& r) { return r.value("relaxed", false); });
+                                 [](const StageRecord& r) { return r.details.value("relaxed", false); });
   StageStart st;
   st.moving_mask = relax ? border_band(v.output, v.moving, s.border_relax.band)
                          : torch::zeros({static_cast<int64_t>(v.moving.size()), 1}, torch::kBool);

@@ -315,11 +315,10 @@ PointSet GaborEngine::run() {
     finish_stage(stage);
     save_checkpoint();  // every stage boundary, the last one included
   }
-  stats_["stages"] = state_.stages;
   stats_["phase_seconds"] = phase_seconds();
-  stats_["seconds_before_resume"] = seconds_before_;
   stats_["resolved"] = pipe_->resolved();
   if (ctx_.stats) *ctx_.stats = stats_;
+  if (ctx_.stages) *ctx_.stages = StagesReport{state_.stages, seconds_before_};
   if (!shape_.rectangle) return out_;
   // "context": the synthesized points, all inside the rectangle (the pad is the exemplar's).
   // "clean": the canvas's border band (the pad) holds the points that parked on its border.
@@ -451,7 +450,7 @@ torch::Tensor GaborEngine::evaluate(const Stage& stage) {
       l = l.defined() ? l + v : v;
     }
   } else {
-    if (s_.measure == GaborSettings::Measure::rolled || stage.kind->rolls_grid())
+    if (s_.measure == GaborOptions::Measure::rolled || stage.kind->rolls_grid())
       pts = roll_torus(pts, tile_offset(ctx_.seed, state_.stage, state_.iteration, 1));
     jitter = pipe_->draw_jitter(jitter_rng_);
     l = measure(pts, out_weights_, jitter, stage, false);
@@ -527,11 +526,10 @@ void GaborEngine::finish_stage(const Stage& stage) {
     for (size_t i = 0; i < moving_idx_.size(); ++i) out_[moving_idx_[i]] = geometry_->to_output(a[i][0], a[i][1]);
   }
   ProgressEvent ev = event(stage);
-  state_.stages.push_back({{"stage", stage.label}, {"class", stage.own_class}, {"sigma", stage.sigma}, {"k", stage.k},
-                           {"iterations", state_.iteration},
-                           {"final_loss", state_.stage_losses.empty() ? 0.0 : state_.stage_losses.back()},
-                           {"seconds", ev.seconds}});
-  state_.stages.back().update(start_.record);  // what the kind decided (the relax: its share, relaxed or not)
+  StageRecord record{stage.label, state_.iteration, state_.stage_losses.empty() ? 0.0 : state_.stage_losses.back(), ev.seconds,
+                     {{"class", stage.own_class}, {"sigma", stage.sigma}, {"k", stage.k}}};
+  record.details.update(start_.record);  // what the kind decided (the relax: its share, relaxed or not)
+  state_.stages.push_back(std::move(record));
   ctx_.stage_end(ev, out_);
   // The next stage starts: a fresh optimizer and convergence window; a new group also
   // starts from the wrapped output positions.

@@ -6,7 +6,7 @@
 #include "core/config/param_bounds.hpp"
 #include "core/memory_budget.hpp"
 #include "core/metrics/nearest_neighbor.hpp"
-#include "models/gabor_feature_maps.hpp"
+#include "optim/gabor/gabor_options.hpp"
 #include "optim/gabor/grid_options.hpp"
 #include "optim/gabor/quick_options.hpp"
 #include "optim/gabor/sigma_schedule.hpp"
@@ -16,42 +16,25 @@
 namespace ppsynth {
 
 json gabor_defaults() {
-  return json{
-      {"c1", 1.0},
-      {"c2", 2.6},
-      {"num_sigmas", 4},
+  // The method's own keys (optim/gabor/gabor_options.hpp), its blocks and its parts' specs.
+  return merge(GaborOptions::defaults(), json{
       {"grid", GridOptions::defaults()},  // optim/gabor/grid_options.hpp
-      {"k", GaborMapsOptions{}.k},                                 // neighbors: min(M, k)
-      // M = the exemplar points of the classes in play at a class stage (the published disk
-      // and multi-attribute optimizers); false: M = all exemplar points (its point optimizer).
-      {"k_per_stage", true},
-      {"jitter", true},
       {"rasterizer", {{"type", "gabor"}}},
       {"feature_net", {{"type", "random"}}},
       {"losses", json::array({json{{"type", "gram"}, {"layers", {0, 1, 2}}, {"weight", 0.08}},
                               json{{"type", "correlation"}, {"layers", {2}}, {"weight", 1.0}}})},
       {"optimizer", {{"type", "adam"}}},
-      {"max_iterations", 500},
       // When a sigma stage stops before max_iterations (optim/steps/stopping_rule.hpp): "loss" (the
       // paper's) or "pattern" (the PCF stops improving).
       {"convergence", {{"type", "loss"}}},
       {"init", {{"type", "best_candidate"}}},
-      {"class_order", json::array()},  // empty = file order
       {"map_attributes", nullptr},  // null or "auto": every non-constant attribute; or a list of names ([] = none)
-      {"fresh_net_per_class", false},
       // Not in the paper: losses on maps of their own (optim/gabor/map_term.hpp), by registered
       // name: {"class_own": {"weight": 1}}. Empty = the paper.
       {"map_terms", json::object()},
       // Not in the paper: losses on the positions themselves (optim/terms/point_term.hpp), by
       // registered name: {"separation": {"weight": 1}, "pcf_match": {"weight": 10}}. Empty = the paper.
       {"terms", json::object()},
-      // Where the losses measure the output of the paper's u x u square: "grid" (its whole
-      // grid, as published: points park on its border), "tiles" (u x u tiles of the
-      // exemplar's size cut at a random offset every iteration, each rasterized and measured
-      // as the exemplar is) or "rolled" (the whole grid of the torus rolled by a random offset
-      // every iteration: the grid's edge never stays where a point could park on it;
-      // optim/gabor/random_tiles.hpp).
-      {"measure", "grid"},
       // Not in the paper: the border relax stage after each class's sigma stages
       // (optim/gabor/border_relax_options.hpp declares its keys, defaults and ranges).
       {"border_relax", BorderRelaxOptions::defaults()},
@@ -59,22 +42,16 @@ json gabor_defaults() {
       {"window", WindowOptions::defaults()},
       // --quick: every knob that sets the cost, shrunk (optim/gabor/quick_options.hpp).
       {"quick", QuickOptions::defaults()},
-  };
+  });
 }
 
 json gabor_bounds() {
-  return json{
-      {"c1", "(0, inf)"},
-      {"c2", "(0, inf)"},
-      {"num_sigmas", "int [1, 64]"},
+  return merge(GaborOptions::bounds(), json{
       {"grid", GridOptions::bounds()},
-      {"k", "int [1, 1000000]"},
-      {"max_iterations", "int [1, 1000000000]"},
-      {"class_order", "int [0, 1000000]"},
       {"window", WindowOptions::bounds()},
       {"border_relax", BorderRelaxOptions::bounds()},
       {"quick", QuickOptions::bounds()},
-  };
+  });
 }
 
 torch::Tensor wrap_unit(const torch::Tensor& x) {
@@ -110,9 +87,10 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   s.mean_nn_distance = mean_nn_distance(exemplar);
   const GridOptions grid = GridOptions::resolve(p["grid"], s.mean_nn_distance);
   const WindowOptions window = WindowOptions::resolve(p["window"]);
+  const GaborOptions o = GaborOptions::resolve(p);
   s.res = grid.res;
-  int num_sigmas = get_int(p, "num_sigmas", "method");
-  s.max_iterations = get_int(p, "max_iterations", "method");
+  int num_sigmas = o.num_sigmas;
+  s.max_iterations = o.max_iterations;
   s.feature_net = with_channels_for_classes(p["feature_net"], K, "method.feature_net");
   const int full_res = s.res, full_num_sigmas = num_sigmas;  // the window margin's (below)
   if (quick) {
@@ -120,38 +98,34 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
     s.res = std::min(s.res, q.res);
     s.max_iterations = std::min(s.max_iterations, q.max_iterations);
     num_sigmas = std::min(num_sigmas, q.num_sigmas);
-    if (s.feature_net.value("type", "") == "random") s.feature_net["channels"] = q.channels;
+    // Every network with a filter count (a `channels` parameter, declared where it registers)
+    // takes the cap; a fixed bank or the identity has none to shrink.
+    if (FeatureNetRegistry::instance().resolve(s.feature_net, "method.feature_net").contains("channels"))
+      s.feature_net["channels"] = q.channels;
   }
-  if (s.max_iterations < 1) throw config_error("method.max_iterations", "must be >= 1");
-  s.sigmas = sigma_schedule(s.mean_nn_distance, get_number(p, "c1", "method"), get_number(p, "c2", "method"), num_sigmas);
-  const int k = get_int(p, "k", "method");
-  if (k < 1) throw config_error("method.k", "must be >= 1");
-  s.k = static_cast<int>(std::min<size_t>(exemplar.size(), static_cast<size_t>(k)));
-  s.k_per_stage = p["k_per_stage"].get<bool>();
+  s.sigmas = sigma_schedule(s.mean_nn_distance, o.c1, o.c2, num_sigmas);
+  s.k = static_cast<int>(std::min<size_t>(exemplar.size(), static_cast<size_t>(o.k)));
+  s.k_per_stage = o.k_per_stage;
   s.attr_cols = map_attribute_columns(exemplar, p["map_attributes"]);
-  s.jitter = p["jitter"].get<bool>();
+  s.jitter = o.jitter;
   s.sigma_res = grid.per_stage(s.sigmas, s.res);
-  const json& measure = p["measure"];
-  if (!measure.is_string() || (measure != "grid" && measure != "tiles" && measure != "rolled"))
-    throw config_error("method.measure", "expected \"grid\", \"tiles\" or \"rolled\", got " + measure.dump());
-  s.measure = measure == "tiles" ? GaborSettings::Measure::tiles
-              : measure == "rolled" ? GaborSettings::Measure::rolled : GaborSettings::Measure::grid;
-  const std::string named = "\"" + measure.get<std::string>() + "\"";
-  if (s.measure != GaborSettings::Measure::grid && shape.rectangle)
+  s.measure = o.measure;
+  const std::string named = std::string("\"") + measure_name(s.measure) + "\"";
+  if (s.measure != GaborOptions::Measure::grid && shape.rectangle)
     throw config_error("method.measure", named + " measures the paper's u x u square; a rectangle output "
                                          "(output.size or output.points) takes output.border instead");
-  if (s.measure != GaborSettings::Measure::grid && !p["map_terms"].empty())
+  if (s.measure != GaborOptions::Measure::grid && !p["map_terms"].empty())
     throw config_error("method.measure", named + " does not combine with method.map_terms (their maps are the unrolled grid's)");
   BorderRelaxContext relax;
   relax.rectangle = shape.rectangle;
-  relax.measured_whole = s.measure == GaborSettings::Measure::grid;
+  relax.measured_whole = s.measure == GaborOptions::Measure::grid;
   relax.map_terms = !p["map_terms"].empty();
   relax.quick = quick;
   relax.max_iterations = s.max_iterations;
   relax.mean_nn_distance = s.mean_nn_distance;
   relax.upscale = s.upscale;
   s.border_relax = BorderRelaxOptions::resolve(p["border_relax"], relax);
-  s.fresh_net_per_class = get_bool(p, "fresh_net_per_class", "method");
+  s.fresh_net_per_class = o.fresh_net_per_class;
   if (shape.rectangle && !p["terms"].empty())  // they assume the unit torus (optim/terms/point_term.hpp)
     throw config_error("method.terms", "point terms work on the paper's u x u outputs only, not with \"output\"");
   if (shape.rectangle && !p["map_terms"].empty())
@@ -172,8 +146,7 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
       // 0.60 exemplar units); where its margin leaves the windows no interior, the full
       // settings' is taken, so that a smoke run takes every output the real run takes.
       if (quick && !windows_fit(c, side, s.window_margin)) {
-        const auto sigmas = sigma_schedule(s.mean_nn_distance, get_number(p, "c1", "method"), get_number(p, "c2", "method"),
-                                           full_num_sigmas);
+        const auto sigmas = sigma_schedule(s.mean_nn_distance, o.c1, o.c2, full_num_sigmas);
         s.window_margin = std::min(s.window_margin, window.auto_margin(sigmas, grid.per_stage(sigmas, full_res)));
       }
     } else {
@@ -195,10 +168,9 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
                      (shape.rectangle ? " (method.window.pixels)"
                                       : " (method.grid.res " + std::to_string(s.res) + " x upscale " + std::to_string(s.upscale) + ")"));
   }
-  for (auto& c : p["class_order"]) {
-    if (!c.is_number_integer() || c.get<int>() < 0 || c.get<int>() >= K)
-      throw config_error("method.class_order", "class ids are 0.." + std::to_string(K - 1));
-    s.class_order.push_back(c.get<int>());
+  for (int c : o.class_order) {
+    if (c >= K) throw config_error("method.class_order", "class ids are 0.." + std::to_string(K - 1));
+    s.class_order.push_back(c);
   }
   if (s.class_order.empty())
     for (int c = 0; c < K; ++c) s.class_order.push_back(c);

@@ -17,6 +17,7 @@
 #include "models/feature_net.hpp"
 #include "models/rasterizer.hpp"
 #include "optim/gabor/border_relax_options.hpp"
+#include "optim/gabor/gabor_options.hpp"
 
 namespace ppsynth {
 
@@ -42,9 +43,8 @@ struct GaborSettings {
   // exemplar-sized tiles, each on the exemplar's grid; "rolled" measures the whole grid of
   // the torus rolled by a random offset (optim/gabor/random_tiles.hpp). Both offsets change with
   // every iteration.
-  enum class Measure { grid, tiles, rolled };
-  Measure measure = Measure::grid;
-  bool measure_tiles() const { return measure == Measure::tiles; }
+  GaborOptions::Measure measure = GaborOptions::Measure::grid;
+  bool measure_tiles() const { return measure == GaborOptions::Measure::tiles; }
   BorderRelaxOptions border_relax;  // method.border_relax (optim/gabor/border_relax_options.hpp)
   // The grid of each sigma stage (coarse -> fine): `res` and `out_res` at every stage, or with
   // method.grid.per_sigma coarser grids at the coarser sigmas, keeping the finest stage's

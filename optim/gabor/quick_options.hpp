@@ -9,7 +9,7 @@ namespace ppsynth {
 
 struct QuickOptions {
   int res = 0;             // method.grid's resolved res
-  int channels = 0;        // the random network's filters (other networks keep theirs)
+  int channels = 0;        // the filters of a network that has a count of them (`channels`)
   int max_iterations = 0;  // per sigma stage
   int num_sigmas = 0;
 

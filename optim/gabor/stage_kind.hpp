@@ -24,6 +24,7 @@
 
 #include "core/point_set.hpp"
 #include "core/registry.hpp"
+#include "optim/method/stage_record.hpp"
 #include "optim/terms/point_term.hpp"
 
 namespace ppsynth {
@@ -38,7 +39,7 @@ struct StageStartView {
   const GaborSettings& settings;
   const PointSet& output;                 // every output point, as the stage starts
   const std::vector<size_t>& moving;      // output indices of the stage's moving points
-  const nlohmann::json& finished_stages;  // the records of the stages before (run.json "stages")
+  const std::vector<StageRecord>& finished_stages;  // the records of the stages before (run.json "stages")
 };
 
 // What a kind decides as its stage starts.
@@ -47,7 +48,7 @@ struct StageStart {
   // they are. Undefined: all move. None true: the stage ends at once.
   torch::Tensor moving_mask;
   std::string note;  // with the stage's first progress event: why it moves what it moves
-  nlohmann::json record = nlohmann::json::object();  // fields of the stage's record (run.json "stages")
+  nlohmann::json record = nlohmann::json::object();  // the kind's fields of the stage's record (StageRecord::details)
 };
 
 class StageKind {

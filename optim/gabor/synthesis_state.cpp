@@ -73,7 +73,7 @@ std::string serialize_state(const SynthesisState& s) {
   f.put_ints("history_where", where);
   for (const auto& [name, t] : s.optimizer) f.put(kOptimizerPrefix + name, tensor_array(t));
   f.meta = {{"layout", kLayout},   {"stage", s.stage},   {"iteration", s.iteration}, {"stage_scale", s.stage_scale},
-            {"rng", s.rng},        {"stages", s.stages}, {"phase_seconds", s.phase_seconds}};
+            {"rng", s.rng},        {"stages", to_json(s.stages)}, {"phase_seconds", s.phase_seconds}};
   return encode_checkpoint(f);
 }
 
@@ -97,9 +97,8 @@ SynthesisState deserialize_state(const std::string& bytes, const std::string& so
   if (!m.contains("rng") || !m["rng"].is_string()) throw refuse("meta 'rng': expected the generator's state");
   s.rng = m["rng"].get<std::string>();
   if (!m.contains("stages") || !m["stages"].is_array()) throw refuse("meta 'stages': expected a list");
-  s.stages = m["stages"];
-  // Each finished stage's summary, as finish_stage writes it (run.json and the relax read them).
-  for (const auto& st : s.stages) {
+  // Each finished stage's record, as finish_stage writes it (run.json and the relax read them).
+  for (const auto& st : m["stages"]) {
     if (!st.is_object()) throw refuse("meta 'stages': expected a list of objects");
     for (const auto& [k, v] : st.items()) {
       const bool ok = k == "stage" ? v.is_string()
@@ -108,6 +107,11 @@ SynthesisState deserialize_state(const std::string& bytes, const std::string& so
                                                                        : v.is_number();
       if (!ok) throw refuse("meta 'stages': the value of '" + k + "' has another type");
     }
+  }
+  try {
+    s.stages = stage_records_from_json(m["stages"]);
+  } catch (const std::invalid_argument& e) {
+    throw refuse(std::string("meta 'stages': ") + e.what());
   }
   if (!m.contains("phase_seconds") || !m["phase_seconds"].is_object()) throw refuse("meta 'phase_seconds': expected an object");
   for (const auto& [k, v] : m["phase_seconds"].items())

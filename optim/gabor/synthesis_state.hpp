@@ -13,6 +13,7 @@
 #include "core/checkpoint_file.hpp"
 
 #include "core/point_set.hpp"
+#include "optim/method/stage_record.hpp"
 #include "optim/steps/position_optimizer.hpp"
 
 namespace ppsynth {
@@ -40,7 +41,7 @@ struct SynthesisState {
   torch::Tensor stage_best;          // `moving` at the stage's best iterate, when the rule keeps one (else undefined)
   double stage_scale = -1;           // the point terms' unit (the stage's first loss), -1 unset
   std::vector<LossRecord> history;   // every iteration of every stage so far
-  nlohmann::json stages = nlohmann::json::array();  // one summary per finished stage
+  std::vector<StageRecord> stages;   // one record per finished stage
   nlohmann::json phase_seconds = nlohmann::json::object();
   // Which synthesis the state continues (core/checkpoint_file.hpp's key; SynthesisContext).
   nlohmann::json key = nlohmann::json::object();

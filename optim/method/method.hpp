@@ -19,6 +19,7 @@
 #include "core/output_shape.hpp"
 #include "core/point_set.hpp"
 #include "core/registry.hpp"
+#include "optim/method/stage_record.hpp"
 
 namespace ppsynth {
 
@@ -105,9 +106,12 @@ struct SynthesisContext : SynthesisOptions {
   std::string device = "cpu";
   bool tf32 = false;
   bool deterministic = true;
-  // Optional: the method records what it measured here (iterations and final loss per
-  // stage, wall time per phase, resolved settings such as the grid and sigmas).
+  // Optional: the method records what it measured here (wall time per phase, resolved
+  // settings such as the grid and sigmas).
   nlohmann::json* stats = nullptr;
+  // Optional: a method that works in stages records each finished stage here, typed
+  // (optim/method/stage_record.hpp), with the time of the processes before a resume.
+  StagesReport* stages = nullptr;
 
   // The checkpoints' interval (SynthesisOptions::save_checkpoint), and which synthesis they
   // belong to (core/checkpoint_file.hpp's key: resolved config, seed, exemplar, quick, method

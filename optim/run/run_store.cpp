@@ -124,8 +124,13 @@ void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const
     plot_pcf(dir + "/pcf.png", o.metrics);
   }
   // A resumed run's total includes the processes before (up to their last checkpoint).
-  o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() +
-              (o.stats.is_object() ? o.stats.value("seconds_before_resume", 0.0) : 0.0);
+  o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() + o.seconds_before_resume;
+  // run.json's method_stats: what the method measured, with its stages where it has them.
+  nlohmann::json method_stats = o.stats;
+  if (!o.stages.empty()) {
+    method_stats["stages"] = to_json(o.stages);
+    method_stats["seconds_before_resume"] = o.seconds_before_resume;
+  }
   nlohmann::json run = {{"name", name},
                         {"seed", r["seed"]},
                         {"revision", revision()},
@@ -139,7 +144,7 @@ void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const
                         {"synthesis_seconds", synthesis_seconds},
                         {"total_seconds", o.seconds},
                         {"peak_rss_mib", peak_resident_mib()},
-                        {"method_stats", o.stats}};
+                        {"method_stats", method_stats}};
   write_text_atomic(dir + "/run.json", run.dump(2) + "\n");
 }
 
@@ -154,6 +159,16 @@ RunOutcome load_run(const std::string& dir) {
   o.config = read_run_config(dir + "/config.json");
   const RunRecord run = read_run_record(dir + "/run.json");
   o.stats = run.method_stats;
+  if (o.stats.is_object() && o.stats.contains("stages")) {
+    try {
+      o.stages = stage_records_from_json(o.stats["stages"]);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(dir + "/run.json: method_stats.stages: " + e.what());
+    }
+    o.seconds_before_resume = o.stats.value("seconds_before_resume", 0.0);
+    o.stats.erase("stages");
+    o.stats.erase("seconds_before_resume");
+  }
   o.seconds = run.total_seconds;
   o.exemplar = run_exemplar(dir, o.config);
   o.output = read_points(dir + "/output.txt");

@@ -14,6 +14,7 @@
 
 #include "core/point_set.hpp"
 #include "core/run_json.hpp"
+#include "optim/method/stage_record.hpp"
 #include "optim/run/run_observers.hpp"
 
 namespace ppsynth {
@@ -22,8 +23,10 @@ namespace ppsynth {
 struct RunOutcome {
   std::string dir;
   PointSet exemplar, initialization, output;
-  nlohmann::json stats, metrics, config;
+  std::vector<StageRecord> stages;   // a staged method's finished stages (run.json: method_stats.stages)
+  nlohmann::json stats, metrics, config;  // stats: the rest of run.json's method_stats
   double seconds = 0;
+  double seconds_before_resume = 0;  // the part of `seconds` spent before a resume
 };
 
 // Writes every output file of a finished synthesis into o.dir (o.seconds is set here: the

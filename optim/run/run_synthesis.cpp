@@ -74,6 +74,8 @@ RunOutcome execute(RunOutcome o, RunDirectory& dir, const std::string& name, con
     SynthesisResult res = synthesize(o.exemplar, r, options);
     o.output = std::move(res.output);
     o.initialization = std::move(res.initialization);
+    o.stages = std::move(res.stages);
+    o.seconds_before_resume = res.seconds_before_resume;
     o.stats = std::move(res.stats);
     o.metrics = std::move(res.metrics);
     write_run_outputs(o, name, req.quick, losses, res.seconds, t0);

@@ -21,14 +21,6 @@ struct InitialRecorder : SynthesisObserver {
   void on_start(const PointSet& p) override { initial = p; }
 };
 
-std::vector<StageResult> stage_results(const nlohmann::json& stats) {
-  std::vector<StageResult> v;
-  if (!stats.is_object() || !stats.contains("stages")) return v;
-  for (const auto& s : stats["stages"])
-    v.push_back({s.value("stage", ""), s.value("iterations", 0), s.value("final_loss", 0.0), s.value("seconds", 0.0)});
-  return v;
-}
-
 }  // namespace
 
 bool can_resume(const nlohmann::json& spec) {
@@ -110,6 +102,8 @@ SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec,
   ctx.observers.push_back(&initial);
   SynthesisResult r;
   ctx.stats = &r.stats;
+  StagesReport stages;
+  ctx.stages = &stages;
   if (method->can_resume()) {
     ctx.checkpoint_seconds = spec["checkpoint_seconds"].get<double>();
     ctx.checkpoint_key = checkpoint_key(spec, exemplar, options.quick);
@@ -120,10 +114,10 @@ SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec,
   const auto t0 = Clock::now();
   r.output = method->synthesize(exemplar, ctx);
   // A resumed run's time includes its earlier processes' (up to their last checkpoint).
-  r.seconds = std::chrono::duration<double>(Clock::now() - t0).count() +
-              (r.stats.is_object() ? r.stats.value("seconds_before_resume", 0.0) : 0.0);
+  r.seconds_before_resume = stages.seconds_before_resume;
+  r.seconds = std::chrono::duration<double>(Clock::now() - t0).count() + r.seconds_before_resume;
   r.initialization = std::move(initial.initial);
-  r.stages = stage_results(r.stats);
+  r.stages = std::move(stages.stages);
   if (r.output.empty())  // a rectangle of a point or two whose points all parked outside it
     throw config_error(spec["output"]["size"].is_null() ? "output.points" : "output.size",
                        "the synthesis left no point inside the output (" + ctx.output.describe() + "); give a larger output");

@@ -18,21 +18,16 @@
 
 namespace ppsynth {
 
-// One stage of a run (a class and sigma of the Gabor method; empty for one-shot methods).
-struct StageResult {
-  std::string stage;
-  int iterations = 0;
-  double final_loss = 0;
-  double seconds = 0;
-};
-
 struct SynthesisResult {
   PointSet initialization;           // the output before optimization
   PointSet output;                   // in the unit square, with classes and attributes
-  std::vector<StageResult> stages;   // per stage: iterations, final loss, wall time
-  nlohmann::json stats;              // all the method measured (grid, sigmas, phase times, ...)
+  // Each finished stage of a method that works in stages (the Gabor method's classes and
+  // sigmas; none for the one-shot baselines): iterations, final loss, wall time, its details.
+  std::vector<StageRecord> stages;
+  nlohmann::json stats;              // the rest the method measured (grid, sigmas, phase times, ...)
   nlohmann::json metrics;            // evaluate(exemplar, output) when the spec asks, else null
   double seconds = 0;                // wall time of the synthesis (metrics excluded), over every process of a resumed run
+  double seconds_before_resume = 0;  // the part of `seconds` spent by the processes before a resume
 };
 
 // Runs the spec's method on `exemplar`. Same spec, seed, exemplar and thread count give the

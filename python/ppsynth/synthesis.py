@@ -12,7 +12,7 @@ import csv
 import json
 import numbers
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable, List, Mapping, Optional, Sequence, Union
 
 import numpy as np
@@ -68,11 +68,15 @@ class Stage:
         Its loss at the end.
     seconds : float
         Its wall time.
+    details : dict
+        What the method and the stage's kind recorded of it: the class, sigma and number of
+        neighbors of a Gabor stage; a border relax's ``parked_over_uniform`` and ``relaxed``.
     """
     stage: str
     iterations: int
     final_loss: float
     seconds: float
+    details: dict = field(default_factory=dict)
 
 
 @dataclass
@@ -116,7 +120,8 @@ class Result:
     losses : Losses
         Every iteration's loss.
     stats : dict
-        All the method measured: grids, sigmas, phase times, the resolved parts.
+        The rest the method measured: grids, sigmas, phase times, the resolved parts (the
+        stages are in ``stages``).
     metrics : Evaluation or None
         ``evaluate(exemplar, output)`` when the config's ``"evaluate"`` is on, else None.
     seconds : float
@@ -293,13 +298,11 @@ def _losses_of_run(run_dir: str) -> Losses:
 
 def _run_result(r: dict, resumed: bool) -> Result:
     """A run directory's Result: what the native call returned, and its run.json and loss.csv."""
-    stats = r["stats"]
     with open(os.path.join(r["dir"], "run.json")) as f:
         record = json.load(f)
-    stages = [Stage(st["stage"], int(st["iterations"]), float(st["final_loss"]), float(st["seconds"]))
-              for st in stats.get("stages", [])]
     return Result(PointSet._from_native(r["output"]), PointSet._from_native(r["initialization"]),
-                  PointSet._from_native(r["exemplar"]), stages, _losses_of_run(r["dir"]), stats,
+                  PointSet._from_native(r["exemplar"]), [Stage(**st) for st in r["stages"]], _losses_of_run(r["dir"]),
+                  r["stats"],
                   _evaluation_or_none(r["metrics"]), r["seconds"], int(record.get("threads", 0)),
                   str(record.get("processor", "")), r["config"], resumed, r["dir"])
 

@@ -147,7 +147,8 @@ class CheckpointDir {
   bool made_folder_ = false;
 };
 
-py::list stage_list(const std::vector<StageResult>& stages) {
+// The package's Stage fields (python/ppsynth/synthesis.py), from the typed records.
+py::list stage_list(const std::vector<StageRecord>& stages) {
   py::list l;
   for (const auto& s : stages) {
     py::dict d;
@@ -155,6 +156,7 @@ py::list stage_list(const std::vector<StageResult>& stages) {
     d["iterations"] = s.iterations;
     d["final_loss"] = s.final_loss;
     d["seconds"] = s.seconds;
+    d["details"] = pyjson::from_json(s.details);
     l.append(d);
   }
   return l;
@@ -172,6 +174,7 @@ py::dict outcome_dict(const RunOutcome& o) {
   d["exemplar"] = to_python(o.exemplar);
   d["initialization"] = to_python(o.initialization);
   d["output"] = to_python(o.output);
+  d["stages"] = stage_list(o.stages);
   d["stats"] = pyjson::from_json(o.stats);
   d["metrics"] = pyjson::from_json(o.metrics);
   d["config"] = pyjson::from_json(o.config);

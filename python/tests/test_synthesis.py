@@ -65,7 +65,13 @@ def test_synthesize_in_memory_equals_the_command(tmp_path):
     assert np.all(np.isfinite(r.losses.loss))
     assert r.metrics.all.pcf.r.shape == (100,)
     assert r.config["seed"] == 11 and r.threads == 1 and not r.resumed
-    assert r.processor == json.loads((tmp_path / "cmd" / "run.json").read_text())["processor"]
+    record = json.loads((tmp_path / "cmd" / "run.json").read_text())
+    assert r.processor == record["processor"]
+    # The stages, typed, with what run.json shows of each beside the four fields.
+    shown = record["method_stats"]["stages"]
+    assert [s.iterations for s in r.stages] == [st["iterations"] for st in shown]
+    assert [s.details["sigma"] for s in r.stages] == [st["sigma"] for st in shown]
+    assert "stages" not in r.stats
 
 
 def test_same_seed_same_points_and_progress_is_reported():

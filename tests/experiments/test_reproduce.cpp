@@ -321,8 +321,9 @@ TEST_CASE("report cells and config lookup", "[apps][reproduce]") {
   CHECK(format_cell(json(3)) == "3");
   CHECK(format_cell(json(nullptr)) == "n/a");
   CHECK(format_cell(json("0.66, 0.65")) == "0.66, 0.65");
-  CHECK(total_iterations(json{{"stages", {{{"iterations", 4}}, {{"iterations", 3}}}}}) == 7);
-  CHECK(total_iterations(json{{"iterations", 30}}) == 30);
+  CHECK(total_iterations({StageRecord{"a", 4}, StageRecord{"b", 3}}, json::object()) == 7);
+  CHECK(total_iterations({}, json{{"iterations", 30}}) == 30);
+  CHECK(total_iterations({}, json{{"scales", {{{"merge_iterations", 5}}, {{"merge_iterations", 2}}}}}) == 7);
   CHECK_THROWS_WITH(find_reproduce_config("fig99"), Catch::Contains("fig99") && Catch::Contains("fig05"));
   CHECK(fs::path(find_reproduce_config("fig05")).filename() == "fig05.json");
 }

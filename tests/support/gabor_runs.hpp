@@ -16,6 +16,7 @@ struct CheckpointedRun {
   PointSet output;
   std::vector<std::string> checkpoints;  // every one saved, in order
   json stats;
+  StagesReport report;  // the stages, typed
 };
 
 // `method_spec` on the paper's u x u square with --quick, seed `seed`, a checkpoint at every iteration.
@@ -28,6 +29,7 @@ inline CheckpointedRun checkpointed_run(const json& method_spec, const PointSet&
   ctx.quick = true;
   ctx.seed = seed;
   ctx.stats = &run.stats;
+  ctx.stages = &run.report;
   ctx.checkpoint_seconds = 0;  // every iteration
   ctx.save_checkpoint = [&](const std::string& bytes) { run.checkpoints.push_back(bytes); };
   ctx.resume_state = resume;

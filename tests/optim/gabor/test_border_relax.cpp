@@ -187,12 +187,12 @@ TEST_CASE("the border relax's separation acts in the relax stages only, and keep
 TEST_CASE("a class is relaxed when it or an earlier class parks; a run where none parks is the paper's bit for bit", "[optim][border_relax]") {
   const PointSet ex = test::small_exemplar(2, false);
   uint64_t seed = 0;
-  auto run = [&](const json& method_json, StageEnds* ends, json* stats = nullptr) {
+  auto run = [&](const json& method_json, StageEnds* ends, StagesReport* stages = nullptr) {
     auto method = MethodRegistry::instance().create(method_json, "method");
     SynthesisContext ctx;
     ctx.quick = true;
     ctx.seed = seed;
-    ctx.stats = stats;
+    ctx.stages = stages;
     if (ends) ctx.observers.push_back(ends);
     return method->synthesize(ex, ctx);
   };
@@ -216,32 +216,32 @@ TEST_CASE("a class is relaxed when it or an earlier class parks; a run where non
   CHECK(class0_moved(always));
   // A bound just under its share relaxes it; at its share (not above it) the class stays put.
   StageEnds under, at;
-  json under_stats, at_stats;
+  StagesReport under_stats, at_stats;
   run(relaxed_method(4, 1.0, parked * 0.99), &under, &under_stats);
   run(relaxed_method(4, 1.0, parked), &at, &at_stats);
   CHECK(class0_moved(under));
   CHECK_FALSE(class0_moved(at));
   // The run's stages say what decided it, and that the relax ran no iteration.
-  REQUIRE(at_stats["stages"].size() == 6);
-  CHECK(at_stats["stages"][2]["parked_over_uniform"].get<double>() == Approx(parked));
-  CHECK(at_stats["stages"][2]["iterations"] == 0);
-  CHECK(at_stats["stages"][2]["relaxed"] == false);
+  REQUIRE(at_stats.stages.size() == 6);
+  CHECK(at_stats.stages[2].details["parked_over_uniform"].get<double>() == Approx(parked));
+  CHECK(at_stats.stages[2].iterations == 0);
+  CHECK(at_stats.stages[2].details["relaxed"] == false);
   // The relax stage's beginning says it to the progress log; a sigma stage has no note.
   REQUIRE(at.notes.size() == 6);
   CHECK(at.notes[1].empty());
   CHECK_THAT(at.notes[2], Catch::Contains("x uniform points' share within 1 % of the edge") && Catch::EndsWith("nothing to move"));
   CHECK_THAT(under.notes[2], Catch::EndsWith("relaxing its band"));
-  CHECK_FALSE(at_stats["stages"][1].contains("parked_over_uniform"));
+  CHECK_FALSE(at_stats.stages[1].details.contains("parked_over_uniform"));
   // Class 1 parks less than the bound in both runs; once class 0 was relaxed, it is relaxed
   // too (its pairs with class 0 across the seam were never measured before), else not.
-  REQUIRE(under_stats["stages"].size() == 6);
-  const double class1 = under_stats["stages"][5]["parked_over_uniform"].get<double>();
+  REQUIRE(under_stats.stages.size() == 6);
+  const double class1 = under_stats.stages[5].details["parked_over_uniform"].get<double>();
   INFO("class 1 parks " << class1 << " x uniform");
   REQUIRE(class1 <= parked * 0.99);
-  CHECK(under_stats["stages"][2]["relaxed"] == true);
-  CHECK(under_stats["stages"][5]["relaxed"] == true);
+  CHECK(under_stats.stages[2].details["relaxed"] == true);
+  CHECK(under_stats.stages[5].details["relaxed"] == true);
   CHECK(!same_bits(under.points[4].subset_class(1), under.points[5].subset_class(1)));
-  CHECK(at_stats["stages"][5]["relaxed"] == false);
+  CHECK(at_stats.stages[5].details["relaxed"] == false);
   CHECK(same_bits(at.points[4].subset_class(1), at.points[5].subset_class(1)));
   // No class parks above a bound of 1000: the relax moves nothing and the output is the
   // published plan's (no relax stages) bit for bit.

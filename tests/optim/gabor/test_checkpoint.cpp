@@ -74,11 +74,11 @@ TEST_CASE("a run resumed from any checkpoint ends bit for bit as the uninterrupt
       INFO("checkpoint " << i << ": stage " << st.stage << ", iteration " << st.iteration);
       const Run resumed = synthesize(ex, &whole.checkpoints[i]);
       CHECK(same_bits(resumed.output, whole.output));
-      REQUIRE(resumed.stats["stages"].size() == whole.stats["stages"].size());
+      REQUIRE(resumed.report.stages.size() == whole.report.stages.size());
       // per-stage iterations and final losses are the same too (seconds aside)
-      for (size_t s = 0; s < whole.stats["stages"].size(); ++s) {
-        CHECK(resumed.stats["stages"][s]["iterations"] == whole.stats["stages"][s]["iterations"]);
-        CHECK(resumed.stats["stages"][s]["final_loss"] == whole.stats["stages"][s]["final_loss"]);
+      for (size_t s = 0; s < whole.report.stages.size(); ++s) {
+        CHECK(resumed.report.stages[s].iterations == whole.report.stages[s].iterations);
+        CHECK(resumed.report.stages[s].final_loss == whole.report.stages[s].final_loss);
       }
     }
   }
@@ -95,16 +95,16 @@ TEST_CASE("a stage stopped by the pattern rule resumes to the same stopping iter
   spec["border_relax"] = {{"iterations", 0}};  // the sigma stages only
   const PointSet ex = test::small_exemplar(1, false);
   const Run whole = synthesize(ex, nullptr, nullptr, spec);
-  REQUIRE(whole.stats["stages"].size() == 2);
-  const int first_stage = whole.stats["stages"][0]["iterations"];
+  REQUIRE(whole.report.stages.size() == 2);
+  const int first_stage = whole.report.stages[0].iterations;
   CHECK(whole.stats["output_grid_res_per_sigma"][0] < whole.stats["output_grid_res_per_sigma"][1]);
   CHECK(first_stage < 80);  // stopped by the rule, not the cap
   for (size_t i : {size_t{7}, size_t{12}, whole.checkpoints.size() / 2}) {
     INFO("checkpoint " << i);
     const Run resumed = synthesize(ex, &whole.checkpoints[i], nullptr, spec);
     CHECK(same_bits(resumed.output, whole.output));
-    CHECK(resumed.stats["stages"][0]["iterations"] == first_stage);
-    CHECK(resumed.stats["stages"][1]["iterations"] == whole.stats["stages"][1]["iterations"]);
+    CHECK(resumed.report.stages[0].iterations == first_stage);
+    CHECK(resumed.report.stages[1].iterations == whole.report.stages[1].iterations);
   }
 }
 
@@ -122,7 +122,7 @@ TEST_CASE("a stage that ends on its best iterate ends there, and resumes to the 
   const Run last = synthesize(ex, nullptr, nullptr, spec);
   spec["convergence"]["end_on"] = "best";
   const Run best = synthesize(ex, nullptr, nullptr, spec);
-  REQUIRE(best.stats["stages"][0]["iterations"] == 60);  // both ran to the cap: same trajectory
+  REQUIRE(best.report.stages[0].iterations == 60);  // both ran to the cap: same trajectory
   PcfOptions torus;
   torus.periodic = true;
   const Curve target = pcf(ex);
@@ -224,7 +224,7 @@ TEST_CASE("a restored state is checked against the plan: indices, counts, flags,
       {"iteration", [](SynthesisState& s) { s.iteration = 100000; }},
       {"losses recorded", [](SynthesisState& s) { s.stage_losses.push_back(1.0); }},
       {"a loss recorded at stage", [](SynthesisState& s) { s.history[0].stage = 999; }},
-      {"finished stages", [](SynthesisState& s) { s.stages.push_back(json::object()); }},
+      {"finished stages", [](SynthesisState& s) { s.stages.push_back(StageRecord{}); }},
       {"not finite", [](SynthesisState& s) { s.moving[0][0] = std::nanf(""); }},
       {"not finite", [](SynthesisState& s) { s.stage_losses[0] = INFINITY; }},
       {"optimizer state 'exp_avg'", [](SynthesisState& s) { s.optimizer["exp_avg"] = torch::zeros({3, 2}); }},
@@ -232,7 +232,7 @@ TEST_CASE("a restored state is checked against the plan: indices, counts, flags,
       {"optimizer state 'step'", [](SynthesisState& s) { s.optimizer["step"] = torch::tensor(int64_t{0}); }},
       {"optimizer state 'momentum'", [](SynthesisState& s) { s.optimizer["momentum"] = torch::zeros({1}); }},
       {"best iterate", [](SynthesisState& s) { s.stage_best = torch::zeros({1, 2}); }},
-      {"another type", [](SynthesisState& s) { s.stages.push_back({{"relaxed", "yes"}}); }},
+      {"another type", [](SynthesisState& s) { s.stages.push_back(StageRecord{"sigma 1/2", 1, 0.0, 0.0, {{"relaxed", "yes"}}}); }},
       {"generator", [](SynthesisState& s) { s.rng = "not a generator"; }},
   };
   for (const Case& c : cases) {

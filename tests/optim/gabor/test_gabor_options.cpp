@@ -1,9 +1,10 @@
-// The Gabor method's typed option blocks (optim/gabor/grid_options.hpp, window_options.hpp,
-// quick_options.hpp): each reads its block, names its key on a bad value, and is what the
-// method's defaults and ranges list.
+// The Gabor method's typed options (optim/gabor/gabor_options.hpp, grid_options.hpp,
+// window_options.hpp, quick_options.hpp): each reads its keys, names the key on a bad value,
+// and is what the method's defaults and ranges list.
 #include <catch2/catch.hpp>
 
 #include "core/error.hpp"
+#include "optim/gabor/gabor_options.hpp"
 #include "optim/gabor/gabor_pipeline.hpp"
 #include "optim/gabor/grid_options.hpp"
 #include "optim/gabor/quick_options.hpp"
@@ -68,4 +69,35 @@ TEST_CASE("method.quick: its caps, and the method lists every block's defaults a
   CHECK(bounds["grid"] == GridOptions::bounds());
   CHECK(bounds["window"] == WindowOptions::bounds());
   CHECK(bounds["quick"] == QuickOptions::bounds());
+}
+
+TEST_CASE("the method's own keys: the published settings by default, a bad value named", "[optim][options]") {
+  json p = GaborOptions::defaults();
+  const GaborOptions o = GaborOptions::resolve(p);
+  CHECK(o.c1 == 1.0);
+  CHECK(o.c2 == 2.6);
+  CHECK(o.num_sigmas == 4);
+  CHECK(o.max_iterations == 500);
+  CHECK(o.k_per_stage);
+  CHECK(o.jitter);
+  CHECK(o.class_order.empty());
+  CHECK(o.measure == GaborOptions::Measure::grid);
+  p["measure"] = "rolled";
+  p["class_order"] = {1, 0};
+  const GaborOptions r = GaborOptions::resolve(p);
+  CHECK(r.measure == GaborOptions::Measure::rolled);
+  CHECK(std::string(measure_name(r.measure)) == "rolled");
+  CHECK(r.class_order == std::vector<int>{1, 0});
+  for (const auto& [key, bad] : {std::pair<const char*, json>{"measure", "edges"}, {"class_order", json{0, -1}},
+                                 {"class_order", json{0.5}}, {"jitter", 1}, {"k", 0}}) {
+    json q = GaborOptions::defaults();
+    q[key] = bad;
+    INFO(key << " = " << bad.dump());
+    CHECK_THROWS_WITH(GaborOptions::resolve(q), Contains(std::string("method.") + key));
+  }
+  // (Named: a range-for over a temporary's items() would outlive the temporary.)
+  const json defaults = gabor_defaults(), bounds = gabor_bounds();
+  const json own_defaults = GaborOptions::defaults(), own_bounds = GaborOptions::bounds();
+  for (const auto& [key, value] : own_defaults.items()) CHECK(defaults.at(key) == value);
+  for (const auto& [key, value] : own_bounds.items()) CHECK(bounds.at(key) == value);
 }

@@ -185,5 +185,5 @@ TEST_CASE("method.measure is refused where it means nothing, naming the key", "[
                       Catch::Contains("method.map_terms"));
   }
   CHECK(resolve_gabor_settings(method_params(json{{"type", "gabor"}, {"measure", "rolled"}}), ex, square, false).measure ==
-        GaborSettings::Measure::rolled);
+        GaborOptions::Measure::rolled);
 }

@@ -46,7 +46,7 @@ PPSYNTH_REGISTER(StageKindRegistry, "test_left_half", json::object(), json::obje
                    return std::make_unique<LeftHalfStage>();
                  })
 
-PointSet run(const PointSet& ex, test::StageEnds& ends, json* stats) {
+PointSet run(const PointSet& ex, test::StageEnds& ends, StagesReport* stages) {
   const json method = {{"type", "gabor"},
                        {"border_relax", {{"iterations", 0}}},
                        {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 5}, {"num_sigmas", 2}}}};
@@ -54,7 +54,7 @@ PointSet run(const PointSet& ex, test::StageEnds& ends, json* stats) {
   ctx.quick = true;
   ctx.seed = 11;
   ctx.observers.push_back(&ends);
-  ctx.stats = stats;
+  ctx.stages = stages;
   return MethodRegistry::instance().create(method, "method")->synthesize(ex, ctx);
 }
 
@@ -63,7 +63,7 @@ PointSet run(const PointSet& ex, test::StageEnds& ends, json* stats) {
 TEST_CASE("a stage kind added by one file runs in the plan", "[optim][stage_kinds][synthesis]") {
   const PointSet ex = test::small_exemplar(2, false);
   test::StageEnds paper, with_kind;
-  json stats;
+  StagesReport stats;
   run(ex, paper, nullptr);
   {
     left_half_enabled = true;
@@ -96,8 +96,8 @@ TEST_CASE("a stage kind added by one file runs in the plan", "[optim][stage_kind
     INFO("class " << c);
     CHECK(moved > left / 2);
     // Its record: the engine's fields, with the kind's own.
-    const json& record = stats["stages"][3 * c + 2];
-    CHECK(record["iterations"] == 3);
-    CHECK(record["left_points"] == static_cast<int64_t>(left));
+    const StageRecord& record = stats.stages[3 * c + 2];
+    CHECK(record.iterations == 3);
+    CHECK(record.details["left_points"] == static_cast<int64_t>(left));
   }
 }

@@ -5,8 +5,11 @@
 
 #include <ATen/Parallel.h>
 
+#include <fstream>
+
 #include "core/formats/point_io.hpp"
 #include "optim/run/run_config.hpp"
+#include "optim/run/run_store.hpp"
 #include "optim/run/run_synthesis.hpp"
 #include "optim/run/synthesize.hpp"
 #include "tests/support/run_command.hpp"
@@ -70,7 +73,22 @@ TEST_CASE("a run directory holds what synthesize() returns for the same spec", "
   require_same_points(read_points(req.dir + "/output.txt"), in_memory.output);
   require_same_points(read_points(req.dir + "/init.txt"), in_memory.initialization);
   CHECK(run.metrics == in_memory.metrics);
-  CHECK(run.stats["stages"].size() == in_memory.stages.size());
+  REQUIRE(run.stages.size() == in_memory.stages.size());
+  for (size_t s = 0; s < run.stages.size(); ++s) {
+    CHECK(run.stages[s].stage == in_memory.stages[s].stage);
+    CHECK(run.stages[s].iterations == in_memory.stages[s].iterations);
+    CHECK(run.stages[s].final_loss == in_memory.stages[s].final_loss);
+    CHECK(run.stages[s].details == in_memory.stages[s].details);
+  }
+  // run.json shows them as one flat object each, and load_run reads them back typed.
+  const json record = json::parse(std::ifstream(req.dir + "/run.json"));
+  REQUIRE(record["method_stats"]["stages"].size() == in_memory.stages.size());
+  CHECK(record["method_stats"]["stages"][0]["iterations"] == in_memory.stages[0].iterations);
+  CHECK(record["method_stats"]["stages"][0]["sigma"] == in_memory.stages[0].details["sigma"]);
+  const RunOutcome loaded = load_run(req.dir);
+  REQUIRE(loaded.stages.size() == in_memory.stages.size());
+  CHECK(loaded.stages.back().final_loss == in_memory.stages.back().final_loss);
+  CHECK_FALSE(loaded.stats.contains("stages"));
 }
 
 TEST_CASE("synthesize() needs no exemplar file and refuses what its method cannot do", "[library]") {
