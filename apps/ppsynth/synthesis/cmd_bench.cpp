@@ -17,6 +17,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
+#include <random>
 
 #include "apps/ppsynth/command.hpp"
 #include "apps/ppsynth/option_checks.hpp"
@@ -91,6 +93,279 @@ struct Opts {
   bool skip_setup = false;
 };
 
+// What the bench times: the config's Gabor pipeline on the paper's u x u output, set to its
+// finest sigma (every config's most expensive stage, on the grid every config shares at its
+// end; per-sigma grids make the coarser ones cheaper), on the config's device.
+struct Subject {
+  json r;                      // the resolved run config
+  torch::Device device = torch::kCPU;
+  PointSet ex, start;
+  GaborSettings s;
+  std::unique_ptr<GaborPipeline> pipe;
+  torch::Tensor ex_pts, moving, ex_w, out_w;
+  int u = 1;
+  int bench_sigma = 0;         // the finest sigma's index
+  double sigma = 0;
+  int R = 0;                   // its output grid
+  Clock::time_point t0;        // before the settings were resolved (the first set-up's start)
+};
+
+Subject make_subject(const Opts& o) {
+  json c = o.config.empty() ? json::object() : load_config(o.config);
+  if (!o.exemplar.empty()) c["exemplar"] = o.exemplar;
+  if (!o.device.empty()) c["runtime"]["device"] = o.device;
+  Subject b;
+  b.r = resolve_run_config(c, o.sets);
+  if (b.r["method"]["type"] != "gabor") throw InputError("bench: only the gabor method is benchmarked");
+  b.device = torch::Device(apply_device_settings(b.r["runtime"]).device);
+  const json& p = b.r["method"];
+  b.ex = load_exemplar(b.r);
+  b.u = b.r["upscale"];
+  const uint64_t seed = b.r["seed"];
+  b.t0 = Clock::now();
+  OutputShape shape;  // the paper's u x u output: the bench times its iteration
+  shape.upscale = b.u;
+  b.s = resolve_gabor_settings(p, b.ex, shape, false);
+  b.pipe = std::make_unique<GaborPipeline>(p, b.s, seed, b.device);
+  auto init = InitializerRegistry::instance().create(p["init"], "method.init");
+  b.start = init->initialize(b.ex.size() * b.u * b.u, 0, seed, Domain{});
+  b.ex_pts = positions_tensor(b.ex).to(b.device);
+  b.moving = positions_tensor(b.start).to(b.device).set_requires_grad(true);
+  // Map weights (disks, multi-attribute scenes): the output carries the exemplar's values u^2 times.
+  b.ex_w = b.s.attr_cols.empty() ? torch::Tensor() : normalized_attributes(b.ex, b.s.attr_cols).to(b.device);
+  b.out_w = b.ex_w.defined() ? b.ex_w.repeat({b.u * b.u, 1}) : torch::Tensor();
+  b.bench_sigma = static_cast<int>(b.s.sigmas.size()) - 1;
+  b.sigma = b.s.sigmas.back();
+  b.R = b.s.sigma_out_res[b.bench_sigma];
+  b.pipe->set_grid(b.bench_sigma);
+  return b;
+}
+
+// The set-up: exemplar maps -> features -> targets; the first (with the settings' resolution)
+// and, unless skipped, each sigma's. Leaves the pipeline at the finest sigma.
+struct SetupTimes {
+  double first = 0;
+  std::vector<double> each;
+};
+
+SetupTimes time_setup(Subject& b, bool skip_each) {
+  SetupTimes t;
+  auto a = Clock::now();
+  b.pipe->set_targets(b.ex_pts, b.ex_w, b.sigma);
+  t.first = std::chrono::duration<double>(Clock::now() - a).count() + std::chrono::duration<double>(a - b.t0).count();
+  if (!skip_each)
+    for (size_t i = 0; i < b.s.sigmas.size(); ++i) {
+      b.pipe->set_grid(static_cast<int>(i));
+      auto c = Clock::now();
+      b.pipe->set_targets(b.ex_pts, b.ex_w, b.s.sigmas[i]);
+      t.each.push_back(std::chrono::duration<double>(Clock::now() - c).count());
+    }
+  b.pipe->set_grid(b.bench_sigma);
+  b.pipe->set_targets(b.ex_pts, b.ex_w, b.sigma);
+  return t;
+}
+
+// A backward phase's times less its forward's median (the backward is timed with its forward).
+void subtract(Timing& backward, const Timing& forward) {
+  const double fwd = forward.median();
+  for (auto& x : backward.s) x = std::max(0.0, x - fwd);
+}
+
+// One iteration by phase, then whole forward + backward passes.
+struct PhaseTimes {
+  std::vector<std::pair<std::string, Timing>> phases;
+  Timing full;
+  int map_channels = 0;  // the network's input channels (the floor's FLOPs)
+};
+
+PhaseTimes time_phases(Subject& b, int reps, std::mt19937_64& rng) {
+  GaborPipeline& pipe = *b.pipe;
+  GaborMapsOptions mo;
+  mo.res = b.R;  // the finest sigma's grid (the pipeline's)
+  mo.upscale = b.u;
+  mo.k = b.s.k;
+  GaborFeatureMaps maps_mod(mo);
+  maps_mod->to(b.device);
+  auto pts = wrap_unit(b.moving.detach());
+  auto jit = pipe.draw_jitter(rng);
+  auto grid = jit.defined() ? maps_mod->grid() + jit : maps_mod->grid();
+  PhaseTimes t;
+  auto& phases = t.phases;
+  phases.push_back({"neighbor search (k-NN)", time_it(reps, [&] {
+                      b.device.is_cpu() ? grid_knn(pts, grid, b.s.k) : grid_knn_tensor_ops(pts, grid, b.s.k);
+                    })});
+  torch::Tensor maps;
+  phases.push_back({"Gabor maps forward", time_it(reps, [&] {
+                      torch::NoGradGuard ng;
+                      maps = pipe.output_maps(pts, b.out_w, b.sigma, jit);
+                    })});
+  phases.push_back({"Gabor maps backward", time_it(reps, [&] {
+                      auto p2 = pts.clone().set_requires_grad(true);
+                      auto m = pipe.output_maps(p2, b.out_w, b.sigma, jit);
+                      m.backward(torch::ones_like(m));
+                    })});
+  subtract(phases[2].second, phases[1].second);
+  Features feats;
+  phases.push_back({"network forward", time_it(reps, [&] {
+                      torch::NoGradGuard ng;
+                      feats = pipe.features(maps);
+                    })});
+  phases.push_back({"network backward (input grad)", time_it(reps, [&] {
+                      auto m = maps.clone().set_requires_grad(true);
+                      auto f = pipe.features(m);
+                      torch::Tensor sum;
+                      for (auto& x : f) sum = sum.defined() ? sum + x.sum() : x.sum();
+                      sum.backward();
+                    })});
+  subtract(phases[4].second, phases[3].second);
+  for (auto& term : pipe.composite().terms()) {
+    phases.push_back({"loss " + term.type + " (forward + backward)", time_it(reps, [&] {
+                        Features f;
+                        for (auto& x : feats) f.push_back(x.detach().clone().set_requires_grad(true));
+                        term.loss->forward(f).backward();
+                      })});
+  }
+  t.full = time_it(reps, [&] {
+    if (b.moving.grad().defined()) b.moving.grad().zero_();
+    auto m = pipe.output_maps(wrap_unit(b.moving), b.out_w, b.sigma, pipe.draw_jitter(rng));
+    pipe.loss(pipe.features(m)).backward();
+  });
+  t.map_channels = static_cast<int>(maps.size(1));
+  return t;
+}
+
+// Whole iterations as a run takes them, through the run library's synthesize(): one stage
+// (with one sigma, the finest), a checkpoint written after every iteration (the worst case).
+struct RunIterationTimes {
+  Timing iteration;  // the first (warm-up) left out
+  Timing checkpoint_write;
+  size_t checkpoint_bytes = 0;
+};
+
+RunIterationTimes time_run_iterations(const Subject& b, int reps) {
+  struct IterationClock : SynthesisObserver {
+    std::vector<double> at;  // seconds since the stage began, at the end of each iteration
+    void on_iteration(const ProgressEvent& e) override { at.push_back(e.seconds); }
+  } iteration_clock;
+  json spec = b.r;
+  spec["method"]["num_sigmas"] = 1;
+  spec["method"]["max_iterations"] = reps + 2;
+  spec["checkpoint_seconds"] = 1e-9;  // a checkpoint after every iteration
+  spec["evaluate"] = false;
+  CheckpointStore checkpoints(
+      (std::filesystem::temp_directory_path() / ("ppsynth-bench-" + std::to_string(::getpid()) + ".bin")).string());
+  RunIterationTimes t;
+  SynthesisOptions options;
+  options.observers = {&iteration_clock};
+  options.save_checkpoint = [&](const std::string& bytes) {
+    const auto a = Clock::now();
+    checkpoints.save(bytes);
+    t.checkpoint_write.s.push_back(std::chrono::duration<double>(Clock::now() - a).count());
+    t.checkpoint_bytes = std::max(t.checkpoint_bytes, bytes.size());
+  };
+  synthesize(b.ex, spec, options);
+  checkpoints.remove();
+  for (size_t i = 2; i < iteration_clock.at.size(); ++i) t.iteration.s.push_back(iteration_clock.at[i] - iteration_clock.at[i - 1]);
+  if (t.iteration.s.empty()) t.iteration.s.push_back(iteration_clock.at.back());
+  return t;
+}
+
+// The convolution floor: the network's FLOPs over this binary's own convolution throughput,
+// in float32 and in bfloat16 (the path the config runs decides which is its floor).
+struct Floor {
+  std::vector<ConvThroughput> paths;  // float32, bfloat16
+  int bf16_res = 0;                   // where bf16's throughput was measured
+  double flops = 0;                   // the network's, forward + input gradient
+  bool bf16 = false;                  // the config's network runs bf16
+  double gflops() const { return paths[bf16 ? 1 : 0].gflops; }
+  double seconds() const { return flops / (gflops() * 1e9); }
+};
+
+Floor convolution_floor(const Subject& b, int map_channels, int reps) {
+  // The network as its registry resolves it (its declared defaults under the config's).
+  const nlohmann::json net = FeatureNetRegistry::instance().resolve(b.s.feature_net, "method.feature_net");
+  const bool random_net = net["type"] == "random";
+  Floor f;
+  // Emulated bf16 runs at about 1/100 of float32 (minutes per convolution at R = 256): its
+  // throughput is taken once on a 64 x 64 map, where it is the same per FLOP.
+  const bool bf16_units = !b.device.is_cpu() || cpu_isa().native_bf16;
+  f.bf16_res = bf16_units ? b.R : std::min(b.R, 64);
+  f.paths = {conv_throughput_float32(b.R, reps, b.device), conv_throughput_bfloat16(f.bf16_res, bf16_units ? reps : 1, b.device)};
+  if (random_net) {
+    f.flops = net_flops(map_channels, net["channels"].get<int>(), net["kernel_size"].get<int>(), net["depth"].get<int>(), b.R);
+    f.bf16 = resolve_network_precision(net["precision"].get<std::string>(), "method.feature_net.precision").dtype == torch::kBFloat16;
+  }
+  return f;
+}
+
+// Prints the figures and returns them as the --json document.
+json report(const Subject& b, const SetupTimes& setup, const PhaseTimes& it, const RunIterationTimes& run, const Floor& floor) {
+  json out = {{"exemplar", b.r["exemplar"]}, {"device", b.device.str()}, {"points", b.ex.size()}, {"output_points", b.start.size()},
+              {"grid", b.s.sigma_res[b.bench_sigma]}, {"output_grid", b.R}, {"k", b.s.k}, {"threads", at::get_num_threads()}};
+  const MachineReport machine = machine_report(0, 0);  // the floors are this config's, below
+  std::printf("%s\n", machine.text().c_str());
+  out["machine"] = machine.to_json();
+  std::printf("ppsynth bench: %s  (%zu -> %zu points, grid %d -> %d, k %d, %d threads, %s)\n",
+              b.r["exemplar"].get<std::string>().c_str(), b.ex.size(), b.start.size(), b.s.sigma_res[b.bench_sigma], b.R, b.s.k,
+              at::get_num_threads(), b.device.str().c_str());
+  std::printf("%-42s %10s %10s\n", "phase", "min [s]", "median [s]");
+  json jp = json::array();
+  for (auto& [name, t] : it.phases) {
+    std::printf("%-42s %10.4f %10.4f\n", name.c_str(), t.min(), t.median());
+    jp.push_back({{"phase", name}, {"min_s", t.min()}, {"median_s", t.median()}});
+  }
+  const Timing& full = it.full;
+  const Timing& engine = run.iteration;
+  std::printf("%-42s %10.4f %10.4f\n", "ONE FULL ITERATION (forward + backward)", full.min(), full.median());
+  std::printf("%-42s %10.4f %10.4f\n", "ONE RUN ITERATION (+ step + checkpoint)", engine.min(), engine.median());
+  std::printf("  checkpoint: %.1f KiB, written in %.2f ms (median of %zu)\n", run.checkpoint_bytes / 1024.0,
+              1e3 * run.checkpoint_write.median(), run.checkpoint_write.s.size());
+  std::printf("\nconvolution 120->120 7x7 at %dx%d, network %.1f GFLOP per iteration (fwd + input grad); this config runs "
+              "the %s path:\n",
+              b.R, b.R, floor.flops / 1e9, floor.paths[floor.bf16 ? 1 : 0].path.c_str());
+  std::printf("  %-24s %10s %10s %14s %18s\n", "path", "GFLOP/s", "floor [s]", "iter / floor", "run iter / floor");
+  json jfloors = json::array();
+  for (const auto& p : floor.paths) {
+    const double f = floor.flops / (p.gflops * 1e9);
+    std::printf("  %-24s %10.1f %10.3f %14.2f %18.2f\n", p.path.c_str(), p.gflops, f, floor.flops > 0 ? full.median() / f : 0.0,
+                floor.flops > 0 ? engine.median() / f : 0.0);
+    jfloors.push_back({{"path", p.path}, {"conv_gflops", p.gflops}, {"floor_s", f},
+                       {"measured_at_grid", &p == &floor.paths[1] ? floor.bf16_res : b.R},
+                       {"iteration_over_floor", floor.flops > 0 ? full.median() / f : 0}});
+  }
+  std::printf("  bfloat16 / float32 throughput: %.3gx", floor.paths[1].gflops / floor.paths[0].gflops);
+  if (floor.bf16_res != b.R) std::printf(" (bf16 emulated here: its throughput measured once at %dx%d)", floor.bf16_res, floor.bf16_res);
+  std::printf("\n");
+  out["floors"] = jfloors;
+  std::printf("set-up before the first iteration: %.2f s", setup.first);
+  if (setup.each.empty()) {
+    std::printf(" (per-sigma set-up not timed: --skip-setup)\n");
+  } else {
+    double setup_total = 0;
+    std::printf("; per sigma:");
+    for (double x : setup.each) std::printf(" %.2f", x), setup_total += x;
+    std::printf(" s (all %zu sigmas %.2f s)\n", setup.each.size(), setup_total);
+  }
+  std::printf("peak resident memory: %.0f MiB\n", peak_resident_mib());
+  const double floor_s = floor.seconds();
+  out["phases"] = jp;
+  out["iteration_min_s"] = full.min();
+  out["iteration_median_s"] = full.median();
+  out["conv_gflops"] = floor.gflops();
+  out["net_gflop_per_iteration"] = floor.flops / 1e9;
+  out["floor_s"] = floor_s;
+  out["iteration_over_floor"] = floor_s > 0 ? full.median() / floor_s : 0;
+  out["run_iteration_min_s"] = engine.min();
+  out["run_iteration_median_s"] = engine.median();
+  out["run_iteration_over_floor"] = floor_s > 0 ? engine.median() / floor_s : 0;
+  out["checkpoint_bytes"] = run.checkpoint_bytes;
+  out["checkpoint_write_median_s"] = run.checkpoint_write.median();
+  out["setup_first_s"] = setup.first;
+  out["setup_per_sigma_s"] = setup.each;
+  out["peak_rss_mib"] = peak_resident_mib();
+  return out;
+}
+
 app::RunFn setup(CLI::App& app) {
   auto o = std::make_shared<Opts>();
   app.add_option("config", o->config, "experiment config (JSON)");
@@ -101,229 +376,13 @@ app::RunFn setup(CLI::App& app) {
   app.add_option("--json", o->json_out, "also write the figures as JSON");
   app.add_flag("--skip-setup", o->skip_setup, "do not time the set-up of every sigma");
   return [o]() {
-    json c = o->config.empty() ? json::object() : load_config(o->config);
-    if (!o->exemplar.empty()) c["exemplar"] = o->exemplar;
-    if (!o->device.empty()) c["runtime"]["device"] = o->device;
-    auto r = resolve_run_config(c, o->sets);
-    if (r["method"]["type"] != "gabor") throw InputError("bench: only the gabor method is benchmarked");
-    const torch::Device device(apply_device_settings(r["runtime"]).device);
-    const json& p = r["method"];
-    PointSet ex = load_exemplar(r);
-    const int u = r["upscale"];
-    const uint64_t seed = r["seed"];
-    const auto settings_t0 = Clock::now();
-    OutputShape shape;  // the paper's u x u output: the bench times its iteration
-    shape.upscale = u;
-    GaborSettings s = resolve_gabor_settings(p, ex, shape, false);
-    GaborPipeline pipe(p, s, seed, device);
-    auto init = InitializerRegistry::instance().create(p["init"], "method.init");
-    PointSet start = init->initialize(ex.size() * u * u, 0, seed, Domain{});
-    auto ex_pts = positions_tensor(ex).to(device);
-    auto moving = positions_tensor(start).to(device).set_requires_grad(true);
-    // Map weights (disks, multi-attribute scenes): the output carries the exemplar's values u^2 times.
-    const auto ex_w = s.attr_cols.empty() ? torch::Tensor() : normalized_attributes(ex, s.attr_cols).to(device);
-    const auto out_w = ex_w.defined() ? ex_w.repeat({u * u, 1}) : torch::Tensor();
-    // The finest sigma: every config's most expensive stage, on the grid every config shares
-    // at its end (per-sigma grids make the coarser ones cheaper), and the stage the one-stage
-    // run below executes.
-    const int bench_sigma = static_cast<int>(s.sigmas.size()) - 1;
-    const double sigma = s.sigmas.back();
-    const int R = s.sigma_out_res[bench_sigma];
-    pipe.set_grid(bench_sigma);
-    std::mt19937_64 rng(seed);
-    json out = {{"exemplar", r["exemplar"]}, {"device", device.str()}, {"points", ex.size()}, {"output_points", start.size()},
-                {"grid", s.sigma_res[bench_sigma]}, {"output_grid", R}, {"k", s.k}, {"threads", at::get_num_threads()}};
-
-    // --- set-up: exemplar maps -> features -> targets, per sigma ----------------------
-    double setup_first = 0;
-    std::vector<double> setup_each;
-    {
-      auto a = Clock::now();
-      pipe.set_targets(ex_pts, ex_w, sigma);
-      setup_first = std::chrono::duration<double>(Clock::now() - a).count() +
-                    std::chrono::duration<double>(a - settings_t0).count();
-      if (!o->skip_setup)
-        for (size_t i = 0; i < s.sigmas.size(); ++i) {
-          pipe.set_grid(static_cast<int>(i));
-          auto b = Clock::now();
-          pipe.set_targets(ex_pts, ex_w, s.sigmas[i]);
-          setup_each.push_back(std::chrono::duration<double>(Clock::now() - b).count());
-        }
-      pipe.set_grid(bench_sigma);
-      pipe.set_targets(ex_pts, ex_w, sigma);
-    }
-
-    // --- phases of one iteration -----------------------------------------------------
-    GaborMapsOptions mo;
-    mo.res = R;  // the finest sigma's grid (the pipeline's, set above)
-    mo.upscale = u;
-    mo.k = s.k;
-    GaborFeatureMaps maps_mod(mo);
-    maps_mod->to(device);
-    auto pts = wrap_unit(moving.detach());
-    auto jit = pipe.draw_jitter(rng);
-    auto grid = jit.defined() ? maps_mod->grid() + jit : maps_mod->grid();
-    std::vector<std::pair<std::string, Timing>> phases;
-    phases.push_back({"neighbor search (k-NN)", time_it(o->reps, [&] {
-                        device.is_cpu() ? grid_knn(pts, grid, s.k) : grid_knn_tensor_ops(pts, grid, s.k);
-                      })});
-    torch::Tensor maps;
-    phases.push_back({"Gabor maps forward", time_it(o->reps, [&] {
-                        torch::NoGradGuard ng;
-                        maps = pipe.output_maps(pts, out_w, sigma, jit);
-                      })});
-    phases.push_back({"Gabor maps backward", time_it(o->reps, [&] {
-                        auto p2 = pts.clone().set_requires_grad(true);
-                        auto m = pipe.output_maps(p2, out_w, sigma, jit);
-                        auto probe = torch::ones_like(m);
-                        // forward is inside: subtract it afterwards
-                        m.backward(probe);
-                      })});
-    phases.back().second.s = [&] {
-      auto v = phases.back().second.s;
-      const double fwd = phases[1].second.median();
-      for (auto& x : v) x = std::max(0.0, x - fwd);
-      return v;
-    }();
-    Features feats;
-    phases.push_back({"network forward", time_it(o->reps, [&] {
-                        torch::NoGradGuard ng;
-                        feats = pipe.features(maps);
-                      })});
-    phases.push_back({"network backward (input grad)", time_it(o->reps, [&] {
-                        auto m = maps.clone().set_requires_grad(true);
-                        auto f = pipe.features(m);
-                        torch::Tensor sum;
-                        for (auto& t : f) sum = sum.defined() ? sum + t.sum() : t.sum();
-                        sum.backward();
-                      })});
-    phases.back().second.s = [&] {
-      auto v = phases.back().second.s;
-      const double fwd = phases[3].second.median();
-      for (auto& x : v) x = std::max(0.0, x - fwd);
-      return v;
-    }();
-    for (auto& term : pipe.composite().terms()) {
-      phases.push_back({"loss " + term.type + " (forward + backward)", time_it(o->reps, [&] {
-                          Features f;
-                          for (auto& t : feats) f.push_back(t.detach().clone().set_requires_grad(true));
-                          term.loss->forward(f).backward();
-                        })});
-    }
-    auto optimizer_spec = p["optimizer"];
-    Timing full = time_it(o->reps, [&] {
-      if (moving.grad().defined()) moving.grad().zero_();
-      auto m = pipe.output_maps(wrap_unit(moving), out_w, sigma, pipe.draw_jitter(rng));
-      pipe.loss(pipe.features(m)).backward();
-    });
-
-    // --- whole iterations through the run library, checkpointing after each -----------------
-    struct IterationClock : SynthesisObserver {
-      std::vector<double> at;  // seconds since the stage began, at the end of each iteration
-      void on_iteration(const ProgressEvent& e) override { at.push_back(e.seconds); }
-    } iteration_clock;
-    json engine_spec = r;
-    // One stage: with one sigma, the run's only sigma is the finest (its grid, too).
-    engine_spec["method"]["num_sigmas"] = 1;
-    engine_spec["method"]["max_iterations"] = o->reps + 2;
-    engine_spec["checkpoint_seconds"] = 1e-9;  // a checkpoint after every iteration
-    engine_spec["evaluate"] = false;
-    CheckpointStore checkpoints(
-        (std::filesystem::temp_directory_path() / ("ppsynth-bench-" + std::to_string(::getpid()) + ".bin")).string());
-    Timing checkpoint_write;
-    size_t checkpoint_bytes = 0;
-    SynthesisOptions engine_options;
-    engine_options.observers = {&iteration_clock};
-    engine_options.save_checkpoint = [&](const std::string& bytes) {
-      const auto a = Clock::now();
-      checkpoints.save(bytes);
-      checkpoint_write.s.push_back(std::chrono::duration<double>(Clock::now() - a).count());
-      checkpoint_bytes = std::max(checkpoint_bytes, bytes.size());
-    };
-    synthesize(ex, engine_spec, engine_options);
-    checkpoints.remove();
-    Timing engine;  // the first iteration (warm-up) is left out
-    for (size_t i = 2; i < iteration_clock.at.size(); ++i) engine.s.push_back(iteration_clock.at[i] - iteration_clock.at[i - 1]);
-    if (engine.s.empty()) engine.s.push_back(iteration_clock.at.back());
-
-    // --- the convolution floor ---------------------------------------------------------
-    // The network as its registry resolves it (its declared defaults under the config's).
-    const nlohmann::json net = FeatureNetRegistry::instance().resolve(s.feature_net, "method.feature_net");
-    const bool random_net = net["type"] == "random";
-    const int C = random_net ? net["channels"].get<int>() : 0, ks = random_net ? net["kernel_size"].get<int>() : 0,
-              depth = random_net ? net["depth"].get<int>() : 0;
-    // Emulated bf16 runs at about 1/100 of float32 (minutes per convolution at R = 256): its
-    // throughput is taken once on a 64 x 64 map, where it is the same per FLOP.
-    const bool bf16_units = !device.is_cpu() || cpu_isa().native_bf16;
-    const int bf16_res = bf16_units ? R : std::min(R, 64);
-    const std::vector<ConvThroughput> paths = {conv_throughput_float32(R, o->reps, device),
-                                               conv_throughput_bfloat16(bf16_res, bf16_units ? o->reps : 1, device)};
-    const double flops = random_net ? net_flops(static_cast<int>(maps.size(1)), C, ks, depth, R) : 0;
-    const bool bf16 = random_net &&
-                      resolve_network_precision(net["precision"].get<std::string>(), "method.feature_net.precision").dtype ==
-                          torch::kBFloat16;
-    const double conv_gflops = paths[bf16 ? 1 : 0].gflops;  // the floor of the path this config runs
-    const double floor_s = flops / (conv_gflops * 1e9);
-
-    // --- print ---------------------------------------------------------------------------
-    const MachineReport machine = machine_report(0, 0);  // the floors are this config's, below
-    std::printf("%s\n", machine.text().c_str());
-    out["machine"] = machine.to_json();
-    std::printf("ppsynth bench: %s  (%zu -> %zu points, grid %d -> %d, k %d, %d threads, %s)\n",
-                r["exemplar"].get<std::string>().c_str(), ex.size(), start.size(), s.sigma_res[bench_sigma], R, s.k, at::get_num_threads(),
-                device.str().c_str());
-    std::printf("%-42s %10s %10s\n", "phase", "min [s]", "median [s]");
-    json jp = json::array();
-    for (auto& [name, t] : phases) {
-      std::printf("%-42s %10.4f %10.4f\n", name.c_str(), t.min(), t.median());
-      jp.push_back({{"phase", name}, {"min_s", t.min()}, {"median_s", t.median()}});
-    }
-    std::printf("%-42s %10.4f %10.4f\n", "ONE FULL ITERATION (forward + backward)", full.min(), full.median());
-    std::printf("%-42s %10.4f %10.4f\n", "ONE RUN ITERATION (+ step + checkpoint)", engine.min(), engine.median());
-    std::printf("  checkpoint: %.1f KiB, written in %.2f ms (median of %zu)\n", checkpoint_bytes / 1024.0,
-                1e3 * checkpoint_write.median(), checkpoint_write.s.size());
-    std::printf("\nconvolution 120->120 7x7 at %dx%d, network %.1f GFLOP per iteration (fwd + input grad); this config runs "
-                "the %s path:\n",
-                R, R, flops / 1e9, paths[bf16 ? 1 : 0].path.c_str());
-    std::printf("  %-24s %10s %10s %14s %18s\n", "path", "GFLOP/s", "floor [s]", "iter / floor", "run iter / floor");
-    json jfloors = json::array();
-    for (const auto& p : paths) {
-      const double f = flops / (p.gflops * 1e9);
-      std::printf("  %-24s %10.1f %10.3f %14.2f %18.2f\n", p.path.c_str(), p.gflops, f, flops > 0 ? full.median() / f : 0.0,
-                  flops > 0 ? engine.median() / f : 0.0);
-      jfloors.push_back({{"path", p.path}, {"conv_gflops", p.gflops}, {"floor_s", f},
-                         {"measured_at_grid", &p == &paths[1] ? bf16_res : R},
-                         {"iteration_over_floor", flops > 0 ? full.median() / f : 0}});
-    }
-    std::printf("  bfloat16 / float32 throughput: %.3gx", paths[1].gflops / paths[0].gflops);
-    if (bf16_res != R) std::printf(" (bf16 emulated here: its throughput measured once at %dx%d)", bf16_res, bf16_res);
-    std::printf("\n");
-    out["floors"] = jfloors;
-    std::printf("set-up before the first iteration: %.2f s", setup_first);
-    if (setup_each.empty()) {
-      std::printf(" (per-sigma set-up not timed: --skip-setup)\n");
-    } else {
-      double setup_total = 0;
-      std::printf("; per sigma:");
-      for (double x : setup_each) std::printf(" %.2f", x), setup_total += x;
-      std::printf(" s (all %zu sigmas %.2f s)\n", setup_each.size(), setup_total);
-    }
-    std::printf("peak resident memory: %.0f MiB\n", peak_resident_mib());
-    out["phases"] = jp;
-    out["iteration_min_s"] = full.min();
-    out["iteration_median_s"] = full.median();
-    out["conv_gflops"] = conv_gflops;
-    out["net_gflop_per_iteration"] = flops / 1e9;
-    out["floor_s"] = floor_s;
-    out["iteration_over_floor"] = floor_s > 0 ? full.median() / floor_s : 0;
-    out["run_iteration_min_s"] = engine.min();
-    out["run_iteration_median_s"] = engine.median();
-    out["run_iteration_over_floor"] = floor_s > 0 ? engine.median() / floor_s : 0;
-    out["checkpoint_bytes"] = checkpoint_bytes;
-    out["checkpoint_write_median_s"] = checkpoint_write.median();
-    out["setup_first_s"] = setup_first;
-    out["setup_per_sigma_s"] = setup_each;
-    out["peak_rss_mib"] = peak_resident_mib();
+    Subject b = make_subject(*o);
+    std::mt19937_64 rng(b.r["seed"].get<uint64_t>());
+    const SetupTimes setup = time_setup(b, o->skip_setup);
+    const PhaseTimes iteration = time_phases(b, o->reps, rng);
+    const RunIterationTimes run = time_run_iterations(b, o->reps);
+    const Floor floor = convolution_floor(b, iteration.map_channels, o->reps);
+    const json out = report(b, setup, iteration, run, floor);
     if (!o->json_out.empty()) write_text_atomic(o->json_out, out.dump(2) + "\n");
     return 0;
   };
