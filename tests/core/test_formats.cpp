@@ -13,9 +13,12 @@
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/paths.hpp"
+#include "tests/support/input_errors.hpp"
 
 using namespace ppsynth;
 namespace fs = std::filesystem;
+
+using test::require_located;
 
 namespace {
 
@@ -33,9 +36,7 @@ struct TempDir {
     fs::remove_all(dir, ec);
   }
   std::string file(const std::string& name, const std::string& text) const {
-    const std::string p = (dir / name).string();
-    std::ofstream(p, std::ios::binary) << text;
-    return p;
+    return test::write_file(dir, name, text);
   }
   std::string path(const std::string& name) const { return (dir / name).string(); }
 };
@@ -69,20 +70,6 @@ void require_equal(const PointSet& a, const PointSet& b) {
   }
 }
 
-// Runs `f`, requires an InputError whose message names `file` and, when line > 0, "file:line:".
-template <class F>
-void require_input_error(F&& f, const std::string& file, long line, const std::string& fragment = "") {
-  try {
-    f();
-    FAIL("no InputError for " << file);
-  } catch (const InputError& e) {
-    const std::string msg = e.what();
-    INFO(msg);
-    CHECK(msg.find(file) != std::string::npos);
-    if (line > 0) CHECK(msg.find(file + ":" + std::to_string(line) + ":") != std::string::npos);
-    if (!fragment.empty()) CHECK(msg.find(fragment) != std::string::npos);
-  }
-}
 
 std::string exemplar_dir(const std::string& sub) {
   return (fs::path(shared_root()) / "data" / "exemplars" / sub).string();
@@ -297,19 +284,19 @@ TEST_CASE("bad input throws InputError naming file and line", "[formats]") {
   for (const Case& c : cases) {
     INFO(c.name);
     const std::string f = t.file(c.name, c.text);
-    require_input_error([&] { read_points(f, ReadOptions{c.format}); }, f, c.line, c.fragment);
+    require_located([&] { read_points(f, ReadOptions{c.format}); }, f, c.line, {c.fragment});
   }
   // Empty files, whatever the format; a missing file.
   for (Format fm : {Format::Auto, Format::GaborInt, Format::PointSynthesis, Format::Plain, Format::Json}) {
     INFO(format_name(fm));
     const std::string f = t.file("empty.txt", "\n  \n");
-    require_input_error([&] { read_points(f, ReadOptions{fm}); }, f, 0, "no points");
+    require_located([&] { read_points(f, ReadOptions{fm}); }, f, 0, {"no points"});
   }
-  require_input_error([&] { read_points(t.path("missing.txt")); }, t.path("missing.txt"), 0, "no such file");
+  require_located([&] { read_points(t.path("missing.txt")); }, t.path("missing.txt"), 0, {"no such file"});
   REQUIRE_THROWS_AS(read_points(t.path("missing.txt")), MissingFileError);  // FileNotFoundError in Python
   // A class without points (plain ids 0 and 2) fails validation, naming the file.
   const std::string gap = t.file("gap.txt", "# x y class\n0.1 0.1 0\n0.2 0.2 2\n");
-  require_input_error([&] { read_points(gap); }, gap, 0, "class 1");
+  require_located([&] { read_points(gap); }, gap, 0, {"class 1"});
 }
 
 TEST_CASE("write_points is atomic and leaves no temp file", "[formats]") {

@@ -2,7 +2,6 @@
 // naming the file (and line) or the key path; never a crash, never another exception.
 #include <climits>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -10,33 +9,14 @@
 
 #include "core/config/config.hpp"
 #include "core/error.hpp"
+#include "tests/support/input_errors.hpp"
 #include "tests/support/scratch_dir.hpp"
 
 using namespace ppsynth;
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string write_file(const fs::path& dir, const std::string& name, const std::string& text) {
-  const std::string p = (dir / name).string();
-  std::ofstream(p, std::ios::binary) << text;
-  return p;
-}
-
-// Runs `f`; requires an InputError (nothing else) whose message holds every fragment.
-template <class F>
-void require_input_error(F&& f, const std::vector<std::string>& fragments) {
-  try {
-    f();
-    FAIL_CHECK("no InputError");
-  } catch (const InputError& e) {
-    const std::string msg = e.what();
-    INFO(msg);
-    for (const auto& fr : fragments) CHECK(msg.find(fr) != std::string::npos);
-  }
-}
-
-}  // namespace
+using test::require_input_error;
+using test::write_file;
 
 TEST_CASE("a config nested 10^6 levels deep is refused before it recurses", "[config][input]") {
   const auto dir = test::scratch_dir("input_config_deep");

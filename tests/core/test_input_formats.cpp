@@ -3,7 +3,6 @@
 // format). Each case is one defect found in review; the inputs are a few lines each.
 #include <climits>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -11,35 +10,14 @@
 
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
+#include "tests/support/input_errors.hpp"
 #include "tests/support/scratch_dir.hpp"
 
 using namespace ppsynth;
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string write_file(const fs::path& dir, const std::string& name, const std::string& text) {
-  const std::string p = (dir / name).string();
-  std::ofstream(p, std::ios::binary) << text;
-  return p;
-}
-
-// Runs `f`; requires an InputError (nothing else) whose message holds "file:line:" (line > 0)
-// or "file:" (line 0) and every fragment.
-template <class F>
-void require_located(F&& f, const std::string& file, long line, const std::vector<std::string>& fragments = {}) {
-  try {
-    f();
-    FAIL_CHECK("no InputError for " << file);
-  } catch (const InputError& e) {
-    const std::string msg = e.what();
-    INFO(msg);
-    CHECK(msg.find(line > 0 ? file + ":" + std::to_string(line) + ":" : file + ":") != std::string::npos);
-    for (const auto& fr : fragments) CHECK(msg.find(fr) != std::string::npos);
-  }
-}
-
-}  // namespace
+using test::require_located;
+using test::write_file;
 
 // --- 1. detection decides from the structure, and a parse error names the chosen format ---
 
