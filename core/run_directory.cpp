@@ -17,6 +17,7 @@
 #include "core/atomic_file.hpp"
 #include "core/config/json_text.hpp"
 #include "core/error.hpp"
+#include "core/formats/point_io.hpp"
 
 namespace fs = std::filesystem;
 
@@ -80,6 +81,15 @@ nlohmann::json parse_run_dir_marker(const std::string& text, const std::string& 
   for (const char* k : {"pid", "updated", "threads", "seed", "runs"}) whole(m, k, k);
   if (m.contains("quick") && !m["quick"].is_boolean()) throw refuse("quick", "expected true or false");
   if (m.contains("processor") && !m["processor"].is_string()) throw refuse("processor", "expected a string");
+  if (m.contains("exemplar_format")) {
+    const nlohmann::json& f = m["exemplar_format"];
+    if (!f.is_string() || f == "auto") throw refuse("exemplar_format", "expected a point format's name");
+    try {
+      parse_format(f);
+    } catch (const InputError&) {
+      throw refuse("exemplar_format", "expected a point format's name (gabor, point-synthesis, plain or json)");
+    }
+  }
   if (m.contains("progress")) {
     const nlohmann::json& p = m["progress"];
     if (!p.is_object()) throw refuse("progress", "expected an object");

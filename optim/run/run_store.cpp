@@ -105,8 +105,7 @@ void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const
   const nlohmann::json& r = o.config;
   const std::string& dir = o.dir;
   write_points(dir + "/output.txt", o.output, Format::Plain);
-  Format ex_format = detect_format(r["exemplar"]);
-  if (ex_format == Format::GaborInt) write_points(dir + "/output.gabor.txt", o.output, Format::GaborInt);
+  if (o.exemplar_format == Format::GaborInt) write_points(dir + "/output.gabor.txt", o.output, Format::GaborInt);
   std::vector<std::pair<std::string, PointSet>> panels = {{"exemplar (" + std::to_string(o.exemplar.size()) + ")", o.exemplar}};
   if (!o.initialization.empty()) {
     panels.push_back({"initialization", o.initialization});

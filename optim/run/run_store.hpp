@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/formats/format_options.hpp"
 #include "core/point_set.hpp"
 #include "core/run_json.hpp"
 #include "optim/method/stage_record.hpp"
@@ -27,6 +28,10 @@ struct RunOutcome {
   nlohmann::json stats, metrics, config;  // stats: the rest of run.json's method_stats
   double seconds = 0;
   double seconds_before_resume = 0;  // the part of `seconds` spent before a resume
+  // The exemplar file's format, detected when the run began (the run directory's marker keeps
+  // it for a resume, whose machine may not have the file): an exemplar in the published
+  // integer format gets its output in that format too (output.gabor.txt).
+  Format exemplar_format = Format::Plain;
 };
 
 // Writes every output file of a finished synthesis into o.dir (o.seconds is set here: the
@@ -40,8 +45,8 @@ void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const
 // (core/run_json.hpp).
 RunOutcome load_run(const std::string& dir);
 
-// The exemplar a run synthesized from: its exemplar.txt copy (written when it finishes), else
-// its config's file (an unfinished run; runs made before the copy).
+// The exemplar a run synthesized from: its exemplar.txt copy (written when the run begins),
+// else its config's file (runs made before the copy).
 PointSet run_exemplar(const std::string& dir, const nlohmann::json& config);
 
 // The keys of a resolved run config that decide a synthesis: all but those that only label or

@@ -9,6 +9,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/checkpoint_file.hpp"
+#include "core/formats/point_io.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/output_shape.hpp"
@@ -99,6 +100,7 @@ RunOutcome run_synthesis(const nlohmann::json& r, const RunRequest& req) {
   RunOutcome o;
   o.config = r;
   o.exemplar = load_exemplar(r);  // bad input fails here, before anything is created
+  o.exemplar_format = detect_format(r["exemplar"]);
   check_synthesis_size(r, o.exemplar);
   const std::string name = run_name(r);
   if (req.dir.empty() && !is_safe_name(name))
@@ -107,10 +109,17 @@ RunOutcome run_synthesis(const nlohmann::json& r, const RunRequest& req) {
   dir_options.force = req.force;
   RunDirectory dir = RunDirectory::open(req.dir.empty() ? "runs/" + name : req.dir, dir_options);
   try {
-    // What a resume needs, written first: the resolved config and the way it ran.
+    // What a resume needs, written first: the resolved config, the exemplar as synthesized
+    // (a resume reads this copy, so a run directory moved to another machine, or whose
+    // exemplar file changed or is gone, continues; the checkpoint's key holds the exemplar's
+    // content hash, so an edited copy is refused) and the way it ran.
     write_text_atomic(dir.path() + "/config.json", r.dump(2) + "\n");
-    dir.mark_running(
-        {{"quick", req.quick}, {"threads", at::get_num_threads()}, {"processor", processor_kind()}, {"seed", r["seed"]}});
+    write_points(dir.path() + "/exemplar.txt", o.exemplar, Format::Plain);
+    dir.mark_running({{"quick", req.quick},
+                      {"threads", at::get_num_threads()},
+                      {"processor", processor_kind()},
+                      {"seed", r["seed"]},
+                      {"exemplar_format", format_name(o.exemplar_format)}});
   } catch (...) {
     dir.discard();
     throw;
@@ -154,7 +163,9 @@ RunOutcome resume_synthesis(const std::string& path, const RunRequest& req) {
   if (!checkpoints.exists())
     throw InputError("--resume " + dir.path() + ": no checkpoint (the run stopped before its first one, or its method (" +
                      o.config["method"]["type"].get<std::string>() + ") cannot resume)" + afresh_hint(dir.path()));
-  o.exemplar = load_exemplar(o.config);
+  o.exemplar = run_exemplar(dir.path(), o.config);  // the run's own copy (run_synthesis)
+  o.exemplar_format = marker.contains("exemplar_format") ? parse_format(marker["exemplar_format"])  // checked with the marker
+                                                         : detect_format(o.config["exemplar"]);     // runs made before it
   const std::string bytes = checkpoints.load();
   RunRequest r = req;
   r.quick = marker.value("quick", false);

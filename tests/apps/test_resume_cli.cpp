@@ -10,6 +10,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/formats/text_table.hpp"
+#include "core/paths.hpp"
 #include "core/run_directory.hpp"
 #include "tests/support/child_process.hpp"
 #include "tests/support/run_compare.hpp"
@@ -119,6 +120,34 @@ TEST_CASE("kill -9 loses at most a checkpoint interval: from a stage boundary an
                     SIGKILL) == 128 + SIGKILL);
     REQUIRE(run_ppsynth("synthesize -q --resume " + run).status == 0);
     check_same_run(d / "refd", run);
+  }
+}
+
+TEST_CASE("a run directory moved elsewhere, its exemplar file gone, resumes from its own copy", "[apps][resume]") {
+  auto d = ppsynth::test::scratch_dir("resume_moved");
+  const fs::path ex = d / "lines_copy.txt";
+  fs::copy_file(fs::path(ppsynth::shared_root()) / "data/exemplars/gabor-paper/lines.txt", ex);
+  const std::string args = quick_run("lines.json", "-e " + ex.string() + " ");
+  REQUIRE(run_ppsynth("synthesize " + args + "-o " + (d / "ref").string()).status == 0);
+  CHECK(interrupt("synthesize " + args + "-o " + (d / "run").string(), iteration_of("sigma 1/2", 3), SIGINT) == 130);
+  // What a resume needs is in the directory from the start (a machine that resumes it need
+  // not have the exemplar's file, nor the same path).
+  REQUIRE(fs::exists(d / "run" / "exemplar.txt"));
+  fs::rename(d / "run", d / "moved");
+  fs::remove(ex);
+  SECTION("resumed, it ends as the run never stopped") {
+    REQUIRE(run_ppsynth("synthesize -q --resume " + (d / "moved").string()).status == 0);
+    check_same_run(d / "ref", d / "moved");
+  }
+  SECTION("its copy edited, the resume is refused") {
+    const std::string copy = (d / "moved" / "exemplar.txt").string();
+    std::string text = ppsynth::read_file_text(copy);
+    const size_t last = text.rfind('\n', text.size() - 2) + 1;  // a point more: its last line again
+    text += text.substr(last);
+    ppsynth::write_text_atomic(copy, text);
+    auto r = run_ppsynth("synthesize --resume " + (d / "moved").string());
+    CHECK(r.status == 2);
+    CHECK_THAT(r.output, Catch::Contains("exemplar"));
   }
 }
 

@@ -120,10 +120,14 @@ TEST_CASE("a run directory's marker: checked, and a damaged one protects the dir
   const nlohmann::json good = parse_run_dir_marker(
       R"({"kind": "run", "state": "running", "pid": 12, "progress": {"index": 3, "count": 8, "stage": "class 1/2"}})", "m");
   CHECK(run_progress_text(good, 0) == "stage 3/8 (class 1/2)");
+  CHECK(parse_run_dir_marker(R"({"kind": "run", "state": "running", "exemplar_format": "gabor"})", "m")["exemplar_format"] == "gabor");
   for (const std::string bad : {R"([])", R"({"state": "running"})", R"({"kind": "../x", "state": "running"})",
                                 R"({"kind": "run", "state": "done"})", R"({"kind": "run", "state": "running", "pid": "12"})",
                                 R"({"kind": "run", "state": "running", "progress": {"index": "3"}})",
-                                R"({"kind": "run", "state": "running", "progress": []})", R"({"kind": "run", "state": )"}) {
+                                R"({"kind": "run", "state": "running", "progress": []})", R"({"kind": "run", "state": )",
+                                R"({"kind": "run", "state": "running", "exemplar_format": "auto"})",
+                                R"({"kind": "run", "state": "running", "exemplar_format": "xyz"})",
+                                R"({"kind": "run", "state": "running", "exemplar_format": 1})"}) {
     INFO(bad);
     CHECK_THROWS_WITH(parse_run_dir_marker(bad, "d/.ppsynth-run"), Catch::Contains("d/.ppsynth-run"));
   }
