@@ -5,6 +5,7 @@
 #                  (apt-get download: nanoflann, nlohmann-json, CLI11, Catch2, spdlog, fmt)
 #   .deps/root/    their headers, unpacked (usr/include): cmake -DPPSYNTH_DEPS_DIR=$PWD/.deps/root
 #   .deps/shared/  the exemplars scripts/gpu_check.sh synthesizes (PPSYNTH_SHARED there)
+# (.deps/real_data/, scripts/gpu_real_data.sh's exemplars and runs, is left as it is.)
 # .deps/ is ignored by git; the device tool takes it along when its `carry` names it.
 # Usage: scripts/carry_deps.sh   (on a Debian machine with ../shared beside the checkout)
 set -euo pipefail
@@ -14,7 +15,9 @@ shared="${PPSYNTH_SHARED:-$here/../shared}"
 packages=(libnanoflann-dev nlohmann-json3-dev libcli11-dev catch2 libspdlog-dev libfmt-dev)
 exemplars=(data/exemplars/gabor-paper/lines.txt)
 
-rm -rf "$out"  # its own folder only: made by this script, rebuilt from scratch
+# Its own folders only, rebuilt from scratch: .deps/real_data (scripts/gpu_real_data.sh's
+# exemplars and runs) is the user's and stays.
+rm -rf "$out/debs" "$out/root" "$out/shared"
 mkdir -p "$out/debs" "$out/root" "$out/shared"
 (cd "$out/debs" && apt-get download -q "${packages[@]}")
 for deb in "$out"/debs/*.deb; do dpkg-deb -x "$deb" "$out/root"; done

@@ -44,40 +44,13 @@ case "$device" in
   *) echo "gpu_check: GPU_CHECK_DEVICE='$device': expected cuda or cpu" >&2; exit 2 ;;
 esac
 
-# --- 0. the machine ----------------------------------------------------------------------
-py=""
-for p in python3 /usr/bin/python3; do
-  if command -v "$p" > /dev/null && "$p" -c 'import torch' 2> /dev/null; then py="$p"; break; fi
-done
-[ -n "$py" ] || fail "no python3 with torch: the build takes the wheel's LibTorch (torch.utils.cmake_prefix_path)"
-say "$(uname -m), $(nproc) cores; $(c++ --version | head -1); $(cmake --version | head -1); ninja $(ninja --version 2> /dev/null || echo missing)"
-say "torch: $("$py" -c 'import torch; print(torch.__version__, "CUDA", torch.version.cuda, "devices", torch.cuda.device_count() if torch.cuda.is_available() else 0)')"
-if command -v nvidia-smi > /dev/null; then
-  say "GPU: $(nvidia-smi --query-gpu=name,memory.total,driver_version --format=csv,noheader | head -1)"
-elif [ "$device" = cuda ]; then
-  fail "no nvidia-smi on a check of cuda (GPU_CHECK_DEVICE=cpu runs the dry run)"
-fi
-[ -f "$here/.deps/root/usr/include/nanoflann.hpp" ] ||
-  fail "no .deps/root: run scripts/carry_deps.sh on a Debian machine and carry .deps"
-export PPSYNTH_SHARED="$here/.deps/shared"  # the exemplars the configs name as shared:data/...
-
-# --- 1. build ------------------------------------------------------------------------------
-torch_prefix="$("$py" -c 'import torch; print(torch.utils.cmake_prefix_path)')"
-cuda_flags=()
-if command -v nvcc > /dev/null; then
-  # A CUDA LibTorch's CMake config enables the CUDA language; Hopper is sm_90.
-  cuda_flags=(-DCMAKE_CUDA_COMPILER="$(command -v nvcc)" -DCMAKE_CUDA_ARCHITECTURES=90)
-  export TORCH_CUDA_ARCH_LIST="${TORCH_CUDA_ARCH_LIST:-9.0}"
-fi
-say "configure: LibTorch from $torch_prefix, dependencies from .deps/root, no cairo"
-cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$torch_prefix" \
-  -DPPSYNTH_DEPS_DIR="$here/.deps/root" -DPPSYNTH_WITH_CAIRO=OFF -DPPSYNTH_PYTHON=OFF "${cuda_flags[@]}" \
-  > "$out/configure.log" 2>&1 || { tail -n 40 "$out/configure.log"; fail "configure (configure.log)"; }
-grep "ppsynth:" "$out/configure.log" | tee -a "$summary"
-say "build: ppsynth, ppsynth_tests ($(nproc) jobs)"
-cmake --build "$build" -j "$(nproc)" --target ppsynth ppsynth_tests > "$out/build.log" 2>&1 ||
-  { grep -m 20 -A 5 "error" "$out/build.log"; tail -n 20 "$out/build.log"; fail "build (build.log)"; }
-say "built"
+# --- 0. the machine, 1. build (scripts/gpu_build.sh) ------------------------------------------
+# shellcheck source=scripts/gpu_build.sh
+. "$here/scripts/gpu_build.sh"
+py="$(gpu_python)" || fail "no python3 with torch"
+# (set -o pipefail: a pipeline fails when its first command does)
+gpu_describe "$device" 2>&1 | while read -r line; do say "$line"; done || fail "the machine"
+gpu_build "$out" "$build" 2>&1 | while read -r line; do say "$line"; done || fail "build"
 left() {  # seconds of the budget left, at least 1
   local l=$(( budget - ($(date +%s) - t0) ))
   echo $(( l > 1 ? l : 1 ))

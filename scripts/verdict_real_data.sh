@@ -13,7 +13,9 @@
 #   e.g. scripts/verdict_real_data.sh /tmp/real "cells redwood" "gabor tiled_copy" "95 96" \
 #          --preset fast --set method.feature_net.precision=float32
 # Runs one synthesis at a time with PPSYNTH_THREADS=1 under nice (the machine is shared);
-# a run directory that already holds a finished run is evaluated again, not rerun. The
+# a run directory that already holds a finished run is evaluated again, not rerun. With
+# VERDICT_SYNTHESIZE=no nothing is synthesized: runs made elsewhere (a GPU machine:
+# scripts/gpu_real_data.sh) are evaluated, and a missing one is named and left out. The
 # fitted model's draws are numbered by the seeds too. Each synthesis's wall time is in
 # DIR/runs/<data set>_<method>_s<seed>/run.json. Prints the table of docs/verdict.md from
 # results.tsv (every line there, earlier calls' included).
@@ -64,7 +66,10 @@ for set in $sets; do
       run="$dir/runs/${set}_${method}_s$seed"
       flags=()
       [[ $method == gabor ]] && flags=("$@")
-      if [[ ! -f $run/run.json ]]; then
+      if [[ ! -f $run/run.json && ${VERDICT_SYNTHESIZE:-yes} == no ]]; then
+        echo "verdict_real_data: $set $method seed $seed: no finished run in $run (VERDICT_SYNTHESIZE=no); left out" >&2
+        continue
+      elif [[ ! -f $run/run.json ]]; then
         PPSYNTH_THREADS=1 nice -n 10 "$bin" synthesize -q -e "$ex" -m "$method" --seed "$seed" -o "$run" --force "${flags[@]}" \
           > "$run.log" 2>&1 || { echo "verdict_real_data: $set $method seed $seed failed (see $run.log)" >&2; continue; }
       fi
