@@ -9,8 +9,8 @@
 
 #include "core/atomic_file.hpp"
 #include "core/checkpoint_file.hpp"
-#include "core/formats/point_io.hpp"
 #include "core/error.hpp"
+#include "core/formats/point_io.hpp"
 #include "core/log.hpp"
 #include "core/output_shape.hpp"
 #include "core/processor.hpp"
