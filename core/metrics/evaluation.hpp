@@ -96,7 +96,6 @@ void check_eval_options(const EvalOptions& opt);
 nlohmann::json evaluate(const PointSet& exemplar, const PointSet& output,
                         const EvalOptions& opt = {});
 
-// Human-readable table of an evaluate() result.
-std::string format_evaluation(const nlohmann::json& result);
+// evaluate()'s result as a table for people: core/metrics/evaluation_text.hpp.
 
 }  // namespace ppsynth

@@ -14,6 +14,7 @@
 #include "core/metrics/border.hpp"
 #include "core/metrics/crops.hpp"
 #include "core/metrics/evaluation.hpp"
+#include "core/metrics/evaluation_text.hpp"
 #include "core/metrics/quadrant.hpp"
 #include "tests/support/run_command.hpp"
 #include "tests/support/scratch_dir.hpp"

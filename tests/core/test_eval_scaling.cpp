@@ -16,6 +16,7 @@
 #include "core/generators/uniform.hpp"
 #include "core/metrics/chamfer.hpp"
 #include "core/metrics/evaluation.hpp"
+#include "core/metrics/evaluation_text.hpp"
 #include "core/metrics/nearest_neighbor.hpp"
 #include "core/metrics/overlap.hpp"
 #include "core/metrics/pcf.hpp"

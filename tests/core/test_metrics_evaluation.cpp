@@ -7,6 +7,7 @@
 #include "core/generators/lattices.hpp"
 #include "core/generators/uniform.hpp"
 #include "core/metrics/evaluation.hpp"
+#include "core/metrics/evaluation_text.hpp"
 
 using namespace ppsynth;
 

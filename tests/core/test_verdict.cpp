@@ -14,6 +14,7 @@
 #include "core/generators/poisson_disk.hpp"
 #include "core/generators/uniform.hpp"
 #include "core/metrics/evaluation.hpp"
+#include "core/metrics/evaluation_text.hpp"
 #include "core/metrics/verdict.hpp"
 
 using namespace ppsynth;

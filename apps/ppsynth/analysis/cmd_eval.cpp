@@ -17,6 +17,7 @@
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/metrics/evaluation.hpp"
+#include "core/metrics/evaluation_text.hpp"
 
 namespace {
 
