@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <vector>
 
 #include "core/error.hpp"
 #include "core/log.hpp"
@@ -13,12 +15,10 @@
 namespace ppsynth {
 
 namespace {
-int color_of(const Series& s, size_t k) { return s.color >= 0 ? s.color : static_cast<int>(k); }
-}  // namespace
-
-namespace {
 
 using namespace render;
+
+int color_of(const Series& s, size_t k) { return s.color >= 0 ? s.color : static_cast<int>(k); }
 
 void check_series(const CurvePlot& plot, const std::string& path) {
   for (const auto& s : plot.series)
@@ -37,9 +37,16 @@ void widen(double& lo, double& hi) {
   hi += w;
 }
 
-// Draws one plot inside the box (bx, by, bw, bh).
-void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double bw, double bh) {
-  // --- data ranges ---
+// The axes' ranges and ticks: every usable point inside, the y range out to whole tick steps
+// (log: decades) so that no curve touches the frame.
+struct CurveAxes {
+  double xlo = 0, xhi = 1, ylo = 0, yhi = 1;
+  std::vector<double> xt, yt;
+  bool has_data = false;
+};
+
+CurveAxes curve_axes(const CurvePlot& plot) {
+  CurveAxes a;
   double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
   for (const auto& s : plot.series)
     for (size_t i = 0; i < s.x.size(); ++i)
@@ -47,12 +54,11 @@ void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double 
         xlo = std::min(xlo, s.x[i]), xhi = std::max(xhi, s.x[i]);
         ylo = std::min(ylo, s.y[i]), yhi = std::max(yhi, s.y[i]);
       }
-  const bool has_data = xlo <= xhi;
-  if (!has_data) xlo = 0, xhi = 1, ylo = plot.log_y ? 0.1 : 0, yhi = 1;
+  a.has_data = xlo <= xhi;
+  if (!a.has_data) xlo = 0, xhi = 1, ylo = plot.log_y ? 0.1 : 0, yhi = 1;
   widen(xlo, xhi);
   // Curves that start just above 0 (PCF radii from 0.01 r_max) get an axis from 0.
-  if (has_data && xlo > 0 && xlo < 0.05 * (xhi - xlo)) xlo = 0;
-  std::vector<double> yt;
+  if (a.has_data && xlo > 0 && xlo < 0.05 * (xhi - xlo)) xlo = 0;
   if (plot.log_y) {
     if (yhi == ylo) ylo /= 2, yhi *= 2;
     // 4% headroom in log space; widen to one decade so at least one tick shows.
@@ -64,24 +70,66 @@ void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double 
       l0 = mid - 0.5, l1 = mid + 0.5;
     }
     ylo = std::pow(10.0, l0), yhi = std::pow(10.0, l1);
-    yt = log_ticks(ylo, yhi);
+    a.yt = log_ticks(ylo, yhi);
   } else {
     widen(ylo, yhi);
     // Expand to the enclosing tick steps so the curve never touches the frame.
-    yt = nice_ticks(ylo, yhi, 5);
-    const double step = yt.size() >= 2 ? yt[1] - yt[0] : (yhi - ylo);
+    a.yt = nice_ticks(ylo, yhi, 5);
+    const double step = a.yt.size() >= 2 ? a.yt[1] - a.yt[0] : (yhi - ylo);
     ylo = std::floor(ylo / step + 1e-9) * step;
     yhi = std::ceil(yhi / step - 1e-9) * step;
     if (yhi - ylo < 1e-12) yhi = ylo + step;
     widen(ylo, yhi);
-    yt = nice_ticks(ylo, yhi, 5);
+    a.yt = nice_ticks(ylo, yhi, 5);
   }
   widen(xlo, xhi);
-  const std::vector<double> xt = nice_ticks(xlo, xhi, 6);
+  a.xt = nice_ticks(xlo, xhi, 6);
+  a.xlo = xlo, a.xhi = xhi, a.ylo = ylo, a.yhi = yhi;
+  return a;
+}
+
+// One series as a line through its usable points (a gap where a point is not), in `color`;
+// a series with one usable point is a dot.
+void draw_series(cairo_t* cr, const Series& s, int color, bool log_y, const std::function<double(double)>& X,
+                 const std::function<double(double)>& Y) {
+  set_color(cr, class_color(color));
+  cairo_set_line_width(cr, 1.8);
+  if (s.dashed) {
+    const double d[] = {6, 4};
+    cairo_set_dash(cr, d, 2, 0);
+  } else {
+    cairo_set_dash(cr, nullptr, 0, 0);
+  }
+  bool pen = false;
+  size_t drawn = 0;
+  for (size_t i = 0; i < s.x.size(); ++i) {
+    if (!usable(s.x[i], s.y[i], log_y)) {
+      pen = false;  // gap
+      continue;
+    }
+    if (pen)
+      cairo_line_to(cr, X(s.x[i]), Y(s.y[i]));
+    else
+      cairo_move_to(cr, X(s.x[i]), Y(s.y[i]));
+    pen = true;
+    ++drawn;
+  }
+  cairo_stroke(cr);
+  if (drawn == 1) {  // a single point would be invisible as a line
+    for (size_t i = 0; i < s.x.size(); ++i)
+      if (usable(s.x[i], s.y[i], log_y)) cairo_arc(cr, X(s.x[i]), Y(s.y[i]), 2.5, 0, 2 * M_PI);
+    cairo_fill(cr);
+  }
+}
+
+// Draws one plot inside the box (bx, by, bw, bh).
+void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double bw, double bh) {
+  const CurveAxes axes = curve_axes(plot);
+  const double xlo = axes.xlo, xhi = axes.xhi, ylo = axes.ylo, yhi = axes.yhi;
 
   // --- layout ---
   double ytw = 0;
-  for (double t : yt) ytw = std::max(ytw, measure_text(tick_label(t), kChartTickFont));
+  for (double t : axes.yt) ytw = std::max(ytw, measure_text(tick_label(t), kChartTickFont));
   std::vector<LegendItem> legend;
   for (size_t k = 0; k < plot.series.size(); ++k)
     if (!plot.series[k].label.empty())
@@ -95,8 +143,8 @@ void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double 
   const double pw = right - left, ph = bottom - top;
   if (pw < 10 || ph < 10) return;  // too small to draw anything meaningful
 
-  auto X = [&](double x) { return left + (x - xlo) / (xhi - xlo) * pw; };
-  auto Y = [&](double y) {
+  const std::function<double(double)> X = [&](double x) { return left + (x - xlo) / (xhi - xlo) * pw; };
+  const std::function<double(double)> Y = [&](double y) {
     const double t = plot.log_y ? (std::log10(y) - std::log10(ylo)) / (std::log10(yhi) - std::log10(ylo))
                                 : (y - ylo) / (yhi - ylo);
     return bottom - t * ph;
@@ -113,7 +161,7 @@ void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double 
   // --- grid, ticks ---
   cairo_save(cr);
   cairo_set_line_width(cr, 1);
-  for (double t : xt) {
+  for (double t : axes.xt) {
     set_color(cr, kGrid);
     cairo_move_to(cr, std::round(X(t)) + 0.5, top);
     cairo_line_to(cr, std::round(X(t)) + 0.5, bottom);
@@ -121,51 +169,21 @@ void draw_plot(cairo_t* cr, const CurvePlot& plot, double bx, double by, double 
     set_color(cr, kText);
     draw_text(cr, tick_label(t), X(t), bottom + 5, kChartTickFont, HAlign::Center, VAlign::Top);
   }
-  draw_y_grid(cr, yt, left, right, Y);
+  draw_y_grid(cr, axes.yt, left, right, Y);
   set_color(cr, kAxis);
   cairo_rectangle(cr, std::round(left) + 0.5, std::round(top) + 0.5, std::round(pw), std::round(ph));
   cairo_stroke(cr);
   cairo_restore(cr);
 
-  // --- curves ---
+  // --- curves, clipped to the frame ---
   cairo_save(cr);
   cairo_rectangle(cr, left, top, pw, ph);
   cairo_clip(cr);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-  for (size_t k = 0; k < plot.series.size(); ++k) {
-    const Series& s = plot.series[k];
-    set_color(cr, class_color(color_of(plot.series[k], k)));
-    cairo_set_line_width(cr, 1.8);
-    if (s.dashed) {
-      const double d[] = {6, 4};
-      cairo_set_dash(cr, d, 2, 0);
-    } else {
-      cairo_set_dash(cr, nullptr, 0, 0);
-    }
-    bool pen = false;
-    size_t drawn = 0;
-    for (size_t i = 0; i < s.x.size(); ++i) {
-      if (!usable(s.x[i], s.y[i], plot.log_y)) {
-        pen = false;  // gap
-        continue;
-      }
-      if (pen)
-        cairo_line_to(cr, X(s.x[i]), Y(s.y[i]));
-      else
-        cairo_move_to(cr, X(s.x[i]), Y(s.y[i]));
-      pen = true;
-      ++drawn;
-    }
-    cairo_stroke(cr);
-    if (drawn == 1) {  // a single point would be invisible as a line
-      for (size_t i = 0; i < s.x.size(); ++i)
-        if (usable(s.x[i], s.y[i], plot.log_y)) cairo_arc(cr, X(s.x[i]), Y(s.y[i]), 2.5, 0, 2 * M_PI);
-      cairo_fill(cr);
-    }
-  }
+  for (size_t k = 0; k < plot.series.size(); ++k) draw_series(cr, plot.series[k], color_of(plot.series[k], k), plot.log_y, X, Y);
   cairo_restore(cr);
-  if (!has_data) {
+  if (!axes.has_data) {
     set_color(cr, kAxis);
     draw_text(cr, "(no data)", left + pw / 2, top + ph / 2, kChartLabelFont, HAlign::Center, VAlign::Middle);
   }
