@@ -70,7 +70,6 @@ void require_equal(const PointSet& a, const PointSet& b) {
   }
 }
 
-
 std::string exemplar_dir(const std::string& sub) {
   return (fs::path(shared_root()) / "data" / "exemplars" / sub).string();
 }
