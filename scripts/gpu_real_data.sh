@@ -96,4 +96,7 @@ for s in $seeds; do
   fi
 done
 tar czf "$out/runs.tgz" -C "$data" runs
+# The device tool returns files of at most 16 MiB: say so before the call's files are lost.
+size=$(stat -c %s "$out/runs.tgz")
+[ "$size" -lt $((16 * 1024 * 1024)) ] || say "WARNING: runs.tgz is $size bytes, over the 16 MiB a returned file may have: fewer seeds a call"
 say "packed $(tar tzf "$out/runs.tgz" | grep -c '/run.json$') ended and $(tar tzf "$out/runs.tgz" | grep -c '/checkpoint.bin$') checkpointed run(s) into $out/runs.tgz ($(du -h "$out/runs.tgz" | cut -f1))"
