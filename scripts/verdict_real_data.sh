@@ -90,7 +90,7 @@ for line in open(sys.argv[1]):
     ps = {k: v for k, v in cells.items() if not k.startswith("L:")}
     ls = {k[2:]: float(v) for k, v in cells.items() if k.startswith("L:")}
     rows.setdefault((s, kind), collections.OrderedDict())[seed] = (seed, float(pcf), ps, ls)  # a rerun's line replaces
-rows = collections.OrderedDict((k, list(v.values())) for k, v in rows.items())
+rows = collections.OrderedDict((k, sorted(v.values(), key=lambda r: int(r[0]))) for k, v in rows.items())  # seeds in order
 print("| data set | output | seeds | pass rate at 5 % per row | median sup L distance per row (mean spacings) | median PCF MSE (all) |")
 print("|---|---|---|---|---|---|")
 for (s, kind), runs in rows.items():
