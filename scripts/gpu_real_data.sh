@@ -81,7 +81,9 @@ for s in $seeds; do
   else
     cmd=(synthesize -e "$exemplar" -m gabor --seed "$s" -o "$run" --device "$device" "${quick[@]}" "$@")
   fi
-  PPSYNTH_THREADS=$threads timeout -s TERM "$stop_after" "$bin" "${cmd[@]}" >> "$run.log" 2>&1 &
+  # SIGTERM: the run saves its checkpoint and ends; 20 s later, still running, it is killed
+  # (its last checkpoint, at most checkpoint_seconds old, stays).
+  PPSYNTH_THREADS=$threads timeout -s TERM -k 20 "$stop_after" "$bin" "${cmd[@]}" >> "$run.log" 2>&1 &
 done
 wait
 
