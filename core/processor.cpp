@@ -86,6 +86,8 @@ CpuIsa cpu_isa_from(const std::string& cpuinfo, const std::function<std::string(
   const int cap = onednn_level(isa.onednn_cap);  // oneDNN ignores a name it does not know: so do we
   if (!isa.widest.empty() && cap >= 0 && cap < class_level(isa.widest)) isa.effective = class_at(cap);
   isa.native_bf16 = !isa.effective.empty() && class_level(isa.effective) >= onednn_level("AVX512_CORE_BF16");
+  isa.bf16_unavailable = !isa.widest.empty() && class_level(isa.widest) >= onednn_level("AVX512_CORE") &&
+                         class_level(isa.effective) < onednn_level("AVX512_CORE");
   return isa;
 }
 

@@ -23,6 +23,11 @@ struct CpuIsa {
   std::string aten_cap;     // ATEN_CPU_CAPABILITY as set, lower case; "" if unset
   std::string effective;    // what oneDNN may use: `widest` lowered to the cap (avx2 under ONEDNN_MAX_CPU_ISA=AVX2)
   bool native_bf16 = false; // oneDNN runs bf16 convolutions on bf16 units (AVX512_BF16 or AMX), not emulated
+  // No bf16 convolution can run: LibTorch sends them to oneDNN on any CPU with AVX-512 (its own
+  // check reads the CPU, not the cap), and oneDNN capped below AVX512_CORE has no bf16 kernel,
+  // so each throws "could not create a primitive descriptor iterator". An AVX2 CPU runs them
+  // (LibTorch's emulation, far slower); an AVX-512 CPU under ONEDNN_MAX_CPU_ISA=AVX2 cannot.
+  bool bf16_unavailable = false;
 
   // "MODEL (ISA)", with the caps where they lower it: "MODEL (avx512_bf16 capped to avx2 by
   // ONEDNN_MAX_CPU_ISA=AVX2)"; "unknown" where /proc/cpuinfo cannot be read.

@@ -49,6 +49,10 @@ NetworkPrecision resolve_network_precision(const std::string& requested, const s
   if (requested == "float32") {
     p.reason = "float32 as configured";
   } else if (requested == "bfloat16") {
+    if (cpu.bf16_unavailable)
+      throw config_error(key_path, "\"bfloat16\" cannot run on this CPU as capped (" + cpu.kind() +
+                                       "): LibTorch sends its bf16 convolutions to oneDNN, which has none below "
+                                       "AVX512_CORE; lift ONEDNN_MAX_CPU_ISA to AVX512_CORE or above, or use \"float32\" or \"auto\"");
     p.dtype = torch::kBFloat16;
     p.name = "bfloat16";
     p.reason = "bfloat16 as configured";

@@ -36,6 +36,21 @@ TEST_CASE("the processor kind: the model and the widest instruction set of the k
   CHECK_FALSE(processor_kind().empty());
 }
 
+TEST_CASE("bf16 unavailable: an AVX-512 CPU with oneDNN capped below AVX512_CORE, and only there", "[core][processor]") {
+  // LibTorch 1.13 sends bf16 convolutions to oneDNN by the CPU's flags; oneDNN under the cap
+  // has no bf16 kernel for them (measured on a Xeon with AMX: "could not create a primitive
+  // descriptor iterator" under ONEDNN_MAX_CPU_ISA=AVX2, and none at AVX512_CORE).
+  const auto avx2_cap = env({{"ONEDNN_MAX_CPU_ISA", "AVX2"}});
+  CHECK(cpu_isa_from(amd, avx2_cap).bf16_unavailable);
+  CHECK(cpu_isa_from(intel, avx2_cap).bf16_unavailable);
+  CHECK(cpu_isa_from("model name : x\nflags : avx2 avx512f avx512bw\n", avx2_cap).bf16_unavailable);
+  CHECK_FALSE(cpu_isa_from(intel, env({{"ONEDNN_MAX_CPU_ISA", "AVX512_CORE"}})).bf16_unavailable);  // emulated there
+  CHECK_FALSE(cpu_isa_from(intel, env({})).bf16_unavailable);
+  CHECK_FALSE(cpu_isa_from(avx2, env({})).bf16_unavailable);  // an AVX2 CPU emulates bf16: slow, but it runs
+  CHECK_FALSE(cpu_isa_from(avx2, avx2_cap).bf16_unavailable);
+  CHECK_FALSE(cpu_isa_from("", avx2_cap).bf16_unavailable);
+}
+
 TEST_CASE("native bf16: the CPU's bf16 units, unless oneDNN is capped below them", "[core][processor]") {
   CHECK(cpu_isa_from(amd, env({})).native_bf16);
   CHECK(cpu_isa_from(intel, env({})).native_bf16);
