@@ -87,7 +87,8 @@ MachineReport machine_report(int floor_res, int reps) {
   m.blas = loaded_blas();
   if (floor_res > 0) {
     m.floor_res = floor_res;
-    m.floors = {conv_throughput_float32(floor_res, reps), conv_throughput_bfloat16(floor_res, reps)};
+    m.floors = {conv_throughput_float32(floor_res, reps)};
+    if (!cpu.bf16_unavailable) m.floors.push_back(conv_throughput_bfloat16(floor_res, reps));  // else none runs (core/processor.hpp)
   }
   // The network a run takes here (the default's, then each preset's): the preset's fragment
   // over the "random" network's registered defaults, so no default is restated here.
@@ -128,7 +129,9 @@ std::string MachineReport::text() const {
   std::string t;
   char buf[512];
   t += "processor:  " + processor + "\n";
-  t += "bf16:       " + std::string(native_bf16 ? "native (oneDNN on the CPU's bf16 units)" : "emulated by oneDNN (no bf16 units in use)") + "\n";
+  t += "bf16:       " + std::string(native_bf16 ? "native (oneDNN on the CPU's bf16 units)"
+                                    : cpu_isa().bf16_unavailable ? "unavailable (oneDNN capped below AVX512_CORE on an AVX-512 CPU)"
+                                                                 : "emulated by oneDNN (no bf16 units in use)") + "\n";
   std::snprintf(buf, sizeof buf, "threads:    %d intra-op, %d inter-op (PPSYNTH_THREADS sets the first)\n", threads, interop_threads);
   t += buf;
   t += "BLAS:       " + blas + "\n";
@@ -139,8 +142,11 @@ std::string MachineReport::text() const {
       std::snprintf(buf, sizeof buf, " %s %.1f GFLOP/s;", f.path.c_str(), f.gflops);
       t += buf;
     }
-    std::snprintf(buf, sizeof buf, " bf16 / float32 %.3g x\n", floors[1].gflops / floors[0].gflops);
-    t += buf;
+    if (floors.size() > 1) {
+      std::snprintf(buf, sizeof buf, " bf16 / float32 %.3g x", floors[1].gflops / floors[0].gflops);
+      t += buf;
+    }
+    t += "\n";
   }
   t += "network per preset here (precision, filters for one class / several):\n";
   for (const auto& p : presets) {

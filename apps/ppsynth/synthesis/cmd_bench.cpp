@@ -303,7 +303,11 @@ Floor convolution_floor(const Subject& b, int map_channels, int reps) {
   // throughput is taken once on a 64 x 64 map, where it is the same per FLOP.
   const bool bf16_units = !b.device.is_cpu() || cpu_isa().native_bf16;
   f.bf16_res = bf16_units ? b.R : std::min(b.R, 64);
-  f.paths = {conv_throughput_float32(b.R, reps, b.device), conv_throughput_bfloat16(f.bf16_res, bf16_units ? reps : 1, b.device)};
+  f.paths = {conv_throughput_float32(b.R, reps, b.device)};
+  // Where no bf16 convolution can run (an AVX-512 CPU with oneDNN capped below AVX512_CORE,
+  // core/processor.hpp) there is no bf16 floor: float32's alone.
+  if (!b.device.is_cpu() || !cpu_isa().bf16_unavailable)
+    f.paths.push_back(conv_throughput_bfloat16(f.bf16_res, bf16_units ? reps : 1, b.device));
   if (random_net) {
     f.flops = net_flops(map_channels, net["channels"].get<int>(), net["kernel_size"].get<int>(), net["depth"].get<int>(), b.R);
     f.bf16 = resolve_network_precision(net["precision"].get<std::string>(), "method.feature_net.precision").dtype == torch::kBFloat16;
@@ -343,11 +347,15 @@ json report(const Subject& b, const SetupTimes& setup, const PhaseTimes& it, con
     std::printf("  %-24s %10.1f %10.3f %14.2f %18.2f\n", p.path.c_str(), p.gflops, f, floor.flops > 0 ? full.median() / f : 0.0,
                 floor.flops > 0 ? engine.median() / f : 0.0);
     jfloors.push_back({{"path", p.path}, {"conv_gflops", p.gflops}, {"floor_s", f},
-                       {"measured_at_grid", &p == &floor.paths[1] ? floor.bf16_res : b.R},
+                       {"measured_at_grid", &p == &floor.paths.front() ? b.R : floor.bf16_res},
                        {"iteration_over_floor", floor.flops > 0 ? full.median() / f : 0}});
   }
-  std::printf("  bfloat16 / float32 throughput: %.3gx", floor.paths[1].gflops / floor.paths[0].gflops);
-  if (floor.bf16_res != b.R) std::printf(" (bf16 emulated here: its throughput measured once at %dx%d)", floor.bf16_res, floor.bf16_res);
+  if (floor.paths.size() > 1) {
+    std::printf("  bfloat16 / float32 throughput: %.3gx", floor.paths[1].gflops / floor.paths[0].gflops);
+    if (floor.bf16_res != b.R) std::printf(" (bf16 emulated here: its throughput measured once at %dx%d)", floor.bf16_res, floor.bf16_res);
+  } else {
+    std::printf("  bfloat16: no bf16 convolution runs on this CPU as capped (%s)", cpu_isa().kind().c_str());
+  }
   std::printf("\n");
   out["floors"] = jfloors;
   std::printf("set-up before the first iteration: %.2f s", setup.first);
