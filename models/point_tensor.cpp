@@ -35,4 +35,8 @@ torch::Tensor torus_distances(const torch::Tensor& a, const torch::Tensor& b) {
   return torch::sqrt(diff.pow(2).sum(-1) + 1e-12);
 }
 
+torch::Tensor plane_distances(const torch::Tensor& a, const torch::Tensor& b) {
+  return torch::sqrt((a.unsqueeze(1) - b.unsqueeze(0)).pow(2).sum(-1) + 1e-12);
+}
+
 }  // namespace ppsynth

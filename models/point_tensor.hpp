@@ -17,5 +17,7 @@ torch::Tensor normalized_attributes(const PointSet& ps, const std::vector<int>& 
 // (minimum image), differentiable: round() passes no gradient, and a small epsilon keeps
 // the gradient of coincident points finite (the point terms of optim/ use it).
 torch::Tensor torus_distances(const torch::Tensor& a, const torch::Tensor& b);
+// The same in the plane (a window's positions do not wrap).
+torch::Tensor plane_distances(const torch::Tensor& a, const torch::Tensor& b);
 
 }  // namespace ppsynth

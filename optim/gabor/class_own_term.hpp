@@ -5,6 +5,10 @@
 // asks for the class's own spacing. It uses a second pipeline (rasters with the class's own k,
 // targets of the class alone) whose network is drawn from the run's seed, so both losses see
 // the same random filters.
+//
+// In a window of a rectangle output the class's own maps hold its moving points and its frozen
+// ones in the window's context (final from earlier windows), and the loss measures the grid's
+// part the paper's loss measures.
 #include <memory>
 
 #include "optim/gabor/map_term.hpp"
@@ -14,19 +18,23 @@ namespace ppsynth {
 class ClassOwnMapTerm : public MapTerm {
  public:
   void begin_run(const MapTermRun& run) override;
-  void begin_group(const Stage& stage, const PointSet& output) override;
+  void begin_group(const MapTermGroup& group) override;
   void begin_stage(const Stage& stage) override;
   torch::Tensor evaluate(const torch::Tensor& moving, const torch::Tensor& jitter, const Stage& stage) override;
+  bool in_windows() const override { return true; }
 
  private:
-  bool active(const Stage& stage) const { return pipe_ && stage.group > 0; }
+  // Not for the first class of the order: its joint maps are its own.
+  bool active(const Stage& stage) const { return pipe_ && stage.target_classes.size() > 1; }
 
   std::unique_ptr<GaborPipeline> pipe_;  // null for a one-class exemplar: the joint maps are the class's own
   const PointSet* exemplar_ = nullptr;
   GaborSettings settings_;
   uint64_t seed_ = 0;
   bool fresh_net_ = false;
-  torch::Tensor out_weights_;
+  torch::Tensor own_frozen_;    // the class's frozen points in the maps' coordinates (a window's context); may be empty
+  torch::Tensor out_weights_;   // [own frozen; moving] map weights; undefined without attributes
+  std::vector<double> measured_;
 };
 
 }  // namespace ppsynth

@@ -110,25 +110,6 @@ std::vector<size_t> concat(const std::vector<size_t>& a, const std::vector<size_
   return v;
 }
 
-// Every layer cut to the part {x0, y0, x1, y1} of the grid (fractions; x along columns, y
-// along rows, as the maps lie): the losses then measure that part only. Gram matrices
-// average over the positions they get and the deep correlation normalizes by its overlap,
-// so a part is measured as a smaller grid would be.
-Features measured_part(const Features& f, const std::vector<double>& part) {
-  if (part.empty()) return f;
-  Features cut;
-  for (const auto& F : f) {
-    const int64_t H = F.size(2), W = F.size(3);
-    auto range = [](double a, double b, int64_t n) {
-      const int64_t i0 = std::clamp<int64_t>(std::llround(a * n), 0, n - 1);
-      return std::make_pair(i0, std::clamp<int64_t>(std::llround(b * n), i0 + 1, n));
-    };
-    const auto [c0, c1] = range(part[0], part[2], W);
-    const auto [r0, r1] = range(part[1], part[3], H);
-    cut.push_back(F.slice(3, c0, c1).slice(2, r0, r1));
-  }
-  return cut;
-}
 
 }  // namespace
 
@@ -332,7 +313,7 @@ void GaborEngine::enter_group(const Stage& stage) {
   geometry_ = stage.geometry;
   const int K = exemplar_.num_classes(), class_step = group_ % K;  // window plans: K groups per window
   if (s_.fresh_net_per_class && group_ > 0)
-    pipe_->redraw_network(class_step == 0 ? ctx_.seed : ctx_.seed + 7919ull * class_step);
+    pipe_->redraw_network(class_network_seed(ctx_.seed, class_step));
   // A group continues one optimization: its points and positions come from the checkpoint
   // when resumed inside it, else from the plan (or the window's choice) and the output.
   const bool fresh = !state_.moving.defined();
@@ -351,11 +332,12 @@ void GaborEngine::enter_group(const Stage& stage) {
   state_.moving.set_requires_grad(true);
   measured_.clear();
   if (s_.statistics_in_output) measured_ = geometry_->part_inside(shape_.domain());
-  const ClassStage class_stage{exemplar_, out_, moving_idx_, frozen_idx_, s_.upscale, device_};
+  const ClassStage class_stage{exemplar_, out_, moving_idx_, frozen_idx_, s_.upscale, device_,
+                               geometry_->periodic() ? 0.0 : geometry_->grid().width()};
   for (auto& t : terms_) t.term->begin_class(class_stage);
   for (auto& kind : kinds_)
     for (auto& t : kind->terms()) t.term->begin_class(class_stage);
-  for (auto& t : map_terms_) t.term->begin_group(stage, out_);
+  for (auto& t : map_terms_) t.term->begin_group(MapTermGroup{stage, out_, moving_idx_, frozen_idx_, frozen_, measured_});
 }
 
 torch::Tensor GaborEngine::map_weights(const std::vector<size_t>& rows, const std::vector<int>& classes) const {

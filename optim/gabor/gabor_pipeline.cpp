@@ -8,10 +8,12 @@
 #include "core/metrics/nearest_neighbor.hpp"
 #include "optim/gabor/gabor_options.hpp"
 #include "optim/gabor/grid_options.hpp"
+#include "optim/gabor/map_term.hpp"
 #include "optim/gabor/quick_options.hpp"
 #include "optim/gabor/sigma_schedule.hpp"
 #include "optim/gabor/window_options.hpp"
 #include "optim/gabor/window_plan.hpp"
+#include "optim/terms/point_term.hpp"
 
 namespace ppsynth {
 
@@ -126,10 +128,10 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   relax.upscale = s.upscale;
   s.border_relax = BorderRelaxOptions::resolve(p["border_relax"], relax);
   s.fresh_net_per_class = o.fresh_net_per_class;
-  if (shape.rectangle && !p["terms"].empty())  // they assume the unit torus (optim/terms/point_term.hpp)
-    throw config_error("method.terms", "point terms work on the paper's u x u outputs only, not with \"output\"");
-  if (shape.rectangle && !p["map_terms"].empty())
-    throw config_error("method.map_terms", "map terms work on the paper's u x u outputs only, not with \"output\"");
+  if (shape.rectangle) {  // windows: only the terms that know them (optim/terms/point_term.hpp, map_term.hpp)
+    check_point_terms_in_windows(p["terms"]);
+    check_map_terms_in_windows(p["map_terms"]);
+  }
   if (!shape.rectangle) {
     s.out_res = s.upscale * s.res;
     s.out_scale = s.upscale;
@@ -249,6 +251,22 @@ torch::Tensor GaborPipeline::draw_jitter(std::mt19937_64& rng, bool tile) const 
 
 json GaborPipeline::resolved() const {
   return {{"rasterizer", resolved_rast_}, {"feature_net", resolved_net_}, {"losses", loss_.resolved()}};
+}
+
+Features measured_part(const Features& f, const std::vector<double>& part) {
+  if (part.empty()) return f;
+  Features cut;
+  for (const auto& F : f) {
+    const int64_t H = F.size(2), W = F.size(3);
+    auto range = [](double a, double b, int64_t n) {
+      const int64_t i0 = std::clamp<int64_t>(std::llround(a * n), 0, n - 1);
+      return std::make_pair(i0, std::clamp<int64_t>(std::llround(b * n), i0 + 1, n));
+    };
+    const auto [c0, c1] = range(part[0], part[2], W);
+    const auto [r0, r1] = range(part[1], part[3], H);
+    cut.push_back(F.slice(3, c0, c1).slice(2, r0, r1));
+  }
+  return cut;
 }
 
 }  // namespace ppsynth

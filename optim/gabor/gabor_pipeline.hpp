@@ -117,6 +117,18 @@ class GaborPipeline {
   void build_rasterizers();
 };
 
+// Every layer cut to the part {x0, y0, x1, y1} of the grid (fractions; x along columns, y
+// along rows, as the maps lie): the losses then measure that part only (method.window.statistics
+// "output"). Gram matrices average over the positions they get and the deep correlation
+// normalizes by its overlap, so a part is measured as a smaller grid would be. Empty: all of it.
+Features measured_part(const Features& f, const std::vector<double>& part);
+
+// The network of a plan's class_step-th class when method.fresh_net_per_class draws one per
+// class (as the published code does): the run's seed for the first.
+inline uint64_t class_network_seed(uint64_t seed, int class_step) {
+  return class_step == 0 ? seed : seed + 7919ull * static_cast<uint64_t>(class_step);
+}
+
 // Published toroidal wrap (x > 1 -> x - floor(x); x < 0 -> x + ceil(|x|)), identity gradient.
 torch::Tensor wrap_unit(const torch::Tensor& x);
 

@@ -27,12 +27,17 @@ std::vector<std::vector<double>> class_pair_min_distance(const PointSet& ps) {
 }
 
 SeparationTerm::SeparationTerm(const PointSet& ex, const PointSet& out, const std::vector<size_t>& moving,
-                               const std::vector<size_t>& frozen, int upscale, double fraction, torch::Device device) {
+                               const std::vector<size_t>& frozen, int upscale, double fraction, torch::Device device,
+                               double window_side)
+    : periodic_(window_side <= 0) {
   const auto dmin = class_pair_min_distance(ex);
   const auto radius_col = out.attribute_index("radius");
+  // Exemplar and output lengths in the positions' units (point_term.hpp's ClassStage).
+  const double ex_scale = periodic_ ? 1.0 / upscale : 1.0 / window_side;
+  const double out_scale = periodic_ ? 1.0 : 1.0 / window_side;
   auto threshold = [&](size_t i, size_t j) {
-    const double spacing = fraction * dmin[out.cls(i)][out.cls(j)] / upscale;
-    const double contact = radius_col ? out.attr(i, *radius_col) + out.attr(j, *radius_col) : 0.0;
+    const double spacing = fraction * dmin[out.cls(i)][out.cls(j)] * ex_scale;
+    const double contact = radius_col ? (out.attr(i, *radius_col) + out.attr(j, *radius_col)) * out_scale : 0.0;
     return static_cast<float>(std::max(spacing, contact));
   };
   const int64_t n = static_cast<int64_t>(moving.size()), m = static_cast<int64_t>(frozen.size());
@@ -50,10 +55,10 @@ SeparationTerm::SeparationTerm(const PointSet& ex, const PointSet& out, const st
 
 namespace {
 
-// Sum over pairs with a threshold of relu(1 - d / t)^2, d on the unit torus.
-torch::Tensor pair_penalty(const torch::Tensor& a, const torch::Tensor& b, const torch::Tensor& t) {
+// Sum over pairs with a threshold of relu(1 - d / t)^2, d on the unit torus or in the plane.
+torch::Tensor pair_penalty(const torch::Tensor& a, const torch::Tensor& b, const torch::Tensor& t, bool periodic) {
   if (a.size(0) == 0 || b.size(0) == 0) return torch::zeros({}, a.options());
-  auto d = torus_distances(a, b);
+  auto d = periodic ? torus_distances(a, b) : plane_distances(a, b);
   auto active = t > 0;
   auto v = torch::relu(1 - d / torch::where(active, t, torch::ones_like(t)));
   return (v * active).pow(2).sum();
@@ -62,8 +67,8 @@ torch::Tensor pair_penalty(const torch::Tensor& a, const torch::Tensor& b, const
 }  // namespace
 
 torch::Tensor SeparationTerm::operator()(const torch::Tensor& moving, const torch::Tensor& frozen) const {
-  auto p = pair_penalty(moving, moving, t_moving_);
-  if (frozen.defined() && frozen.size(0) > 0) p = p + pair_penalty(moving, frozen, t_frozen_);
+  auto p = pair_penalty(moving, moving, t_moving_, periodic_);
+  if (frozen.defined() && frozen.size(0) > 0) p = p + pair_penalty(moving, frozen, t_frozen_, periodic_);
   return p;
 }
 
@@ -74,8 +79,10 @@ class SeparationPointTerm : public PointTerm {
  public:
   explicit SeparationPointTerm(const nlohmann::json& p) : fraction_(p["fraction"].get<double>()) {}
   void begin_class(const ClassStage& s) override {
-    term_ = std::make_unique<SeparationTerm>(s.exemplar, s.output, s.moving, s.frozen, s.upscale, fraction_, s.device);
+    term_ = std::make_unique<SeparationTerm>(s.exemplar, s.output, s.moving, s.frozen, s.upscale, fraction_, s.device,
+                                             s.window_side);
   }
+  bool in_windows() const override { return true; }
   torch::Tensor evaluate(const torch::Tensor& moving, const torch::Tensor& frozen) override {
     return (*term_)(moving, frozen);
   }

@@ -12,6 +12,8 @@
 //
 // d_ij on the unit torus (the positions are wrapped toroidally); dmin_ex(a, b) is the closest
 // pair of exemplar points of classes a and b (no term where a class pair has no pair).
+// In a window of a rectangle output (window_side s > 0) the same in the window's grid
+// coordinates: d_ij in the plane, t_ij = max(fraction x dmin_ex / s, (r_i + r_j) / s).
 // The synthesizer weights it by method.terms.separation.weight times the stage's first loss,
 // so one weight serves every scene and sigma. Pairs are dense (n x n and n x m per
 // evaluation): cheap beside the filter network at the paper's sizes (up to ~1,100 output
@@ -27,15 +29,19 @@ namespace ppsynth {
 class SeparationTerm {
  public:
   // Thresholds for one class stage: `moving` and `frozen` index `output` (radii, if any, are
-  // the output's, i.e. already divided by u), kept on `device`, where the positions will be.
+  // the output's, i.e. already divided by u on the torus), kept on `device`, where the
+  // positions will be. window_side: 0 on the unit torus, else the window grid's side
+  // (point_term.hpp's ClassStage).
   SeparationTerm(const PointSet& exemplar, const PointSet& output, const std::vector<size_t>& moving,
-                 const std::vector<size_t>& frozen, int upscale, double fraction, torch::Device device = torch::kCPU);
-  // moving: n x 2 wrapped positions (may require grad); frozen: m x 2 (m may be 0).
+                 const std::vector<size_t>& frozen, int upscale, double fraction, torch::Device device = torch::kCPU,
+                 double window_side = 0);
+  // moving: n x 2 wrapped (or window-local) positions (may require grad); frozen: m x 2 (m may be 0).
   torch::Tensor operator()(const torch::Tensor& moving, const torch::Tensor& frozen) const;
 
  private:
   torch::Tensor t_moving_;  // n x n, strictly upper triangle (each pair once); 0 = no term
   torch::Tensor t_frozen_;  // n x m
+  bool periodic_ = true;    // torus distances; false: a window's plane
 };
 
 // Closest distance between two distinct exemplar points of classes a and b, per class pair

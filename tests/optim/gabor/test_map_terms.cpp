@@ -19,7 +19,7 @@ class CenterMapTerm : public MapTerm {
  public:
   explicit CenterMapTerm(const nlohmann::json&) {}
   void begin_run(const MapTermRun& run) override { ++runs, grid = run.settings.res; }
-  void begin_group(const Stage&, const PointSet& output) override { ++groups, output_points = output.size(); }
+  void begin_group(const MapTermGroup& g) override { ++groups, output_points = g.output.size(); }
   void begin_stage(const Stage&) override { ++stages; }
   torch::Tensor evaluate(const torch::Tensor& moving, const torch::Tensor& jitter, const Stage&) override {
     ++evaluations;

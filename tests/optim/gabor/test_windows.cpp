@@ -38,13 +38,14 @@ struct Run {
 
 // A tiny Gabor run on `shape`: 16 grid positions per exemplar unit, windows of `pixels`,
 // margins of 0.3 exemplar units (the automatic margin, 3 sigma_max, would need larger windows).
+// `extra`: more method keys (terms beside the paper's).
 Run synthesize(const PointSet& ex, const OutputShape& shape, int pixels, int iterations, const std::string* resume = nullptr,
-               bool checkpoints = false, const std::string& statistics = "grid") {
-  auto method = MethodRegistry::instance().create(
-      json{{"type", "gabor"},
-           {"window", {{"pixels", pixels}, {"margin", 0.3}, {"statistics", statistics}}},
-           {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", iterations}, {"num_sigmas", 2}}}},
-      "method");
+               bool checkpoints = false, const std::string& statistics = "grid", const json& extra = json::object()) {
+  json spec = {{"type", "gabor"},
+               {"window", {{"pixels", pixels}, {"margin", 0.3}, {"statistics", statistics}}},
+               {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", iterations}, {"num_sigmas", 2}}}};
+  spec.update(extra);
+  auto method = MethodRegistry::instance().create(spec, "method");
   Run run;
   SynthesisContext ctx;
   ctx.quick = true;
@@ -259,6 +260,53 @@ TEST_CASE("a window run resumed from any checkpoint ends bit for bit as the unin
     const Run resumed = synthesize(ex, shape, 20, 3, &whole.checkpoints[i], true);
     CHECK(same_bits(resumed.output, whole.output));
   }
+}
+
+TEST_CASE("terms beside the paper's in windows: separation and class_own act, resume bit for bit; torus-only terms refused",
+          "[optim][windows][checkpoint]") {
+  const PointSet ex = test::small_exemplar(2, true, 25, 0.005);
+  const OutputShape shape = shape_of(json{{"size", {2.5, 1.2}}, {"border", "clean"}}, ex);
+  const Run plain = synthesize(ex, shape, 20, 3);
+  REQUIRE(plain.stats["windows"]["nx"].get<int>() >= 2);
+  // Separation: twice the exemplar's closest pairs, more than the initialization's spacing.
+  const json separation = {{"terms", {{"separation", {{"weight", 10.0}, {"fraction", 2.0}}}}}};
+  const Run separated = synthesize(ex, shape, 20, 3, nullptr, false, "grid", separation);
+  CHECK(separated.stats["terms"]["separation"].get<double>() == 10.0);
+  CHECK_FALSE(same_bits(separated.output, plain.output));
+  // class_own: class 0 (first in the order: its joint maps are its own) moves as without it,
+  // in every window; class 1 moves otherwise. (A published border: the canvas is the output,
+  // so its points are the canvas's, in the same order.)
+  const OutputShape exact = shape_of(json{{"size", {2.5, 1.2}}, {"border", "published"}}, ex);
+  const json own = {{"map_terms", {{"class_own", {{"weight", 1.0}}}}}};
+  const Run plain_exact = synthesize(ex, exact, 20, 3);
+  const Run with_own = synthesize(ex, exact, 20, 3, nullptr, false, "grid", own);
+  REQUIRE(with_own.output.size() == plain_exact.output.size());
+  size_t class1_moved = 0;
+  for (size_t i = 0; i < plain_exact.output.size(); ++i) {
+    if (plain_exact.output.cls(i) == 0) {
+      CHECK(with_own.output[i].x == plain_exact.output[i].x);
+      CHECK(with_own.output[i].y == plain_exact.output[i].y);
+    } else {
+      class1_moved += with_own.output[i].x != plain_exact.output[i].x || with_own.output[i].y != plain_exact.output[i].y;
+    }
+  }
+  CHECK(class1_moved > 0);
+  // Both, with the exemplar's frozen pad as context (its class-1 points enter the class's own
+  // maps), resumed from checkpoints inside and between windows: the uninterrupted run, bit for bit.
+  json both = separation;
+  both.update(own);
+  const OutputShape context = shape_of(json{{"size", {2.5, 1.2}}, {"border", "context"}}, ex);
+  const Run whole = synthesize(ex, context, 20, 3, nullptr, true, "grid", both);
+  const size_t n = whole.checkpoints.size();
+  REQUIRE(n > 10);
+  for (size_t i : {n / 3, n / 2 + 1, n - 2}) {
+    const SynthesisState st = deserialize_state(whole.checkpoints[i], "test");
+    INFO("checkpoint " << i << ": stage " << st.stage << ", iteration " << st.iteration);
+    CHECK(same_bits(synthesize(ex, context, 20, 3, &whole.checkpoints[i], true, "grid", both).output, whole.output));
+  }
+  // pcf_match's estimator is the torus's: refused, naming the term, before anything runs.
+  CHECK_THROWS_WITH(synthesize(ex, shape, 20, 3, nullptr, false, "grid", json{{"terms", {{"pcf_match", {{"weight", 1.0}}}}}}),
+                    Catch::Contains("method.terms.pcf_match") && Catch::Contains("u x u"));
 }
 
 namespace {

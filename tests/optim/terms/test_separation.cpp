@@ -69,6 +69,35 @@ TEST_CASE("Separation term: torus distance, threshold, gradient apart", "[optim]
   }
 }
 
+TEST_CASE("Separation term in a window: exemplar units over the grid's side, plane distances", "[optim][separation][windows]") {
+  // A rectangle output is in exemplar units; a window's positions are (p - corner) / side.
+  // Exemplar closest pair 0.2 -> threshold 0.9 * 0.2 / side in the window's coordinates.
+  auto ex = points({{0.2, 0.5}, {0.4, 0.5}}, {0, 0});
+  const double side = 1.5;
+  SECTION("a pair closer than the threshold, in exemplar units") {
+    auto out = points({{1.0, 1.0}, {1.15, 1.0}}, {0, 0});  // 0.15 apart: inside 0.18
+    SeparationTerm term(ex, out, {0, 1}, {}, 2, 0.9, torch::kCPU, side);
+    auto local = xy(out) / side;
+    CHECK(term(local, torch::Tensor()).item<double>() == Approx(std::pow(1 - 0.15 / 0.18, 2)).epsilon(1e-4));
+  }
+  SECTION("no wrap: opposite edges of the grid are far apart") {
+    auto out = points({{0.01, 0.75}, {1.49, 0.75}}, {0, 0});
+    SeparationTerm term(ex, out, {0, 1}, {}, 2, 0.9, torch::kCPU, side);
+    CHECK(term(xy(out) / side, torch::Tensor()).item<double>() == 0);
+  }
+  SECTION("disk radii in exemplar units, over the side too") {
+    PointSet exd, outd;
+    exd.add_attribute("radius");
+    outd.add_attribute("radius");
+    exd.add({0.2, 0.5}, 0, {0.01});
+    exd.add({0.3, 0.5}, 0, {0.01});  // spacing threshold 0.09
+    outd.add({1.0, 1.0}, 0, {0.1});
+    outd.add({1.19, 1.0}, 0, {0.1});  // 0.19 apart: inside r_i + r_j = 0.2
+    SeparationTerm term(exd, outd, {0, 1}, {}, 2, 0.9, torch::kCPU, side);
+    CHECK(term(xy(outd) / side, torch::Tensor()).item<double>() == Approx(std::pow(1 - 0.19 / 0.2, 2)).epsilon(1e-3));
+  }
+}
+
 TEST_CASE("Separation term: disks are kept apart by their radii", "[optim][separation]") {
   PointSet ex, out;
   ex.add_attribute("radius");
