@@ -73,6 +73,8 @@ inline std::vector<WeightedMapTerm> create_map_terms(const nlohmann::json& terms
 
 // The windows of a rectangle output: every term switched on must know them; config_error
 // naming method.map_terms.<name> otherwise.
-void check_map_terms_in_windows(const nlohmann::json& terms);
+inline void check_map_terms_in_windows(const nlohmann::json& terms) {
+  check_terms_in_windows<MapTerm>(terms, "method.map_terms", "\"class_own\"");
+}
 
 }  // namespace ppsynth

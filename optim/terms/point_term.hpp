@@ -63,6 +63,8 @@ inline std::vector<WeightedPointTerm> create_point_terms(const nlohmann::json& t
 
 // The windows of a rectangle output: every term switched on must know them; config_error
 // naming method.terms.<name> otherwise.
-void check_point_terms_in_windows(const nlohmann::json& terms);
+inline void check_point_terms_in_windows(const nlohmann::json& terms) {
+  check_terms_in_windows<PointTerm>(terms, "method.terms", "\"separation\"");
+}
 
 }  // namespace ppsynth

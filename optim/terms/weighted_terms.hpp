@@ -46,4 +46,14 @@ std::vector<WeightedTerm<Term>> create_weighted_terms(const nlohmann::json& term
   return out;
 }
 
+// A rectangle output runs its stages in windows: every term `terms` switches on must say
+// in_windows(); config_error naming <key>.<name> otherwise (`both`: the terms that know both).
+template <class Term>
+void check_terms_in_windows(const nlohmann::json& terms, const std::string& key, const std::string& both) {
+  for (const auto& t : create_weighted_terms<Term>(terms, key))
+    if (!t.term->in_windows())
+      throw config_error(key + "." + t.name, "works on the paper's u x u outputs only, not on a rectangle output's "
+                                             "windows (\"output\"); " + both + " works on both");
+}
+
 }  // namespace ppsynth
