@@ -22,6 +22,7 @@
 #include "core/log.hpp"
 #include "core/run_directory.hpp"
 #include "core/shell_quote.hpp"
+#include "optim/run/checkpoint_store.hpp"
 #include "optim/run/runtime.hpp"
 #include "experiments/execute/sweep_runs.hpp"
 
@@ -118,7 +119,7 @@ ExecutionSummary execute_local(const std::string& sweep_dir, const LocalExecutio
   auto stop_all = [&] {
     if (stopping) return;
     stopping = true;
-    spdlog::warn("sweep {}: stopping {} running task(s) (each writes its checkpoint)", m.name, running.size());
+    spdlog::warn("sweep {}: stopping {} running task(s) (each writes a checkpoint where it has reached one)", m.name, running.size());
     for (auto& [pid, info] : running) ::kill(pid, SIGTERM);
   };
   while (!running.empty() || (!queue.empty() && !stopping)) {
@@ -148,7 +149,10 @@ ExecutionSummary execute_local(const std::string& sweep_dir, const LocalExecutio
       spdlog::info("[{}] {}: done ({:.0f} s)", row.id, row.label, s);
     } else if (code == 130 || code == 143) {
       ++sum.interrupted;
-      spdlog::warn("[{}] {}: interrupted after {:.0f} s; its checkpoint is kept", row.id, row.label, s);
+      // Stopped before its first checkpoint, a row has nothing to resume: say so, not "kept".
+      const bool saved = fs::exists(checkpoint_file_in((fs::path(sweep_dir) / row.dir).string()));
+      spdlog::warn("[{}] {}: interrupted after {:.0f} s; {}", row.id, row.label, s,
+                   saved ? "its checkpoint is kept" : "before its first checkpoint: the next task starts it afresh");
     } else {
       ++sum.failed;
       spdlog::error("[{}] {}: failed (exit {}); see {}/logs/{}.log", row.id, row.label, code, sweep_dir, row.id);
