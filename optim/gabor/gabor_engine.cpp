@@ -110,7 +110,6 @@ std::vector<size_t> concat(const std::vector<size_t>& a, const std::vector<size_
   return v;
 }
 
-
 }  // namespace
 
 GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const SynthesisContext& ctx)
