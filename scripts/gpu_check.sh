@@ -7,7 +7,7 @@
 #      the CPU kernel, on the CPU and on CUDA; --device and run.json; a CUDA synthesis twice);
 #   3. checks that the same config and seed give the same bits twice on the device;
 #   4. benches `lines` on the device (ppsynth bench: per phase, per iteration) in float32, TF32,
-#      and float32 with cuDNN autotuning (runtime.deterministic=false);
+#      float32 with cuDNN autotuning (runtime.deterministic=false) and a bfloat16 network;
 #   5. runs `lines` at its default settings: seed 95 alone (the whole run's time), then seeds
 #      96-99 side by side while the time budget lasts (quality over seeds);
 #   6. prints a summary against the targets: <= 25 ms per iteration, <= 30 s per run, PCF MSE,
@@ -81,12 +81,14 @@ fi
 # --- 4. bench ------------------------------------------------------------------------------
 bench_sizes=()
 [ "$device" = cpu ] && bench_sizes=(--set method.grid.res=24 --set method.feature_net.channels=8)
-# float32 (the default: IEEE float32, cuDNN's deterministic algorithms), TF32, and float32
-# with cuDNN autotuning (runtime.deterministic=false: faster algorithms, bits may vary).
-for variant in float32 tf32 float32_autotune; do
+# float32 (the default: IEEE float32, cuDNN's deterministic algorithms), TF32, float32 with
+# cuDNN autotuning (runtime.deterministic=false: faster algorithms, bits may vary), and the
+# network in bfloat16 (what "auto" picks on a CPU with bf16 units; measured here for the GPU).
+for variant in float32 tf32 float32_autotune bfloat16; do
   settings=(--set runtime.tf32=false --set runtime.deterministic=true)
   [ "$variant" = tf32 ] && settings=(--set runtime.tf32=true --set runtime.deterministic=true)
   [ "$variant" = float32_autotune ] && settings=(--set runtime.tf32=false --set runtime.deterministic=false)
+  [ "$variant" = bfloat16 ] && settings+=(--set method.feature_net.precision=bfloat16)
   ppsynth bench "$lines" --device "$device" --reps "$reps" --skip-setup "${settings[@]}" "${bench_sizes[@]}" \
     --json "$work/bench_$variant.json" > "$work/bench_$variant.txt" 2>&1 || { cat "$work/bench_$variant.txt"; fail "bench ($variant)"; }
   say "bench, $variant:"
@@ -137,7 +139,7 @@ for r in runs:
           f"{r['iterations']} iterations, {r['ms_per_iteration']:.1f} ms/iteration; PCF MSE {r['pcf_mse']:.4f}, "
           f"Wasserstein {r['wasserstein']:.3f}, Chamfer {r['chamfer']:.3f}; {r['runtime']}")
 benches = {}
-for variant in ("float32", "tf32", "float32_autotune"):
+for variant in ("float32", "tf32", "float32_autotune", "bfloat16"):
     try:
         b = benches[variant] = json.load(open(os.path.join(work, f"bench_{variant}.json")))
         print(f"bench {variant} on {b['device']}: iteration {1e3 * b['iteration_median_s']:.1f} ms (forward + backward), "

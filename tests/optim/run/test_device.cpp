@@ -38,15 +38,17 @@ bool cuda_here() {
   return false;
 }
 
-// A --quick synthesis of the small exemplar through the run library, on `device`.
-SynthesisResult quick_run(const std::string& device, const std::vector<std::string>& sets = {}) {
+// A --quick synthesis of `ex` (the small one-class exemplar by default) through the run
+// library, on `device`.
+SynthesisResult quick_run(const std::string& device, const std::vector<std::string>& sets = {},
+                          const PointSet& ex = test::small_exemplar(1, false)) {
   auto sets_all = sets;
   sets_all.push_back("runtime.device=" + device);
   sets_all.push_back("evaluate=false");
   const json spec = resolve_run_config(json::object(), sets_all);
   SynthesisOptions o;
   o.quick = true;
-  return synthesize(test::small_exemplar(1, false), spec, o);
+  return synthesize(ex, spec, o);
 }
 
 }  // namespace
@@ -126,4 +128,31 @@ TEST_CASE("On CUDA, one evaluation's loss and gradient equal the CPU's within fl
   }
   CHECK(loss[1] == Approx(loss[0]).epsilon(1e-4));
   CHECK((grad[1] - grad[0]).abs().max().item<double>() < 1e-3 * grad[0].abs().max().item<double>());
+}
+
+// The terms beside the paper's that work window by window (tests/optim/gabor/test_windows.cpp
+// checks what they do) build tensors of their own: thresholds, plane distances, a class's
+// frozen context points. Each must live on the run's device, in the network's precision.
+TEST_CASE("A two-class rectangle output with separation and class_own runs on each device and precision, the same bits twice",
+          "[optim][device][cuda]") {
+  const PointSet ex = test::small_exemplar(2, false, 25);
+  std::vector<std::string> devices = {"cpu"};
+  if (torch::cuda::is_available()) devices.push_back("cuda");
+  for (const std::string& device : devices) {
+    for (const std::string precision : {"float32", "bfloat16"}) {
+      if (device == "cpu" && precision == "bfloat16" && cpu_isa().bf16_unavailable) continue;  // refused there
+      INFO(device << ", " << precision);
+      const std::vector<std::string> sets = {"output.size=[2,1]", "method.terms.separation.weight=1",
+                                             "method.map_terms.class_own.weight=1", "method.feature_net.precision=" + precision};
+      const auto a = quick_run(device, sets, ex), b = quick_run(device, sets, ex);
+      CHECK(a.stats.at("runtime").at("device") == (device == "cuda" ? "cuda:0" : "cpu"));
+      CHECK(a.stats.at("runtime").at("precision") == precision);
+      CHECK(a.stats.at("windows").at("nx").get<int>() >= 2);
+      CHECK(a.stats.at("terms").at("separation").get<double>() == 1.0);
+      CHECK(a.stats.at("map_terms").at("class_own").get<double>() == 1.0);
+      CHECK(a.output.size() > ex.size());
+      CHECK(test::same_bits(a.output, b.output));
+    }
+  }
+  if (devices.size() == 1) cuda_here();  // says the CUDA half was skipped
 }
