@@ -41,7 +41,7 @@ CropPlan plan_crops(const PointSet& exemplar, const PointSet& output, int count,
       << exemplar.domain().width() << " x " << exemplar.domain().height() << " at zoom " << p.zoom
       << (zoom > 0 ? ", as given" : ", from the densities") << ": " << exemplar.size() << " exemplar points, " << output.size()
       << " output points) but the output domain is " << d.width() << " x " << d.height()
-      << ": the output is smaller than the exemplar; evaluate it with --protocol quadrants";
+      << ": the output is smaller than the exemplar";
     throw InputError(s.str());
   }
   p.width = std::min(p.width, d.width());

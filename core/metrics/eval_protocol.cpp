@@ -16,6 +16,9 @@ namespace {
 // leaves room for outputs whose counts are the density's expectation.
 constexpr double kQuadrantMinRatio = 3, kQuadrantMaxRatio = 5;
 constexpr double kSquareTolerance = 1e-9;
+// How far a requested quadrant's aspect ratio may be from the exemplar's: mapped onto the unit
+// square, 1 % moves a feature at radius r by at most 0.01 r, within one of the PCF's 100 bins.
+constexpr double kQuadrantShapeTolerance = 0.01;
 
 std::string fmt(double v) {
   char buf[32];
@@ -23,13 +26,36 @@ std::string fmt(double v) {
   return buf;
 }
 
+bool square(const Domain& d) {
+  return std::abs(d.width() - d.height()) <= kSquareTolerance * std::max(d.width(), d.height());
+}
+
+// Whether a quadrant of the output has the exemplar's shape: their aspect ratios within
+// kQuadrantShapeTolerance of each other.
+bool quadrant_shape_fits(const PointSet& exemplar, const PointSet& output) {
+  const Domain &e = exemplar.domain(), &o = output.domain();
+  const double stretch = (o.width() / o.height()) / (e.width() / e.height());
+  return std::isfinite(stretch) && std::abs(std::log(stretch)) <= std::log1p(kQuadrantShapeTolerance);
+}
+
+// "each of its quadrants is 2 x 0.5, the exemplar 1 x 1"
+std::string quadrant_shapes(const PointSet& exemplar, const PointSet& output) {
+  const Domain &e = exemplar.domain(), &o = output.domain();
+  return "each of its quadrants is " + fmt(0.5 * o.width()) + " x " + fmt(0.5 * o.height()) + ", the exemplar " +
+         fmt(e.width()) + " x " + fmt(e.height());
+}
+
 // Whether auto picks quadrants, and why (or why not) in words.
 bool quadrants_fit(const PointSet& exemplar, const PointSet& output, std::string& why) {
   const Domain& d = output.domain();
   const double ratio = static_cast<double>(output.size()) / static_cast<double>(exemplar.size());
-  const bool square = std::abs(d.width() - d.height()) <= kSquareTolerance * std::max(d.width(), d.height());
-  if (!square) {
+  if (!square(d)) {
     why = "auto: the output domain is " + fmt(d.width()) + " x " + fmt(d.height()) + ", not square";
+    return false;
+  }
+  if (!square(exemplar.domain())) {
+    why = "auto: the exemplar's domain is " + fmt(exemplar.domain().width()) + " x " + fmt(exemplar.domain().height()) +
+          ", not square like the output's quadrants";
     return false;
   }
   if (ratio < kQuadrantMinRatio || ratio > kQuadrantMaxRatio) {
@@ -71,12 +97,32 @@ ProtocolPlan plan_protocol(const PointSet& exemplar, const PointSet& output, Pat
     p.reason = "requested";
   }
   if (p.used == PatchProtocol::Quadrants) {
+    if (!quadrant_shape_fits(exemplar, output)) {
+      std::string crops_fit = "--protocol crops compares exemplar-sized crops instead";
+      try {
+        plan_crops(exemplar, output, 1, seed, zoom);
+      } catch (const InputError&) {
+        crops_fit = "exemplar-sized crops do not fit it either (it is smaller than the exemplar at its density)";
+      }
+      throw InputError("--protocol quadrants: " + quadrant_shapes(exemplar, output) +
+                       ": mapped onto the unit square, the two would be compared stretched. Quadrants need an output of the "
+                       "exemplar's shape; " + crops_fit);
+    }
     p.windows = quadrant_windows(output.domain());
     p.patch_width = 0.5 * output.domain().width();
     p.patch_height = 0.5 * output.domain().height();
     return p;
   }
-  CropPlan c = plan_crops(exemplar, output, crops, seed, zoom);
+  CropPlan c;
+  try {
+    c = plan_crops(exemplar, output, crops, seed, zoom);
+  } catch (const InputError& e) {  // what else fits, if anything
+    if (quadrant_shape_fits(exemplar, output))
+      throw InputError(std::string(e.what()) + "; --protocol quadrants compares its 4 quadrants (they have the exemplar's shape)");
+    throw InputError(std::string(e.what()) + "; quadrants do not fit it either (" + quadrant_shapes(exemplar, output) +
+                     "): evaluate an output at least as large as the exemplar" +
+                     (zoom > 0 ? std::string() : ", or give the zoom it was made at (eval --zoom)"));
+  }
   p.windows = std::move(c.windows);
   p.patch_width = c.width;
   p.patch_height = c.height;

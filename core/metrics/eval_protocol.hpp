@@ -1,12 +1,18 @@
 #pragma once
 // Which patches evaluate() compares with the exemplar (patches.hpp):
 //   quadrants : the paper's 4 quadrants of the output (quadrant.hpp); fits a square output
-//               holding about 4 times the exemplar's points (the paper's u = 2)
+//               holding about 4 times the exemplar's points (the paper's u = 2). Each patch
+//               and the exemplar are mapped onto the unit square, so a quadrant must have the
+//               exemplar's shape: asked for on an output whose quadrants' aspect ratio is more
+//               than 1 % from the exemplar's (a 4 x 1 strip against a square), it is refused
+//               (InputError saying what fits) instead of comparing squashed patches.
 //   crops     : N random exemplar-sized crops (crops.hpp); fits any output at least as large
 //               as the exemplar at its density (rectangles in exemplar units, 10,000 points)
-//   auto      : quadrants when the output domain is square (sides equal to 1e-9) and holds 3
-//               to 5 times the exemplar's points, else crops, so every u = 2 result of the
-//               paper's protocol stays what it was.
+//   auto      : quadrants when the output domain and the exemplar's are square (sides equal
+//               to 1e-9) and the output holds 3 to 5 times the exemplar's points, else crops,
+//               so every u = 2 result of the paper's protocol stays what it was.
+// When crops do not fit, the error says whether quadrants would (the output has the
+// exemplar's shape) or that neither does.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -38,7 +44,7 @@ struct ProtocolPlan {
 };
 
 // Resolves `requested` for this pair and places the windows. InputError when crops do not
-// fit the output (crops.hpp).
+// fit the output (crops.hpp), or quadrants were asked for and do not have the exemplar's shape.
 // `zoom` > 0: the output's scale as its run made it (crops.hpp); 0: from the densities.
 ProtocolPlan plan_protocol(const PointSet& exemplar, const PointSet& output, PatchProtocol requested,
                            int crops = kDefaultCrops, uint64_t seed = kDefaultCropSeed, double zoom = 0);

@@ -148,10 +148,13 @@ TEST_CASE("auto: quadrants for a u = 2 square, crops for a rectangle or another 
   CHECK(t.find("pcf_mse over the 20 crops") != std::string::npos);
   // A square with 16 x the exemplar's points (exemplar units): crops too.
   CHECK(evaluate(ex, jittered_output(4, 4, 5), no_curves())["protocol"]["name"] == "crops");
-  // Asked for, quadrants run on the strip (the protocol says it was requested).
-  const auto forced = evaluate(ex, jittered_output(4, 1, 4), no_curves(PatchProtocol::Quadrants));
+  // Asked for, quadrants run on an output of the exemplar's shape (the protocol says it was
+  // requested), and are refused on the strip, whose quadrants would be compared squashed.
+  const auto forced = evaluate(ex, jittered_output(4, 4, 4), no_curves(PatchProtocol::Quadrants));
   CHECK(forced["protocol"]["name"] == "quadrants");
   CHECK(forced["protocol"]["reason"] == "requested");
+  CHECK_THROWS_WITH(evaluate(ex, jittered_output(4, 1, 4), no_curves(PatchProtocol::Quadrants)),
+                    Catch::Contains("2 x 0.5") && Catch::Contains("--protocol crops"));
   // Per class and cross-class rows carry their crops too.
   PointSet ex2 = ex, out2 = jittered_output(4, 1, 6);
   for (size_t i = 0; i < ex2.size(); i += 2) ex2.set_cls(i, 1);
