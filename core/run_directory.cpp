@@ -172,6 +172,13 @@ RunDirectory RunDirectory::open(const std::string& path_in, const RunDirOptions&
   std::error_code ec;
   const auto st = fs::symlink_status(path, ec);
   bool created = false;
+  if (o.resume && st.type() != fs::file_type::directory) {  // a resume creates nothing
+    const std::string is = st.type() == fs::file_type::not_found ? "no such directory"
+                           : st.type() == fs::file_type::symlink ? "not a " + o.kind + " directory (a symbolic link)"
+                                                                 : "not a " + o.kind + " directory (a file)";
+    throw InputError(what + ": " + is + "; --resume needs the directory of an unfinished " + o.kind +
+                     " of ppsynth. Nothing was changed.");
+  }
   if (st.type() == fs::file_type::not_found) {
     const fs::path parent = fs::path(path).parent_path();
     if (!parent.empty()) {

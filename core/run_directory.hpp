@@ -21,6 +21,7 @@
 //   anything else (a file, a directory
 //   with other files, ".", a parent of
 //   the current directory)              -> refused; --force does not change that
+// With --resume, anything but an unfinished run's directory is refused, and nothing is created.
 // Paths are normalized first: "runs/a/" and "runs/./a" are "runs/a".
 #include <string>
 

@@ -38,7 +38,7 @@ evaluate() {  # file -> "all c0 c1 ..." pcf_mse values
 for s in $(seq 1 "$n"); do
   { printf '# ppsynth points\n# domain 0 0 1 1\n# x y class\n'
     while read -r cls cnt; do
-      "$bin" generate -q best_candidate -n $((cnt * u * u)) --seed $((s * 1000 + cls)) -o "$tmp/c.txt" > /dev/null 2>&1
+      "$bin" generate -q best_candidate -n $((cnt * u * u)) --seed $((s * 1000 + cls)) --force -o "$tmp/c.txt" > /dev/null 2>&1
       awk -v k="$cls" '!/^#/ {print $1, $2, k}' "$tmp/c.txt"
     done < "$tmp/counts"; } > "$tmp/init.txt"
   echo "init $(evaluate "$tmp/init.txt")" >> "$tmp/rows"

@@ -11,9 +11,9 @@ mkdir -p "$out"
 configs=("$root"/configs/pptbf/fig2_mixture*.json)
 for c in "${configs[@]}"; do
   name="$(basename "$c" .json)"
-  "$bin" pptbf "$c" --res "$res" -o "$out/${name}_correl0.png"
-  "$bin" pptbf "$c" --res "$res" --set winfeatcorrel=1 -o "$out/${name}_correl1.png"
+  "$bin" pptbf "$c" --res "$res" -o "$out/${name}_correl0.png" --force
+  "$bin" pptbf "$c" --res "$res" --set winfeatcorrel=1 -o "$out/${name}_correl1.png" --force
 done
-"$bin" pptbf "${configs[@]}" --grid --res 256 -o "$out/fig2_row1_correl0.png"
-"$bin" pptbf "${configs[@]}" --grid --res 256 --set winfeatcorrel=1 -o "$out/fig2_row2_correl1.png"
+"$bin" pptbf "${configs[@]}" --grid --res 256 -o "$out/fig2_row1_correl0.png" --force
+"$bin" pptbf "${configs[@]}" --grid --res 256 --set winfeatcorrel=1 -o "$out/fig2_row2_correl1.png" --force
 echo "wrote $out"

@@ -14,5 +14,5 @@ force=()
 [ -e "$run/.ppsynth-run" ] && force=(--force)
 "$bin" synthesize "$here/configs/runs/lines.json" --preset fast -o "$run" "${force[@]}"
 "$bin" plot "$run/exemplar.txt" --title exemplar --compare "$run/output.txt" --size 320 \
-  -o "$here/docs/images/readme_lines.png"
+  -o "$here/docs/images/readme_lines.png" --force
 echo "wrote $here/docs/images/readme_lines.png from $run"

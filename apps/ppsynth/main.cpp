@@ -11,6 +11,7 @@
 #include <iostream>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "apps/ppsynth/command.hpp"
 #include "core/error.hpp"
@@ -19,8 +20,6 @@
 #include "core/revision.hpp"
 #ifdef PPSYNTH_WITH_TORCH
 #include <c10/util/Exception.h>
-
-#include "optim/run/runtime.hpp"
 #endif
 
 namespace ppsynth::app {
@@ -50,6 +49,28 @@ std::string named_command(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (argv[i][0] != '-') return argv[i];
   return "";
+}
+
+// A command made of subcommands (`sweep plan|run|status|task`) and the word after it that is
+// not a flag, when that word names none of them: CLI11 would say "A subcommand is required".
+// Returns the message, or "" when the line is fine (or asks for --help).
+std::string unknown_subcommand(int argc, char** argv, const std::string& command, CLI::App& sub) {
+  const std::vector<CLI::App*> subs = sub.get_subcommands([](CLI::App*) { return true; });
+  if (subs.empty()) return "";
+  std::string names;
+  for (const CLI::App* s : subs) names += (names.empty() ? "" : ", ") + s->get_name();
+  int i = 1;
+  while (i < argc && argv[i] != command) ++i;
+  for (++i; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word == "-h" || word == "--help") return "";
+    if (word.empty() || word[0] != '-') {
+      for (const CLI::App* s : subs)
+        if (s->get_name() == word) return "";
+      return "'" + word + "' is not a " + command + " subcommand; they are " + names;
+    }
+  }
+  return "name a subcommand: " + names;
 }
 
 }  // namespace
@@ -82,6 +103,12 @@ int main(int argc, char** argv) {
     std::cerr << "ppsynth: unknown command '" << named << "'; the commands are " << known << " (ppsynth --help)\n";
     return 2;
   }
+  if (const std::string named = named_command(argc, argv); !named.empty()) {
+    if (const std::string why = unknown_subcommand(argc, argv, named, *subs[named]); !why.empty()) {
+      std::cerr << "ppsynth " << named << ": " << why << " (ppsynth " << named << " --help)\n";
+      return 2;
+    }
+  }
   try {
     cli.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version
@@ -96,9 +123,8 @@ int main(int argc, char** argv) {
   for (auto& [name, sub] : subs) {
     if (!sub->parsed()) continue;
     try {
-#ifdef PPSYNTH_WITH_TORCH
-      configure_runtime();  // threads (PPSYNTH_THREADS) and allocator: optim/run/runtime.hpp
-#endif
+      // A command that synthesizes configures LibTorch itself (optim/run/runtime.hpp), so that
+      // a variable only a synthesis reads (PPSYNTH_THREADS, PPSYNTH_GABOR_MAPS) stops no other.
       return runs[name]();
     } catch (const InputError& e) {
       std::cerr << "ppsynth " << name << ": " << e.what() << "\n";

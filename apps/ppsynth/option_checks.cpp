@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "core/error.hpp"
 #include "core/run_json.hpp"
 
 namespace ppsynth::app {
@@ -35,5 +36,33 @@ CLI::Validator positive_number() {
 }
 
 CLI::Validator seed_number() { return whole_number(0, kMaxSeed); }
+
+CLI::Validator path_text() {
+  // No description: the help's type column stays "TEXT".
+  return CLI::Validator([](std::string& text) -> std::string { return text.empty() ? "expected a path, got ''" : ""; },
+                        "");
+}
+
+namespace {
+
+// `a` is `b` or a key path above or below it ("output" and "output.size").
+bool overlaps(const std::string& a, const std::string& b) {
+  const std::string& shorter = a.size() <= b.size() ? a : b;
+  const std::string& longer = a.size() <= b.size() ? b : a;
+  return longer.compare(0, shorter.size(), shorter) == 0 && (longer.size() == shorter.size() || longer[shorter.size()] == '.');
+}
+
+}  // namespace
+
+void refuse_set_conflicts(const std::vector<std::string>& sets,
+                          const std::vector<std::pair<std::string, std::string>>& flags) {
+  for (const std::string& set : sets) {
+    const std::string key = set.substr(0, set.find('='));
+    for (const auto& [flag, flag_key] : flags)
+      if (overlaps(key, flag_key))
+        throw InputError(flag + " and --set " + set + " both set the config key '" + flag_key +
+                         "'; give one of them");
+  }
+}
 
 }  // namespace ppsynth::app

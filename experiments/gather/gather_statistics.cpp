@@ -136,8 +136,13 @@ void summarize_groups(GatherResult& r) {
     if (const auto file = reference_file.find(exemplar_of[g]); file != reference_file.end()) {
       const auto first = std::find_if(r.runs.begin(), r.runs.end(), [&](const GatheredRun& x) { return x.group == g; });
       const PointSet exemplar = load_run(first->dir).exemplar;
-      for (const auto& [k, v] : metric_values(evaluate(exemplar, read_points(file->second), evaluation_options(options)), file->second))
-        ref[k] = v;
+      try {
+        for (const auto& [k, v] : metric_values(evaluate(exemplar, read_points(file->second), evaluation_options(options)), file->second))
+          ref[k] = v;
+      } catch (const InputError& e) {  // an evaluation's error ("crops: ...") names no file
+        const std::string what = e.what();
+        throw InputError(what.rfind(file->second, 0) == 0 ? what : "--reference " + file->second + ": " + what);
+      }
     }
     for (auto& s : by_group[g]) {
       const Summary sum = summarize(s.values);

@@ -7,12 +7,16 @@
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
+#ifdef __linux__
+#include <sched.h>
+#endif
 
 #include <ATen/Context.h>
 #include <torch/cuda.h>
 #include <torch/torch.h>
 
 #include "core/error.hpp"
+#include "core/log.hpp"
 #include "models/gabor_feature_maps.hpp"
 
 namespace ppsynth {
@@ -110,13 +114,36 @@ DeviceSettings apply_device_settings(const nlohmann::json& runtime) {
   return s;
 }
 
+int usable_cores() {
+#ifdef __linux__
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0) return CPU_COUNT(&set);
+#endif
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+void check_runtime_environment() {
+  threads_from_environment();
+  gabor_maps_tensor_ops_forced();
+}
+
 RuntimeSettings configure_runtime() {
+  check_runtime_environment();  // every variable checked before any is applied
   RuntimeSettings s;
+  const int cores = usable_cores();
   s.threads = threads_from_environment();
-  if (s.threads == 0) s.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  // Warned, not refused: a user may mean to oversubscribe (a SLURM job or container whose
+  // affinity mask is narrower than what it may use, a measurement of the effect), and no bound
+  // fits every machine; what must not happen is a slowdown nobody is told about.
+  if (s.threads > cores)
+    spdlog::warn("PPSYNTH_THREADS={} is more than the {} core{} this process may run on: the threads take turns on "
+                 "them and a synthesis can run many times slower; set PPSYNTH_THREADS={} or fewer unless you mean to "
+                 "oversubscribe",
+                 s.threads, cores, cores == 1 ? "" : "s", cores);
+  if (s.threads == 0) s.threads = cores;
   torch::set_num_threads(s.threads);
   s.keeps_freed_memory = keep_freed_memory();
-  gabor_maps_tensor_ops_forced();
   return s;
 }
 

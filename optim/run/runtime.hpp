@@ -1,8 +1,12 @@
 #pragma once
 // Process-wide tuning a synthesis wants, as one call every front end makes before its first
 // synthesis (the command in main(), a Python module on the first synthesize(), a test):
-//   threads    Debian's LibTorch starts with one intra-op thread; use every core, or
-//              PPSYNTH_THREADS (1..1024). Results depend on it in the last bits (reductions are
+//   threads    Debian's LibTorch starts with one intra-op thread; use every core this
+//              process may run on (its CPU affinity: what taskset, a cpuset or SLURM's binding
+//              leaves it), or PPSYNTH_THREADS (1..1024). More threads than those cores is
+//              allowed (a user may mean to oversubscribe) but warned about, naming the variable,
+//              the value and the core count: the threads then take turns, and a synthesis runs
+//              many times slower. Results depend on the count in the last bits (reductions are
 //              split across threads), so run.json and checkpoints record it.
 //   allocator  glibc returns freed activation buffers to the kernel and maps large blocks
 //              afresh, so every iteration page-faults them in again; ppsynth keeps freed memory
@@ -33,10 +37,16 @@ struct RuntimeSettings {
 };
 
 // Reads PPSYNTH_THREADS, PPSYNTH_MALLOC and PPSYNTH_GABOR_MAPS (InputError naming the variable
-// when malformed, before a command writes anything),
-// applies them and returns what was applied. Calling it again re-reads the thread count; the
-// allocator is set once per process.
+// when malformed), applies them and returns what was applied. Calling it again re-reads the
+// thread count; the allocator is set once per process. Only what synthesizes calls it (the
+// commands that do, before they write anything; Python's first synthesize()): a command that
+// does not synthesize never reads these variables, so a bad value does not stop it.
 RuntimeSettings configure_runtime();
+// The checks of configure_runtime without applying anything, for a process whose children
+// synthesize (`sweep run --local`): a bad value fails once there, not in every task.
+void check_runtime_environment();
+// The cores this process may run on: its CPU affinity, else every online core.
+int usable_cores();
 
 struct DeviceSettings {
   std::string device = "cpu";  // "cpu" or "cuda:N"

@@ -136,10 +136,12 @@ TEST_CASE("outputs never replace a device, FIFO or symbolic link", "[apps][safet
                              (d / "from_fifo.txt").string() + "; wait; true");
   CHECK(fs::is_fifo(fifo));
   CHECK_THAT(ppsynth::read_file_text((d / "from_fifo.txt").string()), Catch::Contains("0.5"));
-  // A symbolic link stays a link; the file it points to gets the new content.
+  // A symbolic link stays a link; the file it points to gets the new content (with --force:
+  // the file exists).
   write(d / "target.txt", "old\n");
   fs::create_symlink(d / "target.txt", d / "link.txt");
-  CHECK(run_ppsynth("convert " + (d / "pts.txt").string() + " " + (d / "link.txt").string()).status == 0);
+  CHECK(run_ppsynth("convert " + (d / "pts.txt").string() + " " + (d / "link.txt").string()).status == 2);
+  CHECK(run_ppsynth("convert " + (d / "pts.txt").string() + " " + (d / "link.txt").string() + " --force").status == 0);
   CHECK(fs::is_symlink(d / "link.txt"));
   CHECK_THAT(ppsynth::read_file_text((d / "target.txt").string()), Catch::Contains("0.5"));
   // A directory is refused.

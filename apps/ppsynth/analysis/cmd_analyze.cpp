@@ -6,6 +6,8 @@
 //   local_pcfs.png   local PCFs (Eq. 4.1) at the query grid positions, whole-pattern PCF dashed
 //   dictionary.png   PCA mean and first components; basis PCFs (Eq. 4.2)
 //   analysis.json    every number behind the plots
+// An existing file of these names is replaced only with --force, the input never
+// (apps/ppsynth/output_files.hpp); other files in OUTDIR are left alone.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +16,8 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/ppsynth/command.hpp"
+#include "apps/ppsynth/option_checks.hpp"
+#include "apps/ppsynth/output_files.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
@@ -36,8 +40,11 @@ struct AnalyzeArgs {
   int queries = 4;              // local PCFs on a queries x queries grid
   double sigma_rmax = 3.0;      // intensity kernel width, units of r_max
   double neighborhood = 0;     // expected points per local window (0 = auto)
-  bool periodic = false;
+  bool periodic = false, force = false;
 };
+
+// What analyze writes into OUTDIR.
+const char* const kOutputFiles[] = {"points.png", "intensity.png", "local_pcfs.png", "dictionary.png", "analysis.json"};
 
 GrayImage to_image(const std::vector<double>& v, int w, int h, const std::string& title) {
   GrayImage img;
@@ -54,6 +61,9 @@ int run(const AnalyzeArgs& a) {
   if (a.map_size < 2 || a.map_size > 2048) throw InputError("--map-size must be in 2..2048");
   if (a.queries < 1 || a.queries > 16) throw InputError("--queries must be in 1..16");
   if (!(a.sigma_rmax > 0)) throw InputError("--sigma-rmax must be > 0");
+  std::vector<app::NamedPath> outputs;
+  for (const char* name : kOutputFiles) outputs.push_back({"-o", (std::filesystem::path(a.outdir) / name).string()});
+  app::check_output_files(outputs, {{"file", a.input}}, a.force);
   ReadOptions ro;
   ro.format = parse_format(a.format);
   PointSet ps = read_points(a.input, ro);
@@ -157,8 +167,9 @@ int run(const AnalyzeArgs& a) {
 
 ppsynth::app::RunFn setup(CLI::App& app) {
   auto a = std::make_shared<AnalyzeArgs>();
-  app.add_option("file", a->input, "point pattern file")->required();
-  app.add_option("-o,--out", a->outdir, "output folder")->required();
+  app.add_option("file", a->input, "point pattern file")->required()->check(ppsynth::app::path_text());
+  app.add_option("-o,--out", a->outdir, "output folder")->required()->check(ppsynth::app::path_text());
+  app.add_flag("--force", a->force, "replace the files of an earlier analysis in the folder");
   app.add_option("--format", a->format, "input format: auto (detect), gabor, point-synthesis, plain, json")
       ->capture_default_str();
   app.add_option("--map-size", a->map_size, "intensity map resolution (pixels per side)");

@@ -13,6 +13,8 @@
 #include <iostream>
 
 #include "apps/ppsynth/command.hpp"
+#include "apps/ppsynth/option_checks.hpp"
+#include "apps/ppsynth/output_files.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
@@ -25,7 +27,7 @@ struct Args {
   std::string exemplar, output, out_file, format = "auto", protocol = "auto";
   int crops = ppsynth::kDefaultCrops;
   uint64_t crop_seed = ppsynth::kDefaultCropSeed;
-  bool json = false, no_curves = false, spectrum = false, periodic = false, no_verdict = false, no_second_order = false;
+  bool json = false, force = false, no_curves = false, spectrum = false, periodic = false, no_verdict = false, no_second_order = false;
   ppsynth::VerdictOptions verdict;
   int bins = 100;
   double r_max = 0, zoom = 0;
@@ -34,12 +36,16 @@ struct Args {
 
 ppsynth::app::RunFn setup(CLI::App& app) {
   auto a = std::make_shared<Args>();
-  app.add_option("--exemplar", a->exemplar, "exemplar point file (\"shared:...\" allowed)")->required();
-  app.add_option("--output", a->output, "synthesized point file to evaluate")->required();
+  app.add_option("--exemplar", a->exemplar, "exemplar point file (\"shared:...\" allowed)")
+      ->required()
+      ->check(ppsynth::app::path_text());
+  app.add_option("--output", a->output, "synthesized point file to evaluate")->required()->check(ppsynth::app::path_text());
   app.add_option("--format", a->format, "input format of both files: auto (detect), gabor, point-synthesis, plain, json")
       ->capture_default_str();
   app.add_flag("--json", a->json, "print the full result as JSON instead of a table");
-  app.add_option("--out", a->out_file, "also write the JSON result to this file (atomically)");
+  app.add_option("--out", a->out_file, "also write the JSON result to this file (atomically; never over an input)")
+      ->check(ppsynth::app::path_text());
+  app.add_flag("--force", a->force, "replace an existing --out file");
   app.add_flag("--no-curves", a->no_curves, "leave the PCF curves out of the JSON");
   app.add_flag("--spectrum", a->spectrum, "add radially averaged power spectra");
   app.add_flag("--periodic-pcf", a->periodic, "PCF on the torus (default: rectangle, edge-corrected)");
@@ -53,7 +59,9 @@ ppsynth::app::RunFn setup(CLI::App& app) {
                  "points, else crops), quadrants (the paper's), crops (random exemplar-sized crops)")
       ->capture_default_str();
   app.add_option("--crops", a->crops, "crops protocol: number of crops, 1..10000")->capture_default_str();
-  app.add_option("--crop-seed", a->crop_seed, "crops protocol: seed of the crop positions")->capture_default_str();
+  app.add_option("--crop-seed", a->crop_seed, "crops protocol: seed of the crop positions, 0 to 2^63 - 1")
+      ->capture_default_str()
+      ->check(ppsynth::app::seed_number());
   app.add_option("--zoom", a->zoom,
                  "crops protocol: output units per exemplar unit (0.5 for the paper's u = 2 square, 1 for a rectangle in "
                  "exemplar units; default 0: from the two densities, which rescales an output made at another density)")
@@ -67,7 +75,9 @@ ppsynth::app::RunFn setup(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--verdict-permutations", a->verdict.permutations, "verdict: random reassignments, 19..1000000")
       ->capture_default_str();
-  app.add_option("--verdict-seed", a->verdict.seed, "verdict: seed of the reassignments")->capture_default_str();
+  app.add_option("--verdict-seed", a->verdict.seed, "verdict: seed of the reassignments, 0 to 2^63 - 1")
+      ->capture_default_str()
+      ->check(ppsynth::app::seed_number());
   app.add_option("--verdict-alpha", a->verdict.alpha, "verdict: a row passes when p >= alpha")->capture_default_str();
   return [a]() {
     ppsynth::EvalOptions opt;
@@ -85,6 +95,8 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     opt.verdict = !a->no_verdict;
     opt.verdict_options = a->verdict;
     ppsynth::check_eval_options(opt);  // before reading: a bad option is reported first
+    ppsynth::app::check_output_files({{"--out", a->out_file}}, {{"--exemplar", a->exemplar}, {"--output", a->output}},
+                                     a->force);
     ppsynth::ReadOptions ro;
     ro.format = ppsynth::parse_format(a->format);
     ppsynth::PointSet ex = ppsynth::read_points(a->exemplar, ro);

@@ -2,11 +2,14 @@
 // of the output: PNG, SVG or PDF). With --compare OTHER ...: the files side by side, each
 // titled with its file name (e.g. exemplar | output), sharing one class legend.
 // Classes use the fixed Tableau-10 palette; disks (a "radius" attribute) are drawn at their
-// true radius unless --no-disks.
+// true radius unless --no-disks. An existing image is replaced only with --force, an input
+// never (apps/ppsynth/output_files.hpp).
 #include <filesystem>
 #include <memory>
 
 #include "apps/ppsynth/command.hpp"
+#include "apps/ppsynth/option_checks.hpp"
+#include "apps/ppsynth/output_files.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/log.hpp"
@@ -19,7 +22,7 @@ using namespace ppsynth;
 struct PlotArgs {
   std::string input, output, format, size_attr, color_attr, title;
   std::vector<std::string> compare;
-  bool no_disks = false;
+  bool no_disks = false, force = false;
   int size_px = 0;  // 0 = 600 for one plot, 400 per panel, more for many points (readable_plot_px)
   int columns = 0;
 };
@@ -33,6 +36,9 @@ int run(const PlotArgs& a) {
   st.draw_disks = !a.no_disks;
   st.title = a.title;
   if (a.size_px != 0 && (a.size_px < 80 || a.size_px > 8000)) throw InputError("--size must be in 80..8000 px");
+  std::vector<app::NamedPath> inputs{{"file", a.input}};
+  for (const auto& f : a.compare) inputs.push_back({"--compare", f});
+  app::check_output_files({{"-o", a.output}}, inputs, a.force);
   if (a.compare.empty()) {
     const PointSet ps = read_points(a.input, ro);
     plot_points(a.output, ps, st, a.size_px ? a.size_px : readable_plot_px({&ps}, 600));
@@ -52,8 +58,9 @@ int run(const PlotArgs& a) {
 
 ppsynth::app::RunFn setup(CLI::App& app) {
   auto a = std::make_shared<PlotArgs>();
-  app.add_option("file", a->input, "point file")->required();
-  app.add_option("-o,--output", a->output, "output image: .png, .svg or .pdf")->required();
+  app.add_option("file", a->input, "point file")->required()->check(ppsynth::app::path_text());
+  app.add_option("-o,--output", a->output, "output image: .png, .svg or .pdf")->required()->check(ppsynth::app::path_text());
+  app.add_flag("--force", a->force, "replace an existing image");
   app.add_option("--format", a->format, "input format (default: detect from the file)");
   app.add_option("--size-attr", a->size_attr, "attribute mapped to marker size");
   app.add_option("--color-attr", a->color_attr, "attribute mapped to a color ramp (instead of class colors)");

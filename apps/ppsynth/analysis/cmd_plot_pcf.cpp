@@ -2,12 +2,15 @@
 // exemplar (dashed) and a synthesized output (solid), core/metrics/pcf.hpp, radii in units
 // of each set's own r_max so an exemplar and its u^2-times larger output line up.
 // One class: one plot. K classes: a grid with the whole pattern and each class's auto-PCF
-// (classes matched by class id).
+// (classes matched by class id). An existing image is replaced only with --force, an input
+// never (apps/ppsynth/output_files.hpp).
 #include <algorithm>
 #include <filesystem>
 #include <memory>
 
 #include "apps/ppsynth/command.hpp"
+#include "apps/ppsynth/option_checks.hpp"
+#include "apps/ppsynth/output_files.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/log.hpp"
@@ -22,7 +25,7 @@ struct PlotPcfArgs {
   std::string exemplar, output, image, format, title;
   int bins = 100;
   double r_max_factor = 2.5, sigma_factor = 0.25;
-  bool periodic = false;
+  bool periodic = false, force = false;
 };
 
 CurvePlot pcf_plot(const std::string& title, const PointSet& ex, const PointSet& out, const PcfOptions& opt) {
@@ -41,6 +44,7 @@ int run(const PlotPcfArgs& a) {
   // Radii reach r_max_factor r_max (+ 4 sigma): large factors put every pair within reach.
   if (!(a.r_max_factor > 0) || a.r_max_factor > 100) throw InputError("--r-max-factor must be in (0, 100]");
   if (!(a.sigma_factor > 0) || a.sigma_factor > 10) throw InputError("--sigma-factor must be in (0, 10]");
+  app::check_output_files({{"-o", a.image}}, {{"--exemplar", a.exemplar}, {"--output", a.output}}, a.force);
   ReadOptions ro;
   if (!a.format.empty()) ro.format = parse_format(a.format);
   const PointSet ex = read_points(a.exemplar, ro), out = read_points(a.output, ro);
@@ -82,9 +86,10 @@ int run(const PlotPcfArgs& a) {
 
 ppsynth::app::RunFn setup(CLI::App& app) {
   auto a = std::make_shared<PlotPcfArgs>();
-  app.add_option("--exemplar", a->exemplar, "exemplar point file")->required();
-  app.add_option("--output", a->output, "synthesized point file")->required();
-  app.add_option("-o", a->image, "output image: .png, .svg or .pdf")->required();
+  app.add_option("--exemplar", a->exemplar, "exemplar point file")->required()->check(ppsynth::app::path_text());
+  app.add_option("--output", a->output, "synthesized point file")->required()->check(ppsynth::app::path_text());
+  app.add_option("-o", a->image, "output image: .png, .svg or .pdf")->required()->check(ppsynth::app::path_text());
+  app.add_flag("--force", a->force, "replace an existing image");
   app.add_option("--format", a->format, "input format of both files (default: detect)");
   app.add_option("--title", a->title, "plot title");
   app.add_option("--bins", a->bins, "number of radii (default 100)");

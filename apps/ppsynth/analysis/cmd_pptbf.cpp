@@ -4,6 +4,7 @@
 // --points writes a point exemplar: --mode process (the PPTBF's own feature points) or
 // --mode threshold (dart throwing where pptbf > threshold, threshold = --threshold or the
 // --quantile of the image, minimum distance --min-dist or 0.5 sqrt(accepted area / n)).
+// Existing files are replaced only with --force, a config never (apps/ppsynth/output_files.hpp).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,6 +12,8 @@
 #include <memory>
 
 #include "apps/ppsynth/command.hpp"
+#include "apps/ppsynth/option_checks.hpp"
+#include "apps/ppsynth/output_files.hpp"
 #include "core/config/config.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
@@ -29,7 +32,7 @@ struct PptbfArgs {
   std::string output, points, mode = "process";
   int res = 512, n = 1000, columns = 0;
   long long seed = 0;
-  bool has_seed = false, grid = false;
+  bool has_seed = false, grid = false, force = false;
   double threshold = NAN, quantile = 0.5, min_dist = -1;
   unsigned long long sample_seed = 1;
 };
@@ -53,6 +56,10 @@ int run(const PptbfArgs& a) {
   if (a.res < 8 || a.res > 8192) throw InputError("--res must be in 8..8192");
   if (a.configs.size() > 1 && !a.grid) throw InputError("several configs need --grid");
   if (!a.points.empty() && a.grid) throw InputError("--points works with one config, not --grid");
+  if (a.has_seed) app::refuse_set_conflicts(a.sets, {{"--seed " + std::to_string(a.seed), "seed"}});
+  std::vector<app::NamedPath> inputs;
+  for (const auto& c : a.configs) inputs.push_back({"config", c});
+  app::check_output_files({{"-o", a.output}, {"--points", a.points}}, inputs, a.force);
   const auto t0 = std::chrono::steady_clock::now();
   if (a.grid) {
     std::vector<GrayImage> images;
@@ -108,20 +115,27 @@ int run(const PptbfArgs& a) {
 
 ppsynth::app::RunFn setup(CLI::App& app) {
   auto a = std::make_shared<PptbfArgs>();
-  app.add_option("config", a->configs, "PPTBF config(s) (JSON, keys of PptbfParams)")->required()->expected(1, -1);
-  app.add_option("-o,--output", a->output, "output PNG (with --grid: .png/.svg/.pdf grid)")->required();
+  app.add_option("config", a->configs, "PPTBF config(s) (JSON, keys of PptbfParams)")
+      ->required()
+      ->expected(1, -1)
+      ->check(ppsynth::app::path_text());
+  app.add_option("-o,--output", a->output, "output PNG (with --grid: .png/.svg/.pdf grid)")
+      ->required()
+      ->check(ppsynth::app::path_text());
+  app.add_flag("--force", a->force, "replace existing output files");
   app.add_option("--res", a->res, "resolution in pixels (square)");
   auto* seed = app.add_option("--seed", a->seed, "override the config's seed");
   app.add_option("--set", a->sets, "override a config key, e.g. --set mixture=3")->expected(1, -1);
   app.add_flag("--grid", a->grid, "render every config into one grid image");
   app.add_option("--columns", a->columns, "grid columns (default min(5, count))");
-  app.add_option("--points", a->points, "also write a point exemplar to this file");
+  app.add_option("--points", a->points, "also write a point exemplar to this file")->check(ppsynth::app::path_text());
   app.add_option("--mode", a->mode, "point exemplar: process | threshold");
   app.add_option("-n", a->n, "threshold mode: number of points");
   app.add_option("--threshold", a->threshold, "threshold mode: accept where pptbf > this value");
   app.add_option("--quantile", a->quantile, "threshold mode: threshold = this quantile of the image (default 0.5)");
   app.add_option("--min-dist", a->min_dist, "threshold mode: minimum point distance (default 0.5 sqrt(area/n))");
-  app.add_option("--sample-seed", a->sample_seed, "threshold mode: dart-throwing seed");
+  app.add_option("--sample-seed", a->sample_seed, "threshold mode: dart-throwing seed, 0 to 2^63 - 1")
+      ->check(ppsynth::app::seed_number());
   return [a, seed]() {
     a->has_seed = seed->count() > 0;
     return run(*a);

@@ -397,6 +397,7 @@ app::RunFn setup(CLI::App& app) {
   app.add_option("--json", o->json_out, "also write the figures as JSON");
   app.add_flag("--skip-setup", o->skip_setup, "do not time the set-up of every sigma");
   return [o]() {
+    configure_runtime();  // threads, allocator, the Gabor maps' path, as a synthesis has them
     Subject b = make_subject(*o);
     std::mt19937_64 rng(b.r["seed"].get<uint64_t>());
     const SetupTimes setup = time_setup(b, o->skip_setup);

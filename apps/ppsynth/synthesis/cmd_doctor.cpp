@@ -8,6 +8,7 @@
 #include "apps/ppsynth/command.hpp"
 #include "core/atomic_file.hpp"
 #include "optim/run/machine_report.hpp"
+#include "optim/run/runtime.hpp"
 
 namespace {
 
@@ -24,6 +25,7 @@ app::RunFn setup(CLI::App& app) {
   app.add_option("--reps", o->reps, "repetitions per floor (the fastest is kept)")->check(CLI::Range(1, 100));
   app.add_option("--json", o->json_out, "also write the report as JSON");
   return [o]() {
+    configure_runtime();  // the threads it reports are a synthesis's: optim/run/runtime.hpp
     const MachineReport m = machine_report(o->grid, o->reps);
     std::cout << m.text();
     if (!o->json_out.empty()) write_text_atomic(o->json_out, m.to_json().dump(2) + "\n");

@@ -6,6 +6,8 @@
 #include <iostream>
 
 #include "apps/ppsynth/command.hpp"
+#include "apps/ppsynth/option_checks.hpp"
+#include "apps/ppsynth/output_files.hpp"
 #include "core/config/config.hpp"
 #include "core/error.hpp"
 #include "experiments/gather/gather.hpp"
@@ -24,8 +26,11 @@ struct Opts {
 
 ppsynth::app::RunFn setup(CLI::App& cmd) {
   auto o = std::make_shared<Opts>();
-  cmd.add_option("dirs", o->dirs, "sweep directories, run directories, or folders of them")->required();
-  cmd.add_option("-o,--out", o->out, "write the tables, JSON and HTML page here (new or empty directory)");
+  cmd.add_option("dirs", o->dirs, "sweep directories, run directories, or folders of them")
+      ->required()
+      ->check(ppsynth::app::path_text());
+  cmd.add_option("-o,--out", o->out, "write the tables, JSON and HTML page here (new or empty directory)")
+      ->check(ppsynth::app::path_text());
   cmd.add_flag("--force", o->force, "replace an earlier gather's directory");
   cmd.add_option("--reference", o->references,
                  "a point file (e.g. the published output), evaluated against its exemplar and compared with the runs "
@@ -46,7 +51,12 @@ ppsynth::app::RunFn setup(CLI::App& cmd) {
     ppsynth::GatherOptions opts;
     if (!o->protocol.empty()) opts.protocol = ppsynth::parse_patch_protocol(o->protocol);
     opts.baselines = o->baselines;
-    for (const auto& r : o->references) opts.references.push_back(ppsynth::parse_reference(r));
+    std::vector<ppsynth::app::NamedPath> references;
+    for (const auto& r : o->references) {
+      opts.references.push_back(ppsynth::parse_reference(r));
+      references.push_back({"--reference", opts.references.back().file});
+    }
+    if (o->force) ppsynth::app::check_inputs_outside({"-o", o->out}, references);  // --force empties it
     opts.bound = o->bound;
     if (!o->stages.empty())
       for (const uint64_t stage : ppsynth::parse_number_list(nlohmann::json(o->stages), "--stage", "stage", 100000))

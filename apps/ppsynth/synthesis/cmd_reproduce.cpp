@@ -8,9 +8,11 @@
 
 #include "apps/ppsynth/command.hpp"
 #include "apps/ppsynth/option_checks.hpp"
+#include "apps/ppsynth/output_files.hpp"
 #include "experiments/plan/reproduce_config.hpp"
 #include "experiments/reproduce/reproduce_runner.hpp"
 #include "core/error.hpp"
+#include "optim/run/runtime.hpp"
 
 namespace {
 
@@ -27,7 +29,8 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_flag("--list", o->list, "list the configs in configs/paper");
   app.add_flag("--check", o->check, "validate the named configs (all of configs/paper if none) without running");
   app.add_flag("--quick", o->quick, "small grids, few iterations, few filters (smoke test)");
-  app.add_option("-o,--out", o->out, "report directory (default reports/NAME); must be new or empty");
+  app.add_option("-o,--out", o->out, "report directory (default reports/NAME); must be new or empty")
+      ->check(ppsynth::app::path_text());
   app.add_flag("--force", o->force, "replace the report directory if it holds a report of ppsynth");
   app.add_option("--reuse", o->reuse,
                  "reuse finished run directories (DIR or its subdirectories, e.g. runs/) whose resolved config equals a column's");
@@ -35,7 +38,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_option("--set", o->sets, "override a key of every panel's run config: key.path=value (method.* keys: ours only)");
   app.add_option("--seeds", o->seeds, "every synthesized column over these seeds (\"95-99\" or \"95,97\"), as a sweep; "
                                       "the report adds the statistics over seeds");
-  app.add_option("--sweep", o->sweep, "the sweep's directory (default sweeps/NAME)");
+  app.add_option("--sweep", o->sweep, "the sweep's directory (default sweeps/NAME)")->check(ppsynth::app::path_text());
   app.add_option("-j,--jobs", o->jobs, "the sweep's runs at once, here (--seeds)")->check(ppsynth::app::whole_number(1, 1024));
   app.add_flag("--plan-only", o->plan_only, "plan the sweep (--seeds) and stop: run it with `ppsynth sweep run DIR --slurm`, "
                                             "then run this command again to write the report");
@@ -64,7 +67,10 @@ ppsynth::app::RunFn setup(CLI::App& app) {
       return 0;
     }
     if (o->names.size() != 1) throw InputError("give one config name (see --list)");
-    auto config = load_reproduce_config(find_reproduce_config(o->names.front()));
+    if (!o->seeds.empty()) ppsynth::app::refuse_set_conflicts(o->sets, {{"--seeds " + o->seeds, "seed"}});
+    const std::string config_file = find_reproduce_config(o->names.front());
+    if (o->force) ppsynth::app::check_inputs_outside({"-o", o->out}, {{"config", config_file}});  // --force empties it
+    auto config = load_reproduce_config(config_file);
     ReproduceOptions ro;
     ro.quick = o->quick;
     ro.out = o->out;
@@ -78,6 +84,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     ro.plan_only = o->plan_only;
     ro.task_binary = fs::read_symlink("/proc/self/exe").string();
     if (o->plan_only && o->seeds.empty()) throw InputError("--plan-only plans the sweep of --seeds; give --seeds");
+    if (!o->plan_only) configure_runtime();  // threads, allocator, the Gabor maps' path: optim/run/runtime.hpp
     auto res = run_reproduction(config, ro);
     if (o->plan_only) {
       std::cout << "planned " << res.sweep_dir << "\nrun it with: ppsynth sweep run " << res.sweep_dir

@@ -12,6 +12,7 @@
 #include "apps/ppsynth/stop_signals.hpp"
 #include "core/error.hpp"
 #include "optim/run/run_synthesis.hpp"
+#include "optim/run/runtime.hpp"
 #include "experiments/execute/sweep_executors.hpp"
 #include "experiments/execute/sweep_runs.hpp"
 
@@ -67,6 +68,7 @@ int run(const Opts& o) {
   if (o.local == o.slurm) throw InputError("sweep run: choose one executor, --local or --slurm");
   if (o.local) {
     if (o.dry_run) throw InputError("--dry-run is for --slurm");
+    check_runtime_environment();  // what every task reads: a bad value fails here once, not in each task
     app::install_stop_handlers();
     LocalExecution how;
     how.binary = self_binary();
@@ -104,6 +106,7 @@ int run(const Opts& o) {
 }
 
 int task(const Opts& o) {
+  configure_runtime();  // threads, allocator, the Gabor maps' path: optim/run/runtime.hpp
   app::install_stop_handlers();
   try {
     run_sweep_task(o.dir, o.row, o.manifest, app::stop_flag());
@@ -120,10 +123,12 @@ app::RunFn setup(CLI::App& cmd) {
   auto o = std::make_shared<Opts>();
   cmd.require_subcommand(1);
   auto* p = cmd.add_subcommand("plan", "expand a sweep spec into a manifest of runs");
-  p->add_option("spec", o->spec, "sweep spec (JSON)")->required();
-  p->add_option("-o,--out", o->dir, "sweep directory (new, empty, or this sweep's to re-plan)")->required();
+  p->add_option("spec", o->spec, "sweep spec (JSON)")->required()->check(app::path_text());
+  p->add_option("-o,--out", o->dir, "sweep directory (new, empty, or this sweep's to re-plan)")
+      ->required()
+      ->check(app::path_text());
   auto* r = cmd.add_subcommand("run", "run the sweep's runs that are not done");
-  r->add_option("dir", o->dir, "sweep directory")->required();
+  r->add_option("dir", o->dir, "sweep directory")->required()->check(app::path_text());
   r->add_flag("--local", o->local, "run here, -j tasks at once");
   r->add_option("-j,--jobs", o->jobs, "tasks at once (--local)")->check(app::whole_number(1, 1024));
   r->add_option("--threads", o->threads, "threads per task (--local; default: PPSYNTH_THREADS, else cores / jobs)")
@@ -140,10 +145,10 @@ app::RunFn setup(CLI::App& cmd) {
       ->check(app::whole_number(1, kMaxSweepMinutes));
   r->add_option("--max-parallel", o->max_parallel, "at most this many array tasks at once")->check(app::whole_number(1, 100000));
   auto* s = cmd.add_subcommand("status", "list the sweep's runs and their state");
-  s->add_option("dir", o->dir, "sweep directory")->required();
+  s->add_option("dir", o->dir, "sweep directory")->required()->check(app::path_text());
   s->add_flag("--json", o->json, "print JSON");
   auto* t = cmd.add_subcommand("task", "run one row of the sweep (what each worker and array task runs)");
-  t->add_option("dir", o->dir, "sweep directory")->required();
+  t->add_option("dir", o->dir, "sweep directory")->required()->check(app::path_text());
   t->add_option("--row", o->row, "the row's id (`ppsynth sweep status` lists them)")->required();
   t->add_option("--manifest", o->manifest, "the plan's hash the task was given (a plan changed since is noted)");
   return [o, p, r, s, t]() -> int {
