@@ -7,6 +7,7 @@
 #include <nanoflann.hpp>
 
 #include "core/error.hpp"
+#include "core/poll.hpp"
 
 namespace ppsynth {
 
@@ -98,6 +99,7 @@ size_t NeighborIndex::size() const { return impl_->n; }
 bool NeighborIndex::periodic() const { return impl_->periodic; }
 
 std::vector<size_t> NeighborIndex::knn(Vec2 q, size_t k, std::vector<double>* dist) const {
+  poll();  // the metrics query once per point: a caller's stop check (core/poll.hpp) runs between
   const Impl& m = *impl_;
   k = std::min(k, m.n);
   std::vector<size_t> out;
@@ -138,6 +140,7 @@ size_t NeighborIndex::knn_into(Vec2 q, size_t k, size_t* idx, double* dist2) con
 }
 
 std::vector<size_t> NeighborIndex::radius(Vec2 q, double r, std::vector<double>* dist) const {
+  poll();
   const Impl& m = *impl_;
   std::vector<size_t> out;
   if (dist) dist->clear();

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "core/error.hpp"
+#include "core/poll.hpp"
 
 namespace ppsynth {
 
@@ -27,6 +28,7 @@ std::vector<size_t> optimal_assignment(const std::vector<double>& cost, size_t r
   std::vector<double> minv(cols + 1);
   std::vector<char> used(cols + 1);
   for (size_t i = 1; i <= rows; ++i) {
+    poll();  // a caller's stop check (core/poll.hpp): a few thousand rows take a second
     p[0] = i;
     size_t j0 = 0;
     std::fill(minv.begin(), minv.end(), INF);

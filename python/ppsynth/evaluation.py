@@ -135,11 +135,16 @@ class Evaluation(Record):
         beside ``border_fraction_uniform`` (uniform points' share).
     second_order : Record
         K, L and g of both patterns with spatstat's edge correction (``rows``: ``r``,
-        ``exemplar.k`` ..., ``l_sup``), and the mark correlation of marked patterns.
+        ``exemplar.k`` ..., ``l_sup``), and the mark correlation of marked patterns; over 64
+        classes no class-pair rows, and ``pairs_skipped`` says so. Absent with
+        ``second_order=False``.
     verdict : Record
         The studentized permutation test of equal K-functions over sub-windows
         (docs/verdict.md): ``rows``, each with ``row`` (``"all"``, ``"class"``, ``"pair"``),
-        ``p`` and ``pass_``; ``alpha``, ``test``.
+        ``p`` and ``pass_``; ``passed`` (True, False, or None when a row cannot be judged);
+        ``alpha``, ``test``. Absent with ``verdict=False``.
+    passed : bool or None
+        The verdict's ``passed``: None when it cannot judge a row or was left out.
     protocol : Record
         Quadrants or crops, and why (``name``, ``reason``, ``zoom``, ``windows``).
     options : Record
@@ -154,15 +159,22 @@ class Evaluation(Record):
 
     @property
     def passed(self) -> Optional[bool]:
-        """Whether every row of the verdict passed; None when no row could be decided."""
-        rows = [r for r in (self.verdict.rows if "verdict" in self else []) if r.pass_ is not None]
-        return None if not rows else all(r.pass_ for r in rows)
+        """The verdict's own answer (its ``passed``): True when every row passed, False when a
+        row failed, None when the verdict cannot judge a row (a row that cannot be judged is
+        never counted as a pass) or was left out (``verdict=False``)."""
+        return self.verdict.passed if "verdict" in self else None
 
 
 def evaluate(exemplar, output, bins: int = 100, r_max: float = 0.0, periodic_pcf: bool = False,
              curves: bool = True, spectrum: bool = False,
              wasserstein_exact_limit: int = _native.WASSERSTEIN_EXACT_PAIRS,
-             protocol: str = "auto", crops: int = 20, crop_seed: int = 1, zoom: float = 0.0) -> Evaluation:
+             protocol: str = "auto", crops: int = 20, crop_seed: int = 1, zoom: float = 0.0,
+             second_order: bool = True, verdict: bool = True,
+             verdict_split: int = _native.VERDICT_DEFAULTS["split"],
+             verdict_guard: float = _native.VERDICT_DEFAULTS["guard"],
+             verdict_permutations: int = _native.VERDICT_DEFAULTS["permutations"],
+             verdict_seed: int = _native.VERDICT_DEFAULTS["seed"],
+             verdict_alpha: float = _native.VERDICT_DEFAULTS["alpha"]) -> Evaluation:
     """Metrics of an output against its exemplar: the numbers of ``ppsynth eval --json``.
 
     Parameters
@@ -191,6 +203,15 @@ def evaluate(exemplar, output, bins: int = 100, r_max: float = 0.0, periodic_pcf
         How many crops, and their seed.
     zoom : float
         Output units per exemplar unit, the crops' scale; 0 reads it from the two densities.
+    second_order : bool
+        Add spatstat's K, L, g and the mark correlations (``second_order``; ``eval
+        --no-second-order`` is False).
+    verdict : bool
+        Add the verdict (``verdict``, ``passed``; ``eval --no-verdict`` is False).
+    verdict_split, verdict_guard, verdict_permutations, verdict_seed, verdict_alpha
+        The verdict's options, as ``eval --verdict-split`` ... take them: the exemplar in
+        split x split sub-windows, the share of a sub-window cell left out between them, the
+        random reassignments, their seed, and the p-value a row passes from.
 
     Returns
     -------
@@ -202,9 +223,13 @@ def evaluate(exemplar, output, bins: int = 100, r_max: float = 0.0, periodic_pcf
     ------
     ValueError
         Bad input or an impossible option, naming it.
+    KeyboardInterrupt
+        Ctrl-C while it works (it stops within a fraction of a second).
     """
     ex = _as_points(exemplar, "exemplar")
     out = _as_points(output, "output")
     return Evaluation(_native.evaluate(ex._to_native(), out._to_native(), int(bins), float(r_max), bool(periodic_pcf),
                                        bool(curves), bool(spectrum), int(wasserstein_exact_limit), str(protocol),
-                                       int(crops), int(crop_seed), float(zoom)))
+                                       int(crops), int(crop_seed), float(zoom), bool(second_order), bool(verdict),
+                                       int(verdict_split), float(verdict_guard), int(verdict_permutations),
+                                       int(verdict_seed), float(verdict_alpha)))
