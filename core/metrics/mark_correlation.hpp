@@ -12,7 +12,10 @@
 // where R's density() bins the distances first (tests/core/test_spatstat_estimators.cpp
 // states the tolerance). Marks must be >= 0 with a mean > 0 (spatstat refuses the same when
 // normalizing): InputError naming the attribute.
+// Memory O(n + R): the pairs are found again for each sum (the bandwidth's mean, spread and
+// quartiles, stream_order_statistics.hpp, then the curve) instead of being held.
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "core/metrics/edge_correction.hpp"
@@ -27,7 +30,12 @@ struct MarkCorrelation {
 
 MarkCorrelation mark_correlation(const PointSet& ps, size_t attribute, EdgeCorrection c, std::vector<double> r = {});
 
-// R's bw.nrd0 of `x` (quantiles of type 7); NaN for fewer than 2 values.
-double bandwidth_nrd0(std::vector<double> x);
+// Calls its argument once for every value, the same values each call (in the same order, so
+// that sums over them are reproducible).
+using ValueReplay = std::function<void(const std::function<void(double)>&)>;
+
+// R's bw.nrd0 of the values `replay` produces (quantiles of type 7); NaN for fewer than 2.
+// Three replays when they are at most 2^20, usually four beyond.
+double bandwidth_nrd0(const ValueReplay& replay);
 
 }  // namespace ppsynth

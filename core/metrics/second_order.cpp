@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "core/neighbors.hpp"
 
 namespace ppsynth {
 
@@ -26,20 +25,6 @@ std::vector<double> spatstat_r_grid(const Domain& w, double lambda) {
   for (size_t k = 0; k < n; ++k) r[k] = static_cast<double>(k) * by;
   r[n] = right;
   return r;
-}
-
-std::vector<ClosePair> close_pairs(const PointSet& a, const PointSet* b, double reach) {
-  const PointSet& to = b ? *b : a;
-  std::vector<ClosePair> pairs;
-  if (a.empty() || to.empty()) return pairs;
-  const NeighborIndex index(to.positions());
-  std::vector<double> dist;
-  for (size_t i = 0; i < a.size(); ++i) {
-    const std::vector<size_t> near = index.radius(a[i], reach, &dist);
-    for (size_t k = 0; k < near.size(); ++k)
-      if (b || near[k] != i) pairs.push_back({i, near[k], dist[k]});
-  }
-  return pairs;
 }
 
 SecondOrder second_order(const PointSet& a, const PointSet* b, EdgeCorrection c, std::vector<double> r, bool with_g) {
@@ -66,17 +51,17 @@ SecondOrder second_order(const PointSet& a, const PointSet* b, EdgeCorrection c,
   std::vector<double> hist(R, 0.0), kern(R, 0.0);
   // An even grid (the default and any spatstat takes for g): the kernel's bins by index.
   const double step = R > 1 ? (r.back() - r.front()) / static_cast<double>(R - 1) : 1.0;
-  for (const ClosePair& p : close_pairs(a, b, reach)) {
-    const double e = edge_weight(c, w, a[p.i], second[p.j], p.d);
-    if (p.d <= r.back()) hist[static_cast<size_t>(std::lower_bound(r.begin(), r.end(), p.d) - r.begin())] += e;
-    if (!with_g) continue;
-    const double lo = (p.d - h - r.front()) / step, hi = (p.d + h - r.front()) / step;
+  for_each_close_pair(a, b, reach, [&](size_t i, size_t j, double d) {
+    const double e = edge_weight(c, w, a[i], second[j], d);
+    if (d <= r.back()) hist[static_cast<size_t>(std::lower_bound(r.begin(), r.end(), d) - r.begin())] += e;
+    if (!with_g) return;
+    const double lo = (d - h - r.front()) / step, hi = (d + h - r.front()) / step;
     const long k0 = std::max(0L, static_cast<long>(std::floor(lo))), k1 = std::min(static_cast<long>(R) - 1, static_cast<long>(std::ceil(hi)));
     for (long k = k0; k <= k1; ++k) {
-      const double t = (r[static_cast<size_t>(k)] - p.d) / h;
+      const double t = (r[static_cast<size_t>(k)] - d) / h;
       if (std::abs(t) < 1.0) kern[static_cast<size_t>(k)] += e * 0.75 * (1.0 - t * t) / h;
     }
-  }
+  });
   const double scale = area / pairs_total;
   s.k.resize(R);
   s.l.resize(R);

@@ -22,11 +22,13 @@
 // test_spatstat_estimators.cpp states the tolerance it checks). g(0) is NaN (1/r).
 // Fewer than 2 points (univariate) or an empty set (cross-type) give NaN curves.
 // Cost: a k-d tree radius search per point of a plus O(1) per pair within r_max (K) and
-// O(h / r step) per pair within r_max + h (g).
+// O(h / r step) per pair within r_max + h (g). Memory: O(n + R); the pairs (about 1000 per
+// point at spatstat's r_max) are summed as they are found, never held.
 #include <cstddef>
 #include <vector>
 
 #include "core/metrics/edge_correction.hpp"
+#include "core/neighbors.hpp"
 #include "core/point_set.hpp"
 
 namespace ppsynth {
@@ -41,12 +43,22 @@ double spatstat_r_max(const Domain& window, double lambda);
 // 0, step, ..., r_max as spatstat's make.even.breaks lays it (513 values).
 std::vector<double> spatstat_r_grid(const Domain& window, double lambda);
 
-// Ordered pairs (i of a, j of b) with d <= reach; b == nullptr: pairs of a with i != j.
-struct ClosePair {
-  size_t i = 0, j = 0;
-  double d = 0;
-};
-std::vector<ClosePair> close_pairs(const PointSet& a, const PointSet* b, double reach);
+// Calls f(i, j, d) for every ordered pair (i of a, j of b) with d <= reach; b == nullptr: the
+// pairs of a with i != j. In increasing i, each i's pairs by increasing distance (the same
+// order every call, so sums over it are reproducible). One point's neighbors are held at a
+// time; a caller's stop check (core/poll.hpp) runs at every point's search.
+template <class F>
+void for_each_close_pair(const PointSet& a, const PointSet* b, double reach, F&& f) {
+  const PointSet& to = b ? *b : a;
+  if (a.empty() || to.empty()) return;
+  const NeighborIndex index(to.positions());
+  std::vector<double> dist;
+  for (size_t i = 0; i < a.size(); ++i) {
+    const std::vector<size_t> near = index.radius(a[i], reach, &dist);
+    for (size_t k = 0; k < near.size(); ++k)
+      if (b || near[k] != i) f(i, near[k], dist[k]);
+  }
+}
 
 struct SecondOrder {
   std::vector<double> r, k, l, g;

@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/metrics/mark_correlation.hpp"
+#include "core/metrics/overlap.hpp"
 #include "core/metrics/second_order.hpp"
 
 namespace ppsynth {
@@ -77,14 +78,15 @@ json second_order_report(const PointSet& exemplar, const PointSet& output, doubl
       c["class"] = k;
       rows.push_back(c);
     }
-    for (int a = 0; a < K; ++a)
-      for (int b = a + 1; b < K; ++b) {
-        json c = row(ek[a], &ek[b], ok[a], &ok[b], curves);
-        c["row"] = "pair";
-        c["ci"] = a;
-        c["cj"] = b;
-        rows.push_back(c);
-      }
+    if (K <= kMaxPairClasses)
+      for (int a = 0; a < K; ++a)
+        for (int b = a + 1; b < K; ++b) {
+          json c = row(ek[a], &ek[b], ok[a], &ok[b], curves);
+          c["row"] = "pair";
+          c["ci"] = a;
+          c["cj"] = b;
+          rows.push_back(c);
+        }
   }
   json marks = json::array();
   for (size_t a = 0; a < ex.num_attributes(); ++a) {
@@ -106,7 +108,13 @@ json second_order_report(const PointSet& exemplar, const PointSet& output, doubl
     }
     marks.push_back(m);
   }
-  return {{"correction", "translation"}, {"zoom", zoom}, {"rows", rows}, {"mark_correlation", marks}};
+  json report = {{"correction", "translation"}, {"zoom", zoom}, {"rows", rows}, {"mark_correlation", marks}};
+  if (K > kMaxPairClasses)
+    report["pairs_skipped"] = "the exemplar has " + std::to_string(K) + " classes: the " +
+                              std::to_string(static_cast<size_t>(K) * (K - 1) / 2) +
+                              " class pairs' K, L and g are computed up to " + std::to_string(kMaxPairClasses) +
+                              " classes only";
+  return report;
 }
 
 }  // namespace ppsynth

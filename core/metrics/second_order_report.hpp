@@ -15,6 +15,8 @@
 //     "mark_correlation": [ { "attribute", "sup": max |k_mm difference|, curves: "r",
 //                             "exemplar", "output" } or { "attribute", "skipped": why } ] }
 // A row with fewer than 2 points (one of each type for a pair) in either set has null values.
+// More than kMaxPairClasses (64, as the cross-class PCFs) classes: no "pair" rows, and
+// "pairs_skipped" says why (K (K - 1) / 2 rows of curves: 300 classes made 44,850, gigabytes).
 #include <nlohmann/json.hpp>
 
 #include "core/point_set.hpp"
