@@ -77,4 +77,34 @@ nlohmann::json parse_json_text(std::string text, const std::string& source, bool
   }
 }
 
+bool is_utf8(const std::string& text) {
+  try {
+    (void)nlohmann::json(text).dump();  // nlohmann's own decoder: the one json::dump applies
+    return true;
+  } catch (const nlohmann::json::type_error&) {
+    return false;
+  }
+}
+
+nlohmann::json shown_text(const std::string& text) {
+  if (is_utf8(text)) return text;
+  const std::string quoted = nlohmann::json(text).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  return nlohmann::json::parse(quoted);
+}
+
+std::optional<std::string> first_non_utf8(const nlohmann::json& value, const std::string& path) {
+  if (value.is_string()) return is_utf8(value.get_ref<const std::string&>()) ? std::nullopt : std::optional(path);
+  if (value.is_array()) {
+    for (size_t i = 0; i < value.size(); ++i)
+      if (auto p = first_non_utf8(value[i], path + "[" + std::to_string(i) + "]")) return p;
+  } else if (value.is_object()) {
+    for (auto it = value.begin(); it != value.end(); ++it) {
+      const std::string key = path.empty() ? it.key() : path + "." + it.key();
+      if (!is_utf8(it.key())) return key;
+      if (auto p = first_non_utf8(it.value(), key)) return p;
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace ppsynth

@@ -35,4 +35,18 @@ long line_of_offset(const std::string& text, size_t offset);
 // syntax errors with file_error(source, line, ...).
 nlohmann::json parse_json_text(std::string text, const std::string& source, bool allow_comments);
 
+// Whether `text` is valid UTF-8, as json::dump requires of every string (it throws
+// type_error 316 otherwise).
+bool is_utf8(const std::string& text);
+
+// `text` as a JSON string whose bytes that are not UTF-8 (a file name may hold any) are each
+// replaced by U+FFFD, as nlohmann's replace handler does, so that a report that names the file
+// can always be written. Only where the name is shown: a name read back (a run's config)
+// must be refused instead, with first_non_utf8.
+nlohmann::json shown_text(const std::string& text);
+
+// The key path ("exemplar", "method.init.file", "runs[2]") of the first string or key of
+// `value` that is not UTF-8; nullopt when there is none.
+std::optional<std::string> first_non_utf8(const nlohmann::json& value, const std::string& path = "");
+
 }  // namespace ppsynth

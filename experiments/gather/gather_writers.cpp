@@ -10,6 +10,7 @@
 #include <set>
 
 #include "core/atomic_file.hpp"
+#include "core/config/json_text.hpp"
 #include "core/error.hpp"
 #include "core/render/plot_strips.hpp"
 #include "core/report/html_report.hpp"
@@ -88,7 +89,7 @@ nlohmann::json to_json(const GatherResult& r) {
   for (const auto& run : r.runs) {
     nlohmann::json v = nlohmann::json::object();
     for (const auto& [k, x] : run.values) v[k] = x;
-    runs.push_back({{"dir", run.dir}, {"group", run.group}, {"group_label", run.group_label}, {"seed", run.seed},
+    runs.push_back({{"dir", shown_text(run.dir)}, {"group", run.group}, {"group_label", run.group_label}, {"seed", run.seed},
                     {"stage", run.stage}, {"values", v}});
   }
   auto optional = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); };
@@ -98,7 +99,7 @@ nlohmann::json to_json(const GatherResult& r) {
                     {"q3", s.q3}, {"min", s.min}, {"max", s.max}, {"reference", optional(s.reference)},
                     {"ratio_of_medians", optional(s.ratio)}, {"share_within_bound", optional(s.within)}});
   nlohmann::json refs = nlohmann::json::array();
-  for (const auto& ref : r.options.references) refs.push_back({{"exemplar", ref.exemplar}, {"file", ref.file}});
+  for (const auto& ref : r.options.references) refs.push_back({{"exemplar", shown_text(ref.exemplar)}, {"file", shown_text(ref.file)}});
   nlohmann::json comps = nlohmann::json::array();
   for (const auto& c : r.comparisons)
     comps.push_back({{"group_label", c.group_label}, {"baseline", c.baseline_label}, {"scope", c.scope}, {"metric", c.metric},

@@ -4,6 +4,7 @@
 
 #include "core/config/config.hpp"
 #include "core/config/defaults_catalog.hpp"
+#include "core/config/json_text.hpp"
 #include "core/config/param_bounds.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
@@ -39,6 +40,11 @@ json run_defaults() {
 
 json resolve_run_config(json config, const std::vector<std::string>& overrides) {
   for (auto& o : overrides) set_override(config, o);
+  // A run writes its config as JSON and reads it back (resume, reproduce): text that is not
+  // UTF-8 (a file name from the command line) could not be written, and a replaced one
+  // would name another file.
+  if (const auto key = first_non_utf8(config))
+    throw config_error(*key, "not valid UTF-8, and a run records its config as JSON: rename the file (or link it under a UTF-8 name)");
   json r = apply_defaults(run_defaults(), apply_preset(config), "");
   if (!is_seed(r["seed"])) throw config_error("seed", "expected a whole number from 0 to 2^63 - 1, got " + r["seed"].dump());
   check_bounds(r, json{{"upscale", "int [1, 64]"}, {"checkpoint_seconds", "(0, inf)"}}, "");  // u: u^2 copies of the exemplar

@@ -16,6 +16,7 @@
 #include "apps/ppsynth/option_checks.hpp"
 #include "apps/ppsynth/output_files.hpp"
 #include "core/atomic_file.hpp"
+#include "core/config/json_text.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/metrics/evaluation.hpp"
@@ -102,8 +103,8 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     ppsynth::PointSet ex = ppsynth::read_points(a->exemplar, ro);
     ppsynth::PointSet out = ppsynth::read_points(a->output, ro);
     nlohmann::json r = ppsynth::evaluate(ex, out, opt);
-    r["exemplar"]["path"] = a->exemplar;
-    r["output"]["path"] = a->output;
+    r["exemplar"]["path"] = ppsynth::shown_text(a->exemplar);  // any file name can be written as JSON
+    r["output"]["path"] = ppsynth::shown_text(a->output);
     if (!a->out_file.empty()) ppsynth::write_text_atomic(a->out_file, r.dump(2) + "\n");
     if (a->json)
       std::cout << r.dump(2) << "\n";

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/ppsynth/command.hpp"
+#include "core/config/json_text.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/metrics/nearest_neighbor.hpp"
@@ -48,7 +49,7 @@ json collect(const InfoArgs& a) {
   const PointSet ps = read_points(a.input, ro);
 
   json j;
-  j["file"] = a.input;
+  j["file"] = shown_text(a.input);  // any file name can be written as JSON
   j["format"] = format_name(fmt);
   if (fmt == Format::PointSynthesis) j["scaling"] = axis_scaling_name(ro.scaling);
   j["points"] = ps.size();
