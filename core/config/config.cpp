@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <sstream>
 #include <set>
 
 #include "core/config/json_text.hpp"
 #include "core/error.hpp"
+#include "core/formats/text_table.hpp"
 
 namespace fs = std::filesystem;
 
@@ -18,16 +18,8 @@ namespace ppsynth {
 namespace {
 
 json read_json_file(const std::string& path) {
-  std::error_code ec;
-  // A directory opens as a stream on Linux, then fails mid-read (was "internal error").
-  if (fs::is_directory(path, ec)) throw file_error(path, 0, "is a directory, not a config file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw_open_error(path, "config");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw file_error(path, 0, "read error");
   // BOM, nesting depth, numbers beyond double and syntax errors, each with its line.
-  return parse_json_text(text.str(), path, /*allow_comments=*/true);
+  return parse_json_text(read_file_text(path, "config file"), path, /*allow_comments=*/true);
 }
 
 json load_chain(const std::string& path, std::set<std::string>& seen) {

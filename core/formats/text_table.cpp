@@ -1,6 +1,11 @@
 #include "core/formats/text_table.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -14,16 +19,68 @@
 
 namespace ppsynth {
 
-std::string read_file_text(const std::string& path) {
-  std::error_code ec;
-  // A directory opens as a stream on Linux and reads as empty or fails mid-read.
-  if (std::filesystem::is_directory(path, ec)) throw file_error(path, 0, "is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw_open_error(path, "file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (in.bad()) throw file_error(path, 0, "read error");
-  return s.str();
+namespace {
+
+// What a path that is not a regular file is: "a character device", "a FIFO (named pipe)", ...
+const char* kind_of(mode_t mode) {
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+InputError not_regular(const std::string& path, mode_t mode, const std::string& what) {
+  if (S_ISDIR(mode)) return file_error(path, 0, "is a directory, not a " + what);
+  return file_error(path, 0, std::string("is ") + kind_of(mode) + ", not a regular file; name a " + what + " to read");
+}
+
+InputError too_large(const std::string& path) {
+  return file_error(path, 0, "larger than the " + std::to_string(kMaxInputFileBytes >> 30) +
+                                 " GiB an input file may hold; name the file you meant");
+}
+
+// Closes the descriptor on every path out.
+struct Fd {
+  int fd;
+  ~Fd() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+}  // namespace
+
+void check_input_file(const std::string& path, const std::string& what) {
+  // stat, never open: opening a FIFO for reading waits for a writer, forever.
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) throw_open_error(path, what);
+  if (!S_ISREG(st.st_mode)) throw not_regular(path, st.st_mode, what);
+  if (static_cast<unsigned long long>(st.st_size) > kMaxInputFileBytes) throw too_large(path);
+}
+
+std::string read_file_text(const std::string& path, const std::string& what) {
+  check_input_file(path, what);
+  // O_NONBLOCK: should the path become a FIFO between stat and open, the open returns at once
+  // and fstat refuses it; on a regular file the flag changes nothing.
+  Fd in{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
+  if (in.fd < 0) throw_open_error(path, what);
+  struct stat st {};
+  if (::fstat(in.fd, &st) != 0) throw file_error(path, 0, "read error");
+  if (!S_ISREG(st.st_mode)) throw not_regular(path, st.st_mode, what);
+  std::string text;
+  text.reserve(static_cast<size_t>(st.st_size));
+  char buf[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(in.fd, buf, sizeof buf);
+    if (n == 0) break;
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      throw file_error(path, 0, "read error");
+    }
+    if (text.size() + static_cast<size_t>(n) > kMaxInputFileBytes) throw too_large(path);  // grew while read
+    text.append(buf, static_cast<size_t>(n));
+  }
+  return text;
 }
 
 bool strip_utf8_bom(std::string& text) {

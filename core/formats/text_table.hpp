@@ -17,9 +17,22 @@ struct TextRow {
   bool is_comment() const { return !text.empty() && text[0] == '#'; }
 };
 
-// The whole file as a string, byte for byte; InputError "path: cannot open" when it cannot
-// be read, "path: is a directory" for a directory.
-std::string read_file_text(const std::string& path);
+// The most an input file may hold (2 GiB, about 50 million points of text): past it the file
+// is not one a user meant to give (a sparse image, a log still growing), and reading it whole
+// would take the machine's memory first.
+inline constexpr unsigned long long kMaxInputFileBytes = 2ull << 30;
+
+// The whole regular file `path` as a string, byte for byte: the one way every point file,
+// config and run record is read. It is looked at before it is opened, so a FIFO never blocks
+// and a device is never read: InputError "path: is a directory, not a file", "path: is a
+// character device, not a regular file" (block device, FIFO, socket likewise), MissingFileError
+// "path: no such file", "path: cannot open WHAT (unreadable)" (`what`: "file", "config file"); and
+// "path: larger than the 2 GiB an input file may hold" for a file past kMaxInputFileBytes, or
+// one that grows past it while it is read.
+std::string read_file_text(const std::string& path, const std::string& what = "file");
+// The checks read_file_text makes before it opens `path`, with the same errors: for a reader
+// of its own (the Python package's NumPy files).
+void check_input_file(const std::string& path, const std::string& what = "file");
 
 // Removes a UTF-8 byte-order mark (EF BB BF) at the start of `text`; true when there was one.
 // Point and config readers accept one (editors on Windows write it); elsewhere it is a flaw.

@@ -185,8 +185,7 @@ def read(path, format: Optional[str] = None, scaling: str = "per-axis",
         return PointSet._from_native(
             _native.read_points(path, format or "auto", scaling, list(attribute_names or [])))
     real = _native.resolve_data_path(path)
-    if not os.path.exists(real):
-        raise FileNotFoundError(f"{path}: no such file")
+    _native.check_input_file(real)  # a regular file within the size bound: a FIFO would block np.load
     ps = _read_npz(real) if kind == "npz" else _read_npy(real)
     if attribute_names is not None:
         if len(attribute_names) != len(ps.attribute_names):

@@ -11,6 +11,7 @@
 #include "core/config/defaults_catalog.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
+#include "core/formats/text_table.hpp"
 #include "core/generators/generator.hpp"
 #include "core/paths.hpp"
 
@@ -105,13 +106,20 @@ PointSet from_python(const py::handle& points, const std::string& source) {
     for (size_t j = 0; j < row.size(); ++j) row[j] = A(i, j);
     ps.add({P(i, 0), P(i, 1)}, static_cast<int>(C(i)), row);
   }
-  const auto labels = py::cast<std::vector<long long>>(need("class_labels"));
-  if (!labels.empty()) {
-    std::vector<int> l;
-    for (long long v : labels) {
-      if (v < INT32_MIN || v > INT32_MAX) throw InputError(source + ": class_labels: " + std::to_string(v) + " does not fit 32 bits");
-      l.push_back(static_cast<int>(v));
-    }
+  // Each label as a Python integer of any size, so that one past 64 bits (1e20) is refused
+  // like one past 32, with its value and the range.
+  std::vector<int> l;
+  for (const py::handle h : need("class_labels")) {
+    const py::int_ v(py::reinterpret_borrow<py::object>(h));
+    int overflow = 0;
+    const long long x = PyLong_AsLongLongAndOverflow(v.ptr(), &overflow);
+    if (overflow != 0 || x < INT32_MIN || x > INT32_MAX)
+      throw InputError(source + ": class_labels: " + py::repr(v).cast<std::string>() +
+                       " is out of range (a class label is a 32-bit integer, " + std::to_string(INT32_MIN) + ".." +
+                       std::to_string(INT32_MAX) + ")");
+    l.push_back(static_cast<int>(x));
+  }
+  if (!l.empty()) {
     if (ps.num_classes() > static_cast<int>(l.size()))
       throw InputError(source + ": class_labels: " + std::to_string(l.size()) + " labels for " +
                        std::to_string(ps.num_classes()) + " classes");
@@ -152,6 +160,8 @@ void bind_points(py::module_& m) {
       [](const py::dict& points, const std::string& source) { validate(from_python(points, source), source); },
       py::arg("points"), py::arg("source"));
   m.def("resolve_data_path", &resolve_data_path, py::arg("path"));
+  // What read_points checks before it opens a file, for the NumPy readers of ppsynth/points.py.
+  m.def("check_input_file", [](const std::string& path) { check_input_file(path); }, py::arg("path"));
   m.def(
       "generate",
       [](const py::object& spec, long long n, uint64_t seed, const py::tuple& domain, bool periodic) {

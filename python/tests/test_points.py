@@ -2,6 +2,8 @@
 text a Python write produces equals the command's conversion, bad files raise the command's
 errors."""
 import os
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -113,3 +115,32 @@ def test_bad_files_raise_the_commands_errors(tmp_path):
         ppsynth.PointSet(np.zeros((3, 3)))
     with pytest.raises(ValueError, match=r"class 0 \(label 0\) has no points"):
         ppsynth.PointSet(np.array([[0.5, 0.5]]), classes=[1]).validate()
+
+
+@pytest.mark.parametrize("label", [1e20, 2 ** 31, -2 ** 63 - 1])
+def test_a_class_label_past_32_bits_is_refused_by_name(tmp_path, label):
+    # Was "Unable to cast Python instance to C++ type" for labels past 64 bits.
+    ps = ppsynth.PointSet(np.array([[0.5, 0.5]]), class_labels=[label])
+    with pytest.raises(ValueError, match=r"class_labels: -?\d+ is out of range \(a class label is a 32-bit integer, "
+                                         r"-2147483648\.\.2147483647\)"):
+        ppsynth.write(ps, tmp_path / "x.txt")
+    assert not (tmp_path / "x.txt").exists()
+
+
+@pytest.mark.parametrize("name", ["p.npy", "p.npz", "p.txt"])
+def test_reading_a_fifo_or_a_directory_stops_at_once(tmp_path, name):
+    # In a child process with a time limit: a FIFO blocked np.load (and the point readers) forever.
+    fifo = tmp_path / name
+    os.mkfifo(fifo)
+    folder = tmp_path / ("d" + name)
+    folder.mkdir()
+    script = ("import sys, ppsynth\n"
+              "for f in sys.argv[1:]:\n"
+              "    try:\n"
+              "        ppsynth.read(f)\n"
+              "    except ValueError as e:\n"
+              "        print(e)\n")
+    p = subprocess.run([sys.executable, "-c", script, str(fifo), str(folder)], capture_output=True, text=True, timeout=60)
+    assert p.returncode == 0, p.stderr
+    assert f"{fifo}: is a FIFO (named pipe), not a regular file" in p.stdout
+    assert f"{folder}: is a directory" in p.stdout
