@@ -1,8 +1,11 @@
 #include "core/atomic_file.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 #include "core/error.hpp"
@@ -80,6 +83,23 @@ void AtomicFile::commit() {
   if (out_.fail()) throw file_error(path_, 0, "write failed");
   if (!tmp_.empty()) rename_into_place(tmp_, path_, path_);
   committed_ = true;
+}
+
+void check_writable(const std::string& path) {
+  const Target t = output_target(path);
+  if (!t.via_temp) return;
+  const std::string tmp = temp_name_for(t.path);
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0) {
+    const int err = errno;
+    std::string folder = fs::path(t.path).parent_path().string();
+    if (folder.empty()) folder = ".";
+    if (err == ENOENT) throw file_error(path, 0, "cannot be written: no folder " + folder);
+    if (err == ENOTDIR) throw file_error(path, 0, "cannot be written: " + folder + " is not a folder");
+    throw file_error(path, 0, std::string("cannot be written: ") + std::strerror(err));
+  }
+  ::close(fd);
+  std::remove(tmp.c_str());
 }
 
 void write_text_atomic(const std::string& path, const std::string& text) {

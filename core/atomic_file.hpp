@@ -28,6 +28,12 @@ class AtomicFile {
   bool committed_ = false;
 };
 
+// Fails now, as the write would at the end, when `path` could not be written: it is a
+// directory, or its folder is missing, not a folder or not writable (a temporary file is
+// created there as the write would, then removed). A device or FIFO is written directly and not
+// opened here (opening a FIFO waits for a reader). For a command to call before long work.
+void check_writable(const std::string& path);
+
 // Writes `text` to `path` atomically.
 void write_text_atomic(const std::string& path, const std::string& text);
 // Calls `writer(file_name)` for writers that need a file name (cairo), then renames.

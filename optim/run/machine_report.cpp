@@ -117,7 +117,7 @@ nlohmann::json MachineReport::to_json() const {
   if (!floors.empty()) {
     j["floor_grid"] = floor_res;
     for (const auto& f : floors) j["conv_gflops"][f.path] = f.gflops;
-    j["bf16_over_float32"] = floors[1].gflops / floors[0].gflops;
+    if (floors.size() > 1) j["bf16_over_float32"] = floors[1].gflops / floors[0].gflops;  // one floor where no bf16 runs
   }
   for (const auto& p : presets)
     j["presets"][p.preset] = {{"precision", p.precision}, {"reason", p.reason},

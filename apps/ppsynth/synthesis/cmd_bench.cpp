@@ -23,6 +23,7 @@
 
 #include "apps/ppsynth/command.hpp"
 #include "apps/ppsynth/option_checks.hpp"
+#include "apps/ppsynth/output_files.hpp"
 #include "optim/run/checkpoint_store.hpp"
 #include "optim/run/run_config.hpp"
 #include "core/memory_budget.hpp"
@@ -117,6 +118,12 @@ Subject make_subject(const Opts& o) {
   if (!o.device.empty()) c["runtime"]["device"] = o.device;
   Subject b;
   b.r = resolve_run_config(c, o.sets);
+  // Before any work (the initializer alone can take a minute): the figures' file must be
+  // writable, and neither the config nor the exemplar. An earlier --json is replaced.
+  if (!o.json_out.empty()) {
+    app::check_output_files({{"--json", o.json_out}}, {{"config", o.config}, {"exemplar", b.r["exemplar"].get<std::string>()}}, /*force=*/true);
+    check_writable(o.json_out);
+  }
   if (b.r["method"]["type"] != "gabor") throw InputError("bench: only the gabor method is benchmarked");
   b.device = torch::Device(apply_device_settings(b.r["runtime"]).device);
   const json& p = b.r["method"];

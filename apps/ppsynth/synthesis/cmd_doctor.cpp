@@ -26,6 +26,7 @@ app::RunFn setup(CLI::App& app) {
   app.add_option("--json", o->json_out, "also write the report as JSON");
   return [o]() {
     configure_runtime();  // the threads it reports are a synthesis's: optim/run/runtime.hpp
+    if (!o->json_out.empty()) check_writable(o->json_out);  // before the floors are measured, not after
     const MachineReport m = machine_report(o->grid, o->reps);
     std::cout << m.text();
     if (!o->json_out.empty()) write_text_atomic(o->json_out, m.to_json().dump(2) + "\n");
