@@ -69,6 +69,21 @@ def read_json(path):
         return json.load(f)
 
 
+def measure(a, key):
+    """A measure of metrics.json's "all" as the card shows it. Null where it was not computed
+    exactly: Wasserstein past the exact assignment's size has a subsample estimate beside it
+    (core/metrics/evaluation.cpp), said as one; anything else null is "n/a"."""
+    v = a.get(key)
+    if isinstance(v, (int, float)):
+        return f"{v:.3g}"
+    estimate = a.get(key + "_estimate")
+    if isinstance(estimate, (int, float)):
+        sample = a.get(key + "_sample")
+        of = f", subsamples of {sample[0]} and {sample[1]} points" if isinstance(sample, list) and len(sample) == 2 else ""
+        return f"&asymp; {estimate:.3g} (estimate{of})"
+    return "n/a"
+
+
 def card(run_dir):
     for need in ("run.json", "exemplar_vs_output.png"):
         if not os.path.exists(os.path.join(run_dir, need)):
@@ -91,14 +106,14 @@ def card(run_dir):
         rows.append(("points", counts))
         for key, label in (("pcf_mse", "PCF MSE"), ("wasserstein", "Wasserstein"), ("chamfer", "Chamfer")):
             if key in a:
-                rows.append((label, f"{a[key]:.3g}"))
+                rows.append((label, measure(a, key)))
     # The verdict per row: all points, each class, each pair of classes (a multi-class pattern
     # can pass on all points and fail on a class: the segregation unmarked K cannot see).
     for r in m.get("verdict", {}).get("rows", []):
         row = {"all": "all points", "class": f"class {r.get('class')}", "pair": f"classes {r.get('ci')}-{r.get('cj')}"}
         label = row.get(r.get("row"), str(r.get("row")))
         if r.get("p") is None:
-            rows.append((f"K test, {label}", "not decided (too few points)"))
+            rows.append((f"K test, {label}", "cannot judge: " + html.escape(str(r.get("reason") or "too few points"))))
         else:
             word = "same K-function" if r.get("pass") else "<b>K-function differs</b>"
             rows.append((f"K test, {label}", f"{word} (p = {r['p']:.3g})"))
@@ -136,6 +151,36 @@ ppsynth synthesized from it (right, 2 x 2 the exemplar's area). {what}</p>
 """
 
 
+def check_out(out, force):
+    """Refuses, before any synthesis, a page that could not be written in the end."""
+    if os.path.isdir(out):
+        sys.exit(f"gallery: -o {out} is a directory; name the HTML file to write")
+    if os.path.lexists(out) and not force:
+        sys.exit(f"gallery: {out} exists; --force replaces it")
+    folder = os.path.dirname(os.path.abspath(out))
+    if not os.path.isdir(folder):
+        sys.exit(f"gallery: -o {out}: no directory {folder} to write it in")
+    if not os.access(folder, os.W_OK):
+        sys.exit(f"gallery: -o {out}: the directory {folder} is not writable")
+
+
+def write_page(page, out):
+    """Writes `page` to `out` whole or not at all: the temporary file beside it is removed
+    on every way out (a failed rename included)."""
+    f = tempfile.NamedTemporaryFile("w", dir=os.path.dirname(os.path.abspath(out)), delete=False, suffix=".partial")
+    try:
+        with f:
+            f.write(page)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(f.name, 0o666 & ~umask)  # as an ordinary new file, not the scratch file's 0600
+        os.replace(f.name, out)
+    except BaseException:
+        if os.path.exists(f.name):
+            os.unlink(f.name)
+        raise
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("-o", "--out", required=True, help="the HTML page to write")
@@ -145,8 +190,7 @@ def main():
     ap.add_argument("--threads", type=int, default=0, help="threads per synthesis (default: PPSYNTH_THREADS or every core)")
     ap.add_argument("--force", action="store_true", help="replace an existing page")
     args = ap.parse_args()
-    if os.path.exists(args.out) and not args.force:
-        sys.exit(f"gallery: {args.out} exists; --force replaces it")
+    check_out(args.out, args.force)
     if args.runs and (args.preset or args.work):
         sys.exit("gallery: --runs shows finished runs; --preset and --work go with new syntheses")
     if args.work and os.path.exists(args.work) and os.listdir(args.work):
@@ -173,13 +217,10 @@ def main():
     cards = "\n".join(card(d) for d in sorted(dirs, key=order))
     command = "scripts/gallery.py " + " ".join(sys.argv[1:])
     page = PAGE.format(what=what, when=datetime.date.today().isoformat(), command=html.escape(command), cards=cards)
-    out_dir = os.path.dirname(os.path.abspath(args.out))
-    with tempfile.NamedTemporaryFile("w", dir=out_dir, delete=False, suffix=".partial") as f:
-        f.write(page)
-    umask = os.umask(0)
-    os.umask(umask)
-    os.chmod(f.name, 0o666 & ~umask)  # as an ordinary new file, not the scratch file's 0600
-    os.replace(f.name, args.out)
+    try:
+        write_page(page, args.out)
+    except OSError as e:
+        sys.exit(f"gallery: cannot write {args.out}: {e.strerror or e}")
     if scratch:
         scratch.cleanup()
     print(f"gallery: {len(dirs)} exemplars -> {args.out}")

@@ -1,18 +1,24 @@
 """scripts/gallery.py: finished runs (or new quick syntheses) on one self-contained page: a card
-per run with its picture embedded, written whole, never over an existing page without --force."""
+per run with its picture embedded, written whole, never over an existing page without --force;
+a measure not computed shows as such; a page that could not be written is refused before any work."""
+import importlib.util
+import json
 import os
 import re
+import shutil
 import subprocess
 import sys
+
+import pytest
 
 from conftest import BINARY, LINES, SOURCE_DIR, command
 
 SCRIPT = os.path.join(SOURCE_DIR, "scripts", "gallery.py")
 
 
-def gallery(*args):
+def gallery(*args, bin=BINARY):
     return subprocess.run([sys.executable, SCRIPT, *map(str, args)], capture_output=True, text=True,
-                          env={**os.environ, "PPSYNTH_BIN": BINARY, "PPSYNTH_THREADS": "1"})
+                          env={**os.environ, "PPSYNTH_BIN": str(bin), "PPSYNTH_THREADS": "1"})
 
 
 def test_a_card_per_run_with_its_picture_and_measures(tmp_path):
@@ -37,3 +43,57 @@ def test_it_refuses_what_it_would_lose(tmp_path):
     p = gallery("-o", tmp_path / "new.html", "--runs", tmp_path)  # not a run directory
     assert p.returncode != 0 and "not a finished run directory" in p.stderr
     assert not (tmp_path / "new.html").exists()
+
+
+@pytest.fixture(scope="module")
+def one_run(tmp_path_factory):
+    run = tmp_path_factory.mktemp("gallery_run") / "run"
+    command("synthesize", "--exemplar", LINES, "--quick", "--seed", 1, "-o", run, "-q")
+    return run
+
+
+def test_a_measure_not_computed_shows_as_such(tmp_path, one_run):
+    # A large exemplar's Wasserstein is null beside its subsample estimate (was a TypeError).
+    run = tmp_path / "run"
+    shutil.copytree(one_run, run)
+    metrics = json.loads((run / "metrics.json").read_text())
+    metrics["all"].update(wasserstein=None, wasserstein_estimate=0.0123, wasserstein_sample=[500, 600], chamfer=None)
+    (run / "metrics.json").write_text(json.dumps(metrics))
+    page = tmp_path / "g.html"
+    p = gallery("-o", page, "--runs", run)
+    assert p.returncode == 0, p.stderr
+    text = page.read_text()
+    assert "&asymp; 0.0123 (estimate, subsamples of 500 and 600 points)" in text
+    assert re.search(r"<th>Chamfer</th><td>n/a</td>", text)
+
+
+def test_the_page_is_checked_before_any_synthesis(tmp_path):
+    # A stand-in for ppsynth that leaves a mark when it runs: it must not run at all.
+    mark = tmp_path / "ran"
+    fake = tmp_path / "fake-ppsynth"
+    fake.write_text(f"#!/bin/sh\ntouch {mark}\nexit 1\n")
+    fake.chmod(0o755)
+    for out, says in ((tmp_path / "nosuchdir" / "x.html", "no directory"), (tmp_path, "is a directory")):
+        p = gallery("-o", out, "--force", bin=fake)
+        assert p.returncode != 0 and str(out) in p.stderr and says in p.stderr, p.stderr
+        assert not mark.exists()  # was: every exemplar synthesized first, then the crash
+
+
+def test_a_directory_as_the_page_leaves_nothing_behind(tmp_path, one_run):
+    p = gallery("-o", tmp_path, "--force", "--runs", one_run)
+    assert p.returncode != 0 and "is a directory" in p.stderr
+    assert not [f for f in os.listdir(tmp_path.parent) if f.endswith(".partial")]  # was left beside it
+
+
+def test_a_failed_write_removes_its_partial_file(tmp_path, monkeypatch):
+    spec = importlib.util.spec_from_file_location("gallery", SCRIPT)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+
+    def refuse(src, dst):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(module.os, "replace", refuse)
+    with pytest.raises(OSError):
+        module.write_page("<html></html>", str(tmp_path / "g.html"))
+    assert os.listdir(tmp_path) == []
