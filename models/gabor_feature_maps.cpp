@@ -297,8 +297,10 @@ const char* gabor_maps_path_name(GaborMapsPath path) {
 GaborFeatureMapsImpl::GaborFeatureMapsImpl(GaborMapsOptions options) : opt_(options) {
   TORCH_CHECK(opt_.res >= 2, "GaborFeatureMaps: res must be >= 2");
   TORCH_CHECK(opt_.k >= 1, "GaborFeatureMaps: k must be >= 1");
-  auto pos = FeatureGrid{opt_.res}.positions();
-  grid_ = register_buffer("grid", torch::from_blob(pos.data(), {opt_.res * opt_.res, 2}, torch::kFloat32).clone());
+  TORCH_CHECK(opt_.rows == 0 || opt_.rows >= 2, "GaborFeatureMaps: rows must be 0 (square) or >= 2");
+  const FeatureGrid g{opt_.res, opt_.rows};
+  auto pos = g.positions();
+  grid_ = register_buffer("grid", torch::from_blob(pos.data(), {int64_t{g.num_rows()} * opt_.res, 2}, torch::kFloat32).clone());
 }
 
 int GaborFeatureMapsImpl::channels(int A) const {
@@ -327,7 +329,7 @@ torch::Tensor GaborFeatureMapsImpl::forward(const torch::Tensor& points, const t
   } else {
     out = gabor_maps_tensor_ops(points, w, grid, grid_knn_tensor_ops(points, grid, mp->k, opt_.periodic), *mp);
   }
-  return out.view({1, static_cast<int64_t>(mp->channels.size()), opt_.res, opt_.res});
+  return out.view({1, static_cast<int64_t>(mp->channels.size()), FeatureGrid{opt_.res, opt_.rows}.num_rows(), opt_.res});
 }
 
 torch::Tensor gabor_maps_reference(const torch::Tensor& points, const torch::Tensor& weights,

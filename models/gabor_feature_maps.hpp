@@ -1,5 +1,6 @@
 #pragma once
-// GaborFeatureMaps: points -> 1 x C x res x res feature maps (paper Eq. 5, method.md §2).
+// GaborFeatureMaps: points -> 1 x C x rows x res feature maps (paper Eq. 5, method.md §2;
+// rows = res but on a rectangle output's grid, models/feature_grid.hpp).
 //
 //   h_c(g) = (1/k) * sum over the k nearest points p_i of grid position g:
 //              w_i * exp(-|p_i - g|^2 / (2 sigma^2)) * cos(2 pi nu_c . (p_i - g))^gamma_c
@@ -58,6 +59,7 @@ struct GaborMapsOptions {
   bool spatial_only = false;
   bool periodic = false;   // unit torus: nearest images, minimum-image offsets
   GaborMapsPath path = GaborMapsPath::automatic;
+  int rows = 0;            // grid positions along y at the columns' spacing; 0: res (the square)
 };
 
 // The implementation `requested` resolves to for tensors on `device` (an error for the CPU
@@ -77,8 +79,8 @@ class GaborFeatureMapsImpl : public torch::nn::Module {
  public:
   explicit GaborFeatureMapsImpl(GaborMapsOptions options);
   // points: N x 2 (float or double, may require grad); weights: N x A or undefined;
-  // sigma in exemplar units; jitter: res*res x 2 offsets of the grid positions or undefined.
-  // Returns 1 x C x res x res.
+  // sigma in exemplar units; jitter: rows*res x 2 offsets of the grid positions or undefined.
+  // Returns 1 x C x rows x res.
   torch::Tensor forward(const torch::Tensor& points, const torch::Tensor& weights, double sigma,
                         const torch::Tensor& jitter = {});
   int channels(int num_attributes) const;
@@ -87,7 +89,7 @@ class GaborFeatureMapsImpl : public torch::nn::Module {
 
  private:
   GaborMapsOptions opt_;
-  torch::Tensor grid_;  // res*res x 2, row-major, x along columns
+  torch::Tensor grid_;  // rows*res x 2, row-major, x along columns
 };
 TORCH_MODULE(GaborFeatureMaps);
 

@@ -21,6 +21,7 @@ class GaborRasterizer : public Rasterizer {
 std::unique_ptr<Rasterizer> make(const json& p, const std::string& key, const RasterizerArgs& a, bool spatial_only) {
   GaborMapsOptions o;
   o.res = a.res;
+  o.rows = a.rows;
   o.upscale = a.upscale;
   o.k = a.k;
   o.divisor = a.divisor;

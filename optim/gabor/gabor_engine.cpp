@@ -60,6 +60,12 @@ PointSet initial_output(const PointSet& ex, const SynthesisContext& ctx, const I
   const auto radius_col = ex.attribute_index("radius");
   const auto counts = shape.class_counts(ex, area);
   index_of_class.assign(K, {});
+  if (!ctx.initialization) {
+    const auto ex_counts = ex.class_counts();
+    size_t total = 0;
+    for (int c = 0; c < K; ++c) total += shape.rectangle ? counts[c] : ex_counts[c] * static_cast<size_t>(u * u);
+    log_initialization(total, shape.rectangle ? area : canvas);
+  }
   for (int c = 0; c < K; ++c) {
     PointSet ex_c = ex.subset_class(c);
     if (ex_c.empty()) continue;
@@ -132,8 +138,7 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
   if (!shape_.rectangle) {
     plan_ = class_sigma_plan(exemplar, s_, out_index);
   } else {
-    layout_ = window_layout(shape_.canvas(), shape_.moving_area(), s_.out_scale, s_.window_margin, 3 * s_.sigmas.front(),
-                            "method.window");
+    layout_ = window_layout(shape_.canvas(), shape_.moving_area(), s_.window, s_.window_margin, 3 * s_.sigmas.front());
     plan_ = window_plan(exemplar, s_, layout_);
     state_.final_points.assign(out_.size(), 0);
     std::fill(state_.final_points.begin() + static_cast<std::ptrdiff_t>(pad_begin_), state_.final_points.end(), 1);
@@ -143,8 +148,9 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
   // Made before the list below: what it may throw (a bad PPSYNTH_GABOR_MAPS) is not thrown
   // from inside a braced list of JSON values.
   json runtime = runtime_record();
-  stats_ = {{"grid_res", s_.res}, {"output_grid_res", s_.out_res}, {"grid_res_per_sigma", s_.sigma_res},
-            {"output_grid_res_per_sigma", s_.sigma_out_res}, {"k", s_.k}, {"sigmas", s_.sigmas},
+  stats_ = {{"grid_res", s_.res}, {"output_grid_res", s_.out_res}, {"output_grid_rows", s_.out_rows},
+            {"grid_res_per_sigma", s_.sigma_res}, {"output_grid_res_per_sigma", s_.sigma_out_res},
+            {"output_grid_rows_per_sigma", s_.sigma_out_rows}, {"k", s_.k}, {"sigmas", s_.sigmas},
             {"mean_nn_distance", s_.mean_nn_distance},
             {"map_terms", json::object()}, {"terms", json::object()}, {"runtime", std::move(runtime)}};
   if (shape_.rectangle) {
@@ -153,8 +159,8 @@ GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const Syn
     stats_["canvas"] = {c.x0, c.y0, c.x1, c.y1};
     stats_["canvas_points"] = out_.size();
     stats_["frozen_pad_points"] = out_.size() - pad_begin_;
-    stats_["windows"] = {{"nx", layout_.nx}, {"ny", layout_.ny}, {"side", layout_.side}, {"margin", layout_.margin},
-                         {"grid", s_.out_res}};
+    stats_["windows"] = {{"nx", layout_.nx}, {"ny", layout_.ny}, {"width", layout_.size.width}, {"height", layout_.size.height},
+                         {"margin", layout_.margin}, {"grid", {s_.out_res, s_.out_rows}}};
   }
   for (const auto& t : map_terms_) stats_["map_terms"][t.name] = t.weight;
   for (const auto& t : terms_) stats_["terms"][t.name] = t.weight;

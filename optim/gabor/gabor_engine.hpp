@@ -22,9 +22,9 @@
 // the exemplar, the seed and the stage, and is rebuilt on entering a stage.
 //
 // Two plans: the paper's u x u unit square read as a torus (optim/gabor/stage_plan.hpp), and a
-// rectangle in exemplar units synthesized window by window on a canvas padded for clean
-// borders, then cropped, or with the pad held by the exemplar's own points, frozen
-// (optim/gabor/window_plan.hpp; core/output_shape.hpp).
+// rectangle in exemplar units synthesized on one grid over a canvas padded for clean borders
+// (window by window past the memory budget), then cropped, or with the pad held by the
+// exemplar's own points, frozen (optim/gabor/window_plan.hpp; core/output_shape.hpp).
 #include <chrono>
 #include <memory>
 #include <random>

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "core/config/param_bounds.hpp"
 #include "core/memory_budget.hpp"
@@ -133,31 +134,41 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
     check_map_terms_in_windows(p["map_terms"]);
   }
   if (!shape.rectangle) {
-    s.out_res = s.upscale * s.res;
+    s.out_res = s.out_rows = s.upscale * s.res;
     s.out_scale = s.upscale;
     for (int r : s.sigma_res) s.sigma_out_res.push_back(s.upscale * r);
-  } else {  // a window: at most `pixels` across, at most the canvas
+    s.sigma_out_rows = s.sigma_out_res;
+  } else {  // the canvas on one grid, or the fewest windows within the budget
     const Domain c = shape.canvas();
-    const double side = std::min({window.pixels / static_cast<double>(s.res), c.width(), c.height()});
-    s.out_res = std::max(8, static_cast<int>(std::lround(side * s.res)));
-    s.out_scale = side;
-    for (int r : s.sigma_res) s.sigma_out_res.push_back(std::max(8, static_cast<int>(std::lround(side * r))));
-    if (!window.margin) {
-      s.window_margin = window.auto_margin(s.sigmas, s.sigma_res);
-      // --quick's coarser grid reaches farther than the full settings' (lines: 1.14 against
-      // 0.60 exemplar units); where its margin leaves the windows no interior, the full
-      // settings' is taken, so that a smoke run takes every output the real run takes.
-      if (quick && !windows_fit(c, side, s.window_margin)) {
-        const auto sigmas = sigma_schedule(s.mean_nn_distance, o.c1, o.c2, full_num_sigmas);
-        s.window_margin = std::min(s.window_margin, window.auto_margin(sigmas, grid.per_stage(sigmas, full_res)));
-      }
-    } else {
-      s.window_margin = *window.margin;
+    // The finest sigma's grid is the largest: the budget is its.
+    const double budget = std::pow(static_cast<double>(window.pixels), 2);
+    s.window_margin = window.margin ? *window.margin : window.auto_margin(s.sigmas, s.sigma_res);
+    std::optional<WindowSize> size = window_size(c, budget, s.res, s.window_margin);
+    // --quick's coarser grid reaches farther than the full settings' (lines: 1.14 against
+    // 0.60 exemplar units); where its margin leaves the windows no interior, the full
+    // settings' is taken, so that a smoke run takes every output the real run takes.
+    if (!size && quick && !window.margin) {
+      const auto sigmas = sigma_schedule(s.mean_nn_distance, o.c1, o.c2, full_num_sigmas);
+      s.window_margin = std::min(s.window_margin, window.auto_margin(sigmas, grid.per_stage(sigmas, full_res)));
+      size = window_size(c, budget, s.res, s.window_margin);
+    }
+    if (!size)
+      throw config_error("method.window", "windows of at most " + std::to_string(window.pixels) + " x " + std::to_string(window.pixels) +
+                                              " grid positions cannot hold two margins of " + std::to_string(s.window_margin) +
+                                              " exemplar units and an interior (the maps' reach and the network's receptive " +
+                                              "field); use larger windows (method.window.pixels) or a larger output");
+    s.window = *size;
+    s.out_scale = size->width;
+    std::tie(s.out_res, s.out_rows) = window_grid(size->width, size->height, s.res);
+    for (int r : s.sigma_res) {
+      const auto [cols, rows] = window_grid(size->width, size->height, r);
+      s.sigma_out_res.push_back(cols);
+      s.sigma_out_rows.push_back(rows);
     }
     s.statistics_in_output = window.statistics_in_output;
   }
   {  // one iteration keeps the output grid's maps and every layer's activations and gradients
-    const double cells = std::pow(static_cast<double>(s.out_res), 2);
+    const double cells = static_cast<double>(s.out_res) * s.out_rows;
     // The network's parameters as its registry resolves them (its declared defaults under the
     // user's). A network without `channels` is costed as the largest fixed bank's (12 filters
     // per input map; identity: 1), so the estimate never falls short.
@@ -166,7 +177,7 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
     const double net_ch = net.contains("channels") ? net["channels"].get<double>() : 12 * in_ch;
     const double layers = net.contains("depth") ? net["depth"].get<double>() : 1;
     check_memory(cells * 4.0 * (3 * in_ch + 6 * net_ch * layers + s.k * in_ch),
-                 "an output grid of " + std::to_string(s.out_res) + " x " + std::to_string(s.out_res) +
+                 "an output grid of " + std::to_string(s.out_res) + " x " + std::to_string(s.out_rows) +
                      (shape.rectangle ? " (method.window.pixels)"
                                       : " (method.grid.res " + std::to_string(s.res) + " x upscale " + std::to_string(s.upscale) + ")"));
   }
@@ -185,14 +196,15 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
 }
 
 GaborPipeline::GaborPipeline(const json& p, const GaborSettings& s, uint64_t seed, torch::Device device)
-    : p_(p), s_(s), seed_(seed), device_(device), loss_(p["losses"], "method.losses"), res_(s.sigma_res.at(0)), out_res_(s.sigma_out_res.at(0)) {
+    : p_(p), s_(s), seed_(seed), device_(device), loss_(p["losses"], "method.losses"), res_(s.sigma_res.at(0)),
+      out_res_(s.sigma_out_res.at(0)), out_rows_(s.sigma_out_rows.at(0)) {
   build_rasterizers();
   in_channels_ = ex_rast_->channels(static_cast<int>(s.attr_cols.size()));
   redraw_network(seed);
 }
 
 void GaborPipeline::build_rasterizers() {
-  RasterizerArgs ex_args{res_, 1.0, s_.k}, out_args{out_res_, s_.out_scale, s_.k, true};
+  RasterizerArgs ex_args{res_, 1.0, s_.k}, out_args{out_res_, s_.out_scale, s_.k, true, 0, out_rows_};
   ex_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", ex_args, &resolved_rast_);
   out_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", out_args);
   if (s_.measure_tiles()) {
@@ -211,10 +223,11 @@ void GaborPipeline::set_neighbors(int k) {
 }
 
 void GaborPipeline::set_grid(int sigma_index) {
-  const int r = s_.sigma_res.at(sigma_index), o = s_.sigma_out_res.at(sigma_index);
-  if (r == res_ && o == out_res_) return;
+  const int r = s_.sigma_res.at(sigma_index), o = s_.sigma_out_res.at(sigma_index), rows = s_.sigma_out_rows.at(sigma_index);
+  if (r == res_ && o == out_res_ && rows == out_rows_) return;
   res_ = r;
   out_res_ = o;
+  out_rows_ = rows;
   build_rasterizers();
 }
 
@@ -240,10 +253,10 @@ void GaborPipeline::set_targets(const torch::Tensor& ex_points, const torch::Ten
 
 torch::Tensor GaborPipeline::draw_jitter(std::mt19937_64& rng, bool tile) const {
   if (!s_.jitter || !out_rast_->uses_jitter()) return {};
-  const int64_t R = tile ? res_ : out_res_;
-  const float amp = 1.0f / static_cast<float>(R + 1);
+  const int64_t R = tile ? res_ : out_res_, rows = tile ? res_ : out_rows_;
+  const float amp = 1.0f / static_cast<float>(R + 1);  // the columns' spacing, the rows' too
   std::uniform_real_distribution<float> unif(-1.0f, 1.0f);
-  auto j = torch::empty({R * R, 2});
+  auto j = torch::empty({rows * R, 2});
   float* ptr = j.data_ptr<float>();
   for (int64_t i = 0; i < j.numel(); ++i) ptr[i] = unif(rng) * amp;
   return j.to(device_);

@@ -18,6 +18,7 @@
 #include "models/rasterizer.hpp"
 #include "optim/gabor/border_relax_options.hpp"
 #include "optim/gabor/gabor_options.hpp"
+#include "optim/gabor/window_plan.hpp"
 
 namespace ppsynth {
 
@@ -32,10 +33,13 @@ struct GaborSettings {
   double mean_nn_distance = 0;  // d of the exemplar (all classes)
   int res = 0;                  // exemplar grid (positions per exemplar unit)
   int upscale = 0;              // the paper's u (1 for rectangle outputs: exemplar units)
-  // The output raster: `out_res` positions across a square of `out_scale` exemplar units.
-  // The paper's: the unit square, u * res across u. Rectangles: one window (optim/gabor/window_plan.hpp).
-  int out_res = 0;
+  // The output raster: `out_res` columns and `out_rows` rows at one spacing over a grid
+  // `out_scale` exemplar units wide. The paper's: the unit square, u * res across u.
+  // Rectangles: the canvas, or one of its windows past the budget (`window`,
+  // optim/gabor/window_plan.hpp), rows x columns in the exemplar's aspect.
+  int out_res = 0, out_rows = 0;
   double out_scale = 0;
+  WindowSize window;            // rectangles: the windows' size and count (one: the canvas)
   double window_margin = 0;     // rectangles: exemplar units reserved on each side of a window's interior
   bool statistics_in_output = false;  // rectangles: the losses measure the grid's part inside the output only
   // method.measure (the paper's u x u torus only for all but "grid"): "grid" measures the
@@ -50,7 +54,7 @@ struct GaborSettings {
   // method.grid.per_sigma coarser grids at the coarser sigmas, keeping the finest stage's
   // grid positions per sigma (the Gabor frequencies scale with 1/sigma, so each stage's
   // maps are sampled as finely as the finest stage's).
-  std::vector<int> sigma_res, sigma_out_res;
+  std::vector<int> sigma_res, sigma_out_res, sigma_out_rows;
   int k = 0;                    // neighbors per grid position: min(M, k)
   bool k_per_stage = true;      // k = min(k, exemplar points of the stage's classes)
   std::vector<double> sigmas;   // coarse -> fine
@@ -84,7 +88,7 @@ class GaborPipeline {
   Features features(const torch::Tensor& maps) { return net_->forward(maps); }
   torch::Tensor loss(const Features& f) { return loss_.forward(f); }
   // Independent uniform offsets in [-1, 1] / (R + 1) per grid position and axis of the output
-  // grid (R = out_res) or of a tile (R = res), or an undefined tensor when jitter is off or
+  // grid (R = out_res, rows x R positions) or of a tile (R = res, R x R), or an undefined tensor when jitter is off or
   // meaningless for the rasterizer. Drawn on the CPU from `rng` (the same offsets on every
   // device, and the generator's state is what a checkpoint keeps), then moved to the device.
   torch::Tensor draw_jitter(std::mt19937_64& rng, bool tile = false) const;
@@ -94,7 +98,6 @@ class GaborPipeline {
   void set_neighbors(int k);
   // The grid of sigma stage `sigma_index` (GaborSettings::sigma_res; rebuilds if it changes).
   void set_grid(int sigma_index);
-  int output_grid() const { return out_res_; }
   const torch::Device& device() const { return device_; }
 
   const CompositeLoss& composite() const { return loss_; }
@@ -113,7 +116,7 @@ class GaborPipeline {
   CompositeLoss loss_;
   json resolved_rast_, resolved_net_;
   int in_channels_ = 10;
-  int res_ = 0, out_res_ = 0;  // the current stage's grids
+  int res_ = 0, out_res_ = 0, out_rows_ = 0;  // the current stage's grids
   void build_rasterizers();
 };
 

@@ -85,15 +85,16 @@ torch::Tensor WindowGeometry::confine(const torch::Tensor& moving) const {
   // The bounds as scalars: nothing is made or copied to the device per iteration.
   const Domain& g = w_.grid;
   const Domain& m = w_.movable;
-  const auto x = moving.select(1, 0).clamp((m.x0 - g.x0) / g.width(), (m.x1 - g.x0) / g.width());
-  const auto y = moving.select(1, 1).clamp((m.y0 - g.y0) / g.height(), (m.y1 - g.y0) / g.height());
+  const double unit = g.width();  // of both axes (to_local)
+  const auto x = moving.select(1, 0).clamp((m.x0 - g.x0) / unit, (m.x1 - g.x0) / unit);
+  const auto y = moving.select(1, 1).clamp((m.y0 - g.y0) / unit, (m.y1 - g.y0) / unit);
   return moving + (torch::stack({x, y}, 1) - moving).detach();
 }
 
 Vec2 WindowGeometry::to_output(double u, double v) const {
   const Domain& g = w_.grid;
   const Domain& m = w_.movable;
-  return {std::clamp(g.x0 + g.width() * u, m.x0, m.x1), std::clamp(g.y0 + g.height() * v, m.y0, m.y1)};
+  return {std::clamp(g.x0 + g.width() * u, m.x0, m.x1), std::clamp(g.y0 + g.width() * v, m.y0, m.y1)};
 }
 
 std::vector<double> WindowGeometry::part_inside(const Domain& output) const {
@@ -112,7 +113,7 @@ PointSet WindowGeometry::pattern(const torch::Tensor& local, int64_t frozen, con
     // Moving points as the stage's end writes them (held inside the movable part); frozen ones
     // where they are, which may be past the grid: those are the window's context, not its
     // pattern, and the filter leaves them out.
-    const Vec2 p = i < frozen ? Vec2{g.x0 + g.width() * a[i][0], g.y0 + g.height() * a[i][1]} : to_output(a[i][0], a[i][1]);
+    const Vec2 p = i < frozen ? Vec2{g.x0 + g.width() * a[i][0], g.y0 + g.width() * a[i][1]} : to_output(a[i][0], a[i][1]);
     if (inside(ps.domain(), p)) ps.add(p);
   }
   return ps;

@@ -5,7 +5,7 @@
 //
 //   TorusGeometry   the paper's u x u output read as the unit torus: the plan names the
 //                   group's points, positions wrap, the maps' grid is the output itself
-//   WindowGeometry  one window of a large canvas (optim/gabor/window_plan.hpp): its points are
+//   WindowGeometry  a rectangle output's canvas, or one window of it (optim/gabor/window_plan.hpp): its points are
 //                   chosen by position as its group starts, held inside its movable rectangle,
 //                   and final once inside its interior at the group's end
 #include <torch/torch.h>
@@ -20,8 +20,9 @@ namespace ppsynth {
 
 struct Stage;
 
-// A window's rectangles in output coordinates. The maps' grid covers the square `grid`;
-// positions enter the maps in its local coordinates, (p - corner) / side. The group's moving
+// A window's rectangles in output coordinates. The maps' grid covers the rectangle `grid`;
+// positions enter the maps in its local coordinates, (p - corner) / width along both axes (the
+// grid's rows keep the columns' spacing, models/feature_grid.hpp). The group's moving
 // points are the class's points inside `movable` not yet final; frozen are the other points
 // of the stage's classes inside `context` (the grid and the reach of the maps beyond it).
 // Moving points stay inside `movable`; the ones inside `interior` when the group ends are
@@ -37,7 +38,7 @@ class StageGeometry {
   virtual ~StageGeometry() = default;
   virtual int index() const = 0;      // window i of count() (0-based): progress and snapshots
   virtual int count() const = 0;
-  virtual Domain grid() const = 0;    // the maps' square in output coordinates
+  virtual Domain grid() const = 0;    // the maps' rectangle in output coordinates (its width: the local unit)
   virtual bool periodic() const = 0;  // the pattern the stopping rule judges is a torus
   // The group's moving and frozen points (output indices) as it starts.
   virtual void choose_points(const Stage& stage, const PointSet& out, const std::vector<uint8_t>& final_points,

@@ -12,15 +12,18 @@ constexpr const char* k_key = "method.window";
 }  // namespace
 
 nlohmann::json WindowOptions::defaults() {
-  // Rectangle outputs run window by window (optim/gabor/window_plan.hpp): windows of at most
-  // `pixels` grid positions across; a margin of 3 sigma_max + `receptive_field` positions (the
-  // network's half-width) on each side of an interior (null or "auto"), or a length in
-  // exemplar units. `statistics`: where the losses measure the output's features: "grid" (the
+  // Rectangle outputs (optim/gabor/window_plan.hpp): the canvas is one grid of rows x columns
+  // positions when they number at most `pixels` x `pixels` (the budget: an iteration's memory
+  // goes with its grid positions, core/memory_budget.hpp's estimate in gabor_pipeline.cpp),
+  // whatever its aspect; past it, the fewest rectangular windows of at most that many, with a
+  // margin of 3 sigma_max + `receptive_field` positions (the network's half-width) on each
+  // side of an interior (null or "auto"), or a length in exemplar units. `statistics`: where
+  // the losses measure the output's features: "grid" (the
   // whole window grid, as the paper measures its square) or "output" (the grid's part inside
   // the output rectangle: the pad of a clean or context border is seen by the maps but not
   // measured, so its outer edge, where plane maps lose a point's influence, asks nothing of
   // the rectangle).
-  return {{"pixels", 384}, {"margin", nullptr}, {"receptive_field", 16}, {"statistics", "grid"}};
+  return {{"pixels", 640}, {"margin", nullptr}, {"receptive_field", 16}, {"statistics", "grid"}};
 }
 
 nlohmann::json WindowOptions::bounds() { return {{"pixels", "int [16, 8192]"}, {"receptive_field", "int [0, 1000]"}}; }

@@ -1,6 +1,7 @@
 #pragma once
-// method.window, typed: how a rectangle output ("output": {"size"} or {"points"}) is cut into
-// windows (optim/gabor/window_plan.hpp), each parameter declared once, here, with its default
+// method.window, typed: the memory budget of a rectangle output's grid ("output": {"size"} or
+// {"points"}, or a rectangular exemplar) and how a canvas past it is cut into windows
+// (optim/gabor/window_plan.hpp), each parameter declared once, here, with its default
 // and its range (gabor_defaults() and gabor_bounds() list its block from defaults() and bounds()).
 #include <nlohmann/json.hpp>
 
@@ -10,7 +11,7 @@
 namespace ppsynth {
 
 struct WindowOptions {
-  int pixels = 0;                 // a window's grid positions across, at most
+  int pixels = 0;                 // a grid holds at most pixels x pixels positions, in any aspect
   std::optional<double> margin;   // exemplar units on each side of an interior; none: "auto"
   int receptive_field = 0;        // the network's half-width in grid positions ("auto" margins)
   bool statistics_in_output = false;  // the losses measure the grid's part inside the output only

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/error.hpp"
+#include "models/feature_grid.hpp"
 #include "optim/gabor/gabor_pipeline.hpp"
 
 namespace ppsynth {
@@ -15,12 +15,11 @@ struct AxisWindows {
   std::vector<double> interior0, interior1;
 };
 
-// Windows of `side` along [c0, c1]: the first starts at c0, the last ends at c1, the rest
+// `n` windows of `side` along [c0, c1]: the first starts at c0, the last ends at c1, the rest
 // evenly between; the interiors split each overlap in the middle.
-AxisWindows along_axis(double c0, double c1, double side, double margin) {
+AxisWindows along_axis(double c0, double c1, double side, int n) {
   AxisWindows a;
   const double L = c1 - c0;
-  const int n = L <= side * (1 + 1e-12) ? 1 : 1 + static_cast<int>(std::ceil((L - side) / (side - 2 * margin) - 1e-9));
   for (int i = 0; i < n; ++i) a.grid0.push_back(n == 1 ? c0 : c0 + i * (L - side) / (n - 1));
   for (int i = 0; i < n; ++i) {
     a.interior0.push_back(i == 0 ? c0 : 0.5 * (a.grid0[i - 1] + side + a.grid0[i]));
@@ -29,32 +28,68 @@ AxisWindows along_axis(double c0, double c1, double side, double margin) {
   return a;
 }
 
-}  // namespace
+// The side of n windows covering a length L with overlaps of exactly 2 margins (the least
+// area that keeps them): n side - (n - 1) 2 margin = L.
+double side_of(double L, int n, double margin) { return n == 1 ? L : (L + 2 * margin * (n - 1)) / n; }
 
-bool windows_fit(const Domain& canvas, double max_side, double margin) {
-  const double side = std::min({max_side, canvas.width(), canvas.height()});
-  // One window over the whole canvas has no neighbor to protect: any margin will do.
-  const bool one_window = canvas.width() <= side * (1 + 1e-12) && canvas.height() <= side * (1 + 1e-12);
-  return one_window || side > 2 * margin * 1.25;
+// The most windows along an axis of length L: each must keep an interior of more than half a
+// margin beyond its two margins (side > 2.5 margin) and a grid of at least 8 positions.
+int most_windows(double L, double margin, int res) {
+  int n = 1;
+  while (side_of(L, n + 1, margin) > 2.5 * margin && side_of(L, n + 1, margin) * res >= 8) ++n;
+  return n;
 }
 
-WindowLayout window_layout(const Domain& canvas, const Domain& moving_area, double max_side, double margin, double reach, const std::string& key) {
+}  // namespace
+
+std::pair<int, int> window_grid(double width, double height, int res) {
+  const int cols = std::max(8, static_cast<int>(std::lround(width * res)));
+  return {cols, grid_rows(cols, height / width)};
+}
+
+std::optional<WindowSize> window_size(const Domain& canvas, double max_positions, int res, double margin) {
+  const double W = canvas.width(), H = canvas.height();
+  auto fits = [&](double w, double h) {
+    const auto [cols, rows] = window_grid(w, h, res);
+    return static_cast<double>(cols) * rows <= max_positions;
+  };
+  if (fits(W, H)) return WindowSize{W, H, 1, 1};
+  // Every count along x with the fewest rows of windows that fit it (more rows, smaller
+  // windows: a bisection): the first of the fewest windows, then of the least area, wins (x
+  // first: the same canvas always gets the same plan).
+  std::optional<WindowSize> best;
+  const int most_x = most_windows(W, margin, res), most_y = most_windows(H, margin, res);
+  for (int nx = 1; nx <= most_x; ++nx) {
+    const double w = side_of(W, nx, margin);
+    if (!fits(w, side_of(H, most_y, margin))) continue;
+    int lo = 0, hi = most_y;  // fits at hi, not at lo (0: none)
+    while (hi - lo > 1) {
+      const int mid = (lo + hi) / 2;
+      (fits(w, side_of(H, mid, margin)) ? hi : lo) = mid;
+    }
+    const WindowSize s{w, side_of(H, hi, margin), nx, hi};
+    const long count = static_cast<long>(nx) * hi, best_count = best ? static_cast<long>(best->nx) * best->ny : 0;
+    if (!best || count < best_count || (count == best_count && s.width * s.height < best->width * best->height)) best = s;
+  }
+  return best;
+}
+
+WindowLayout window_layout(const Domain& canvas, const Domain& moving_area, const WindowSize& size, double margin, double reach) {
   WindowLayout w;
   w.canvas = canvas;
-  w.side = std::min({max_side, canvas.width(), canvas.height()});
+  w.size = size;
   w.margin = margin;
   w.reach = reach;
-  if (!windows_fit(canvas, max_side, margin))
-    throw config_error(key, "a window of " + std::to_string(w.side) + " exemplar units cannot hold two margins of " +
-                                std::to_string(margin) + " and an interior (the maps' reach and the network's receptive " +
-                                "field); use larger windows or a larger output");
-  const AxisWindows ax = along_axis(canvas.x0, canvas.x1, w.side, margin), ay = along_axis(canvas.y0, canvas.y1, w.side, margin);
-  w.nx = static_cast<int>(ax.grid0.size());
-  w.ny = static_cast<int>(ay.grid0.size());
+  const AxisWindows ax = along_axis(canvas.x0, canvas.x1, size.width, size.nx),
+                    ay = along_axis(canvas.y0, canvas.y1, size.height, size.ny);
+  w.nx = size.nx;
+  w.ny = size.ny;
   for (int j = 0; j < w.ny; ++j)
     for (int i = 0; i < w.nx; ++i) {
       StageWindow s;
-      s.grid = Domain{ax.grid0[i], ay.grid0[j], ax.grid0[i] + w.side, ay.grid0[j] + w.side};
+      // One window along an axis is the canvas's extent exactly (not x0 + width, a rounding away).
+      s.grid = Domain{ax.grid0[i], ay.grid0[j], w.nx == 1 ? canvas.x1 : ax.grid0[i] + size.width,
+                      w.ny == 1 ? canvas.y1 : ay.grid0[j] + size.height};
       s.interior = Domain{ax.interior0[i], ay.interior0[j], ax.interior1[i], ay.interior1[j]};
       s.movable = Domain{std::max(s.interior.x0, moving_area.x0), std::max(s.interior.y0, moving_area.y0),
                          std::min(s.grid.x1, moving_area.x1), std::min(s.grid.y1, moving_area.y1)};
@@ -73,7 +108,7 @@ SynthesisPlan window_plan(const PointSet& exemplar, const GaborSettings& s, cons
   for (const auto& w : layout.windows) {
     const auto geometry = std::make_shared<WindowGeometry>(w);
     for (Stage st : per_window) {
-      st.label = "window " + std::to_string(w.index + 1) + "/" + std::to_string(w.count) + ", " + st.label;
+      if (w.count > 1) st.label = "window " + std::to_string(w.index + 1) + "/" + std::to_string(w.count) + ", " + st.label;
       st.group += w.index * exemplar.num_classes();
       st.geometry = geometry;
       plan.push_back(std::move(st));

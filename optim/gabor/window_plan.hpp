@@ -1,10 +1,13 @@
 #pragma once
-// Large outputs, window by window. The canvas (the output, grown by the clean
-// border's pad) is covered by equal square windows in raster order (rows bottom to top,
-// left to right in a row). Each window runs the paper's plan (classes one after another,
-// sigmas coarse to fine) on its own grid, so memory is one window's whatever the canvas:
+// Rectangle outputs on one grid, or window by window past the memory budget. The canvas (the
+// output, grown by the clean border's pad) is one grid of rows x columns positions whenever
+// those positions fit the budget (method.window.pixels^2), whatever its aspect: the cost
+// follows the canvas's grid positions, not a window count. A canvas past the budget is
+// covered by the fewest equal rectangular windows that fit it, in raster order (rows bottom
+// to top, left to right in a row). Each window runs the paper's plan (classes one after
+// another, sigmas coarse to fine) on its own grid, so memory is one window's whatever the canvas:
 //
-//     +---------+---------+        window grid G: a square of `side` exemplar units
+//     +---------+---------+        window grid G: a rectangle of width x height exemplar units
 //     |   ...   |  next   |        interior I: its share of the canvas (the windows'
 //     +----+----+----+----+          interiors tile it); neighbors overlap by >= 2 margins
 //     |done| I  ->  overhang|      movable M = [I.x0, G.x1] x [I.y0, G.y1]: the window's part
@@ -19,6 +22,9 @@
 // (right, above), where points park or thin out as on any grid border and are moved again by
 // the next windows. Margin = the maps' reach (3 sigma_max) + the network's receptive field,
 // so a final point never sees a grid border. Interiors meet half-way in the overlaps.
+// One window (the canvas fits the budget) is the canvas's grid: I = M = the canvas.
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "core/point_set.hpp"
@@ -26,26 +32,38 @@
 
 namespace ppsynth {
 
+// The windows' size and count: nx x ny windows of width x height exemplar units.
+struct WindowSize {
+  double width = 0, height = 0;
+  int nx = 1, ny = 1;
+};
+
+// The grid of a window of `width` x `height` exemplar units at `res` positions per unit:
+// {columns, rows} (rows at the columns' spacing, models/feature_grid.hpp; at least 8 columns).
+std::pair<int, int> window_grid(double width, double height, int res);
+
+// The fewest windows (then the least area among as many) whose grids at `res` positions per
+// unit hold at most `max_positions` each and cover `canvas` with overlaps of >= 2 margins;
+// each side cut into several windows keeps an interior of more than half a margin. The
+// whole canvas when it fits. None when no window that small can hold its margins.
+std::optional<WindowSize> window_size(const Domain& canvas, double max_positions, int res, double margin);
+
 struct WindowLayout {
   Domain canvas;
-  double side = 0;     // of every window's grid (exemplar units)
+  WindowSize size;
   double margin = 0;   // reserved on each side of an interior (exemplar units)
   double reach = 0;    // of the maps beyond the grid, for frozen context (exemplar units)
   int nx = 1, ny = 1;
   std::vector<StageWindow> windows;  // raster order
 };
 
-// Windows of at most `max_side` on `canvas`; points move only inside `moving_area` (the
-// canvas, or the rectangle when the pad is frozen). side = min(max_side, canvas width, height);
-// one window per axis when it covers the axis, else the fewest whose overlaps are >= 2 margins.
-// Throws InputError naming `key` when the side cannot hold two margins (and more than one
-// window is needed).
-WindowLayout window_layout(const Domain& canvas, const Domain& moving_area, double max_side, double margin, double reach, const std::string& key);
-// True when window_layout takes windows of `max_side` with `margin` on `canvas`.
-bool windows_fit(const Domain& canvas, double max_side, double margin);
+// `size`'s windows on `canvas`: along each axis the first starts at the canvas's start, the
+// last ends at its end, the rest evenly between; points move only inside `moving_area` (the
+// canvas, or the rectangle when the pad is frozen).
+WindowLayout window_layout(const Domain& canvas, const Domain& moving_area, const WindowSize& size, double margin, double reach);
 
 // The stages of every window: the paper's class / sigma stages (class_sigma_plan's labels,
-// with "window i/n, " before them), one group per window and class.
+// with "window i/n, " before them when there are several), one group per window and class.
 SynthesisPlan window_plan(const PointSet& exemplar, const GaborSettings& settings, const WindowLayout& layout);
 
 }  // namespace ppsynth

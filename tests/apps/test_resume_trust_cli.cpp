@@ -169,11 +169,12 @@ TEST_CASE("--quick accepts every rectangle the full settings accept", "[apps][sy
     CHECK(r.status == 0);
     fs::remove_all(d / "x");
   }
-  // A strip one exemplar high with the published border: its square windows are one exemplar
-  // wide, too narrow for two margins of the full settings as for --quick, which now judges it
-  // with the same margins (the full settings refuse it with this very message).
-  const auto strip = run_ppsynth("synthesize " + kRuns + "lines.json --quick -q --size 4 1 --set output.border=published -o " +
-                                 (d / "x").string());
+  // A strip one exemplar high with the published border, past a budget of 24 x 24 positions
+  // (one grid of it would take 96 x 24): its windows are at most one exemplar wide, too narrow
+  // for two margins of the full settings as for --quick, which now judges it with the same
+  // margins (the full settings refuse it with this very message).
+  const auto strip = run_ppsynth("synthesize " + kRuns + "lines.json --quick -q --size 4 1 --set output.border=published "
+                                 "--set method.window.pixels=24 -o " + (d / "x").string());
   CHECK(strip.status == 2);
   CHECK_THAT(strip.output, Catch::Contains("two margins of 0.602165"));
   CHECK_FALSE(fs::exists(d / "x"));

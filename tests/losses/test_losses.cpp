@@ -54,6 +54,27 @@ TEST_CASE("FFT deep correlation equals the direct sum, values and exact gradient
   }
 }
 
+TEST_CASE("Deep correlation of a rectangle map: FFT equals the direct sum, each lag a mean over its overlap",
+          "[losses][correlation]") {
+  // A rectangle output's features are rows x columns (optim/gabor/window_plan.hpp): each lag is
+  // still a mean over the positions it pairs, so a constant map correlates to its square at
+  // every lag, whatever the aspect, and the targets' crop (the exemplar's layer) applies.
+  for (const auto& [h, w] : {std::pair{5, 9}, std::pair{9, 4}}) {
+    auto F = rnd({1, 2, h, w}, 40 + h);
+    auto fa = F.clone().set_requires_grad(true), fb = F.clone().set_requires_grad(true);
+    auto probe = rnd({2, 5, 7}, 41);
+    auto a = deep_correlation(fa, 5, 7);
+    auto b = deep_correlation_direct(fb, 5, 7);
+    INFO(h << " x " << w);
+    CHECK(torch::allclose(a, b, 1e-10, 1e-12));
+    (a * probe).sum().backward();
+    (b * probe).sum().backward();
+    CHECK(torch::allclose(fa.grad(), fb.grad(), 1e-9, 1e-12));
+    CHECK(torch::allclose(deep_correlation(torch::full({1, 1, h, w}, 3.0, torch::kFloat64), 5, 7),
+                          torch::full({1, 5, 7}, 9.0, torch::kFloat64), 1e-12, 1e-12));
+  }
+}
+
 TEST_CASE("Published correlation gradient: same values, last channel as kernel", "[losses][correlation]") {
   const int q = 4;
   auto F = rnd({1, 3, 6, 6}, 30);

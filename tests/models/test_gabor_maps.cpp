@@ -160,3 +160,32 @@ TEST_CASE("Periodic Gabor maps gradient matches finite differences near the bord
     CHECK(max_err < 1e-6 * std::max(1.0, max_grad));
   }
 }
+
+TEST_CASE("Rectangle Gabor maps: rows at the columns' spacing, each position the square grid's", "[models][gabor]") {
+  // A grid of 12 columns and 7 rows is the first 7 rows of the 12 x 12 square's positions, and
+  // its maps those rows of the square's maps, bit for bit; 12 x 19 runs past y = 1 at the same
+  // spacing and equals Eq. 5 there.
+  CHECK(grid_rows(12, 1.0) == 12);
+  CHECK(grid_rows(12, 0.5) == 6);  // 13 x 0.5 - 1 = 5.5 spacings up
+  CHECK(grid_rows(662, 414.0 / 662) == 414);
+  auto pts = random_points(30, 7) * torch::tensor({{1.0, 1.6}}, torch::kFloat64);
+  GaborMapsOptions square;
+  square.res = 12;
+  square.upscale = 2;
+  square.k = 6;
+  GaborMapsOptions wide = square, tall = square;
+  wide.rows = 7;
+  tall.rows = 19;
+  auto s = GaborFeatureMaps(square)->forward(pts, {}, 0.15, {});
+  auto w = GaborFeatureMaps(wide)->forward(pts, {}, 0.15, {});
+  auto t = GaborFeatureMaps(tall)->forward(pts, {}, 0.15, {});
+  CHECK(w.sizes() == torch::IntArrayRef({1, 10, 7, 12}));
+  CHECK(t.sizes() == torch::IntArrayRef({1, 10, 19, 12}));
+  CHECK(torch::equal(w, s.narrow(2, 0, 7)));
+  CHECK(torch::equal(t.narrow(2, 0, 12), s));
+  const FeatureGrid tall_grid{12, 19};
+  auto grid = torch::from_blob(tall_grid.positions().data(), {19 * 12, 2}, torch::kFloat32).to(torch::kFloat64);
+  CHECK(grid[19 * 12 - 1][1].item<double>() == Approx(19.0 / 13));  // the last row, 19 spacings up
+  auto ref = gabor_maps_reference(pts, {}, grid, 0.15 / 2, 1.5 * 2, 6, gabor_channels(0, false));
+  CHECK(torch::allclose(t.view({10, -1}), ref, 1e-12, 1e-12));
+}

@@ -76,6 +76,20 @@ void check_against_kernel(GaborMapsPath other, const torch::Device& device, torc
       CHECK(relative_difference(b.grad, a.grad) < tolerance);
     }
   }
+  // A rectangle grid (a rectangle output's: rows at the columns' spacing, past y = 1).
+  GaborMapsOptions kernel{res, 2.0, 6};
+  kernel.rows = 2 * res - 3;
+  GaborMapsOptions tested = kernel;
+  kernel.path = GaborMapsPath::cpu_kernel;
+  tested.path = other;
+  auto tall = pts * torch::tensor({{1.0, 1.8}}, dtype);
+  auto probe = uniform(10 * kernel.rows * res, 1, 5, dtype).view({1, 10, kernel.rows, res}) - 0.5;
+  const auto a = evaluate(kernel, tall, {}, {}, probe, 0.2, torch::kCPU);
+  const auto b = evaluate(tested, tall, {}, {}, probe, 0.2, device);
+  INFO("rectangle grid on " << device);
+  CHECK(b.maps.sizes() == a.maps.sizes());
+  CHECK(relative_difference(b.maps, a.maps) < tolerance);
+  CHECK(relative_difference(b.grad, a.grad) < tolerance);
 }
 
 bool cuda_here() {

@@ -36,7 +36,7 @@ TEST_CASE("method.grid: res 0 from the exemplar's spacing, coarser grids at coar
 TEST_CASE("method.window: an auto or fixed margin, the statistics, each error naming its key", "[optim][options]") {
   json block = WindowOptions::defaults();
   WindowOptions w = WindowOptions::resolve(block);
-  CHECK(w.pixels == 384);
+  CHECK(w.pixels == 640);  // a grid of at most 640 x 640 positions, in any aspect
   CHECK_FALSE(w.margin.has_value());
   CHECK_FALSE(w.statistics_in_output);
   // auto: 3 sigma plus the receptive field, where that reaches farthest.

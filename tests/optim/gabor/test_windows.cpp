@@ -103,14 +103,16 @@ TEST_CASE("output shapes: the paper's square, rectangles and point counts, with 
 TEST_CASE("window layout: interiors tile the canvas, overlaps hold two margins, the movable part stays in the grid",
           "[optim][windows]") {
   const Domain canvas{-0.5, -0.5, 9.5, 4.5};
-  const WindowLayout w = window_layout(canvas, canvas, 3.0, 0.5, 0.6, "method.window");
-  CHECK(w.side == 3.0);
-  CHECK(w.nx == 5);  // (10 - 3) / (3 - 1) = 3.5 -> 4 steps
-  CHECK(w.ny == 2);  // (5 - 3) / (3 - 1) = 1 step
+  // 5 x 2 windows of 3 x 3.5: overlaps of (5 x 3 - 10) / 4 = 1.25 and 3.5 x 2 - 5 = 2.
+  const WindowLayout w = window_layout(canvas, canvas, WindowSize{3.0, 3.5, 5, 2}, 0.5, 0.6);
+  CHECK(w.nx == 5);
+  CHECK(w.ny == 2);
+  REQUIRE(w.windows.size() == 10);
   double area = 0;
   for (const auto& s : w.windows) {
     area += s.interior.area();
     CHECK(s.grid.width() == Approx(3.0));
+    CHECK(s.grid.height() == Approx(3.5));
     CHECK(s.grid.x0 >= canvas.x0 - 1e-12);
     CHECK(s.grid.x1 <= canvas.x1 + 1e-12);
     // a final point never sees a grid border: a margin between interior and grid edge,
@@ -130,8 +132,17 @@ TEST_CASE("window layout: interiors tile the canvas, overlaps hold two margins, 
       const double ox = std::min(p.x1, q.x1) - std::max(p.x0, q.x0), oy = std::min(p.y1, q.y1) - std::max(p.y0, q.y0);
       CHECK_FALSE((ox > 1e-9 && oy > 1e-9));
     }
-  CHECK(window_layout(Domain{0, 0, 2, 2}, Domain{0, 0, 2, 2}, 3.0, 0.5, 0.6, "k").windows.size() == 1);
-  CHECK_THROWS_WITH(window_layout(canvas, canvas, 1.0, 0.5, 0.6, "method.window"), Catch::Contains("method.window"));
+  // A canvas within the budget is one window, the canvas itself, whatever its aspect.
+  const auto one = window_size(Domain{0, 0, 2, 1}, 40.0 * 20, 20, 0.5);
+  REQUIRE(one);
+  CHECK(one->nx * one->ny == 1);
+  const WindowLayout whole = window_layout(Domain{0, 0, 2, 1}, Domain{0, 0, 2, 1}, *one, 0.5, 0.6);
+  REQUIRE(whole.windows.size() == 1);
+  CHECK(whole.windows[0].grid.x1 == 2);
+  CHECK(whole.windows[0].grid.y1 == 1);
+  CHECK(whole.windows[0].interior.x1 == 2);
+  // Windows of at most 10 x 10 positions at 10 per unit cannot hold two margins of 0.5 and an interior.
+  CHECK_FALSE(window_size(canvas, 100, 10, 0.5));
 }
 
 TEST_CASE("a rectangle output: its domain, counts near the density's, classes and radii kept", "[optim][windows]") {
@@ -360,8 +371,9 @@ Strip synthesize_strip(uint64_t seed) {
   Strip strip{method->synthesize(ex, ctx), {}};
   REQUIRE(stats["windows"]["nx"].get<int>() >= 3);
   // the meeting lines: half-way in each overlap (window_plan.cpp); recomputed from the layout
-  const WindowLayout layout =
-      window_layout(ctx.output.canvas(), ctx.output.moving_area(), stats["windows"]["side"], stats["windows"]["margin"], 0, "k");
+  const json& w = stats["windows"];
+  const WindowLayout layout = window_layout(ctx.output.canvas(), ctx.output.moving_area(),
+                                            WindowSize{w["width"], w["height"], w["nx"], w["ny"]}, w["margin"], 0);
   for (int i = 0; i + 1 < layout.nx; ++i) strip.meeting.push_back(layout.windows[i].interior.x1);
   return strip;
 }
@@ -456,19 +468,24 @@ TEST_CASE("no seam: where windows meet, the pattern is as along any line inside 
 
 TEST_CASE("the window grid, the memory of an iteration, does not grow with the output", "[optim][windows]") {
   const PointSet ex = test::small_exemplar(1, false, 25, 0.005);
-  GaborSettings small, large;
   const json p = [] {
     json m;
     MethodRegistry::instance().create(json{{"type", "gabor"}}, "method", &m);
     return m;
   }();
-  small = resolve_gabor_settings(p, ex, shape_of(json{{"size", {4, 4}}}, ex), false);
-  large = resolve_gabor_settings(p, ex, shape_of(json{{"points", 1000000}}, ex), false);
-  CHECK(small.out_res == large.out_res);  // one window's grid, whatever the canvas
-  CHECK(large.out_res == 384);
-  // a canvas smaller than a window: the grid shrinks to it
-  const GaborSettings tiny = resolve_gabor_settings(p, ex, shape_of(json{{"size", {1, 1}}}, ex), false);
-  CHECK(tiny.out_res < 384);
+  const double budget = std::pow(p["window"]["pixels"].get<double>(), 2);
+  for (const long long points : {100000LL, 1000000LL, 10000000LL}) {
+    INFO(points << " points");
+    const GaborSettings s = resolve_gabor_settings(p, ex, shape_of(json{{"points", points}}, ex), false);
+    CHECK(s.window.nx * s.window.ny > 1);
+    CHECK(static_cast<double>(s.out_res) * s.out_rows <= budget);  // one window's grid, whatever the canvas
+  }
+  // a canvas within the budget: the grid is the canvas's, at the exemplar's positions per unit
+  const OutputShape shape = shape_of(json{{"size", {1, 1}}}, ex);
+  const GaborSettings tiny = resolve_gabor_settings(p, ex, shape, false);
+  CHECK(tiny.window.nx * tiny.window.ny == 1);
+  CHECK(tiny.out_res == std::lround(shape.canvas().width() * tiny.res));
+  CHECK(tiny.out_rows == tiny.out_res);
 }
 
 TEST_CASE("per-sigma grids: coarser at coarse sigmas, the finest unchanged, margins for the farthest reach", "[optim][windows]") {
@@ -499,4 +516,141 @@ TEST_CASE("per-sigma grids: coarser at coarse sigmas, the finest unchanged, marg
     CHECK(scaled.sigma_res.front() < scaled.res);  // c2 / c1 = 2.6: about 2.6 x coarser
     if (!output.empty()) CHECK(scaled.window_margin > fixed.window_margin);  // the coarse grid's receptive field reaches farther
   }
+}
+
+// --- rectangles on one grid: the cost follows the canvas's grid positions, not a window count
+
+namespace {
+
+// An exemplar of `width` x `height` (two classes: a jittered grid and a sparser one), as
+// amacrine (1.601 x 1) and swedishpines (1 x 1.042) are exported.
+PointSet rectangle_exemplar(double width, double height) {
+  PointSet ex(Domain{0, 0, width, height});
+  const PointSet a = test::small_exemplar(2, false, 25, 0.005);
+  for (size_t i = 0; i < a.size(); ++i) ex.add({a[i].x * width, a[i].y * height}, a.cls(i));
+  return ex;
+}
+
+json gabor_params(const json& method = json{{"type", "gabor"}}) {
+  json m;
+  MethodRegistry::instance().create(method, "method", &m);
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("a rectangle output within the budget is one grid in the exemplar's aspect, whatever the aspect", "[optim][windows]") {
+  // The default output of a rectangular exemplar: u x u copies of its rectangle, with a clean
+  // border. Cut into square windows of at most 384 positions across, amacrine's 3.2 x 2 took
+  // 6 windows and swedishpines' 2 x 2.08 took 2, each costing an iteration of a grid about
+  // the whole output's size.
+  for (const auto& [w, h] : {std::pair{1.601, 1.0}, std::pair{1.0, 1.042}, std::pair{1.0, 3.0}}) {
+    INFO("exemplar " << w << " x " << h);
+    const PointSet ex = rectangle_exemplar(w, h);
+    const OutputShape shape = resolve_output_shape(resolve_run_config(json::object(), {}), ex);
+    REQUIRE(shape.rectangle);
+    const GaborSettings s = resolve_gabor_settings(gabor_params(), ex, shape, false);
+    CHECK(s.window.nx == 1);
+    CHECK(s.window.ny == 1);
+    const Domain c = shape.canvas();
+    CHECK(s.out_res == std::lround(c.width() * s.res));
+    // rows at the columns' spacing, the last within a spacing of the canvas's top (as a square's)
+    for (size_t i = 0; i < s.sigmas.size(); ++i) {
+      const double spacing = c.width() / (s.sigma_out_res[i] + 1);
+      CHECK(s.sigma_out_rows[i] * spacing < c.height());
+      CHECK((s.sigma_out_rows[i] + 1) * spacing >= c.height() - 1e-9);
+    }
+    CHECK(s.sigma_out_rows.back() == s.out_rows);
+    const WindowLayout layout = window_layout(c, shape.moving_area(), s.window, s.window_margin, 0.1);
+    REQUIRE(layout.windows.size() == 1);
+    CHECK(layout.windows[0].grid.x0 == c.x0);
+    CHECK(layout.windows[0].grid.y1 == c.y1);
+    CHECK(layout.windows[0].interior.x1 == c.x1);
+  }
+}
+
+TEST_CASE("a 1.6 x 1 rectangle within the budget runs one group per class on one grid", "[optim][windows]") {
+  const PointSet ex = rectangle_exemplar(1.6, 1.0);
+  const OutputShape shape = shape_of(json{{"size", {2, 2}}}, ex);  // exemplar sides: 3.2 x 2
+  // 16 positions per unit: a canvas of about 60 x 40 positions, within windows of 64 x 64.
+  const Run run = synthesize(ex, shape, 64, 2);
+  CHECK(run.stats["windows"]["nx"].get<int>() == 1);
+  CHECK(run.stats["windows"]["ny"].get<int>() == 1);
+  CHECK(run.stats["output_grid_res"].get<int>() > run.stats["output_grid_rows"].get<int>());
+  CHECK(run.output.domain().x1 == 3.2);
+  const auto counts = run.output.class_counts();
+  REQUIRE(counts.size() == 2);
+  CHECK(std::abs(static_cast<double>(counts[0]) - 4 * 25) <= 0.15 * 4 * 25);
+}
+
+TEST_CASE("past the budget: the fewest rectangular windows, each within it, overlaps of two margins", "[optim][windows]") {
+  const Domain strip{0, 0, 10, 2};  // 100 x 20 positions at 10 per unit
+  const double margin = 0.5, budget = 30 * 30;
+  const auto size = window_size(strip, budget, 10, margin);
+  REQUIRE(size);
+  // Square windows of 30 across (3 units, cut to the strip's height: 2) took 9; three of 4 x 2 fit.
+  CHECK(size->nx == 3);
+  CHECK(size->ny == 1);
+  CHECK(size->width == Approx(4.0));
+  CHECK(size->height == Approx(2.0));
+  const auto [cols, rows] = window_grid(size->width, size->height, 10);
+  CHECK(cols * rows <= budget);
+  // No fewer windows fit: n windows along an axis of length L with overlaps of two margins are
+  // at least (L + 2 margin (n - 1)) / n long.
+  for (int a = 1; a <= 3; ++a)
+    for (int b = 1; a * b < 3; ++b) {
+      const auto [c, r] = window_grid((10 + 2 * margin * (a - 1)) / a, (2 + 2 * margin * (b - 1)) / b, 10);
+      CHECK(c * r > budget);
+    }
+  const WindowLayout layout = window_layout(strip, strip, *size, margin, 0.3);
+  REQUIRE(layout.windows.size() == 3);
+  for (size_t i = 0; i + 1 < layout.windows.size(); ++i) {
+    const StageWindow &p = layout.windows[i], &q = layout.windows[i + 1];
+    CHECK(p.grid.x1 - q.grid.x0 >= 2 * margin - 1e-9);                  // overlap
+    CHECK(p.interior.x1 == Approx(q.interior.x0));                       // interiors meet
+    CHECK(p.grid.x1 - p.interior.x1 >= margin - 1e-9);                   // a margin beyond the interior
+  }
+  // A tall canvas: the windows stack along y.
+  const auto tall = window_size(Domain{0, 0, 2, 10}, budget, 10, margin);
+  REQUIRE(tall);
+  CHECK(tall->nx == 1);
+  CHECK(tall->ny == 3);
+}
+
+TEST_CASE("a rectangle on one grid resumed from any checkpoint ends bit for bit as the uninterrupted one",
+          "[optim][windows][checkpoint]") {
+  const PointSet ex = rectangle_exemplar(1.6, 1.0);
+  const std::string border = GENERATE(as<std::string>{}, "clean", "context");
+  const OutputShape shape = shape_of(json{{"size", {2, 2}}, {"border", border}}, ex);
+  const Run whole = synthesize(ex, shape, 64, 3, nullptr, true);
+  REQUIRE(whole.stats["windows"]["nx"].get<int>() == 1);
+  const size_t n = whole.checkpoints.size();
+  REQUIRE(n > 6);
+  for (size_t i : {size_t{1}, n / 3, n / 2, n - 2}) {
+    INFO("border " << border);
+    const SynthesisState st = deserialize_state(whole.checkpoints[i], "test");
+    INFO("checkpoint " << i << ": stage " << st.stage << ", iteration " << st.iteration);
+    const Run resumed = synthesize(ex, shape, 64, 3, &whole.checkpoints[i], true);
+    CHECK(same_bits(resumed.output, whole.output));
+  }
+}
+
+TEST_CASE("a rectangle grid's local coordinates: the width is the unit along both axes", "[optim][windows]") {
+  StageWindow w;
+  w.grid = {-0.5, -0.5, 3.5, 1.5};  // 4 x 2
+  w.movable = w.interior = {0, 0, 3, 1};
+  const WindowGeometry g(w);
+  PointSet ps(Domain{0, 0, 3, 1});
+  ps.add({3, 1});
+  ps.add({0, 0});
+  const auto local = g.to_local(ps);
+  CHECK(local[0][0].item<float>() == Approx(0.875));
+  CHECK(local[0][1].item<float>() == Approx(0.375));  // (1 + 0.5) / 4, not / 2
+  CHECK(local[1][1].item<float>() == Approx(0.125));
+  // Held inside the movable part: a point pushed above it sits on its top edge.
+  const auto held = g.confine(torch::tensor({{0.5f, 0.9f}}));
+  CHECK(held[0][1].item<float>() == Approx(0.375));
+  const Vec2 back = g.to_output(0.5, 0.25);
+  CHECK(back.x == Approx(1.5));
+  CHECK(back.y == Approx(0.5));
 }
