@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include "core/generators/dynamic_grid.hpp"
+#include "core/generators/candidate_cells.hpp"
 #include "core/generators/generator.hpp"
 
 namespace ppsynth {
@@ -18,28 +18,12 @@ PointSet best_candidate_points(size_t n, uint64_t seed, Domain d, const BestCand
   std::mt19937_64 rng(seed);
   PointSet ps(d);
   ps.reserve(n);
-  const double diag = std::hypot(d.width(), d.height());
-  gen_detail::DynamicGrid grid(d, std::sqrt(d.area() / std::max<size_t>(n, 1)), /*periodic=*/true);
-  size_t since_poll = 0;
+  gen_detail::CandidateCells cells(d, window, n);
   for (size_t count = 0; count < n; ++count) {
-    const size_t candidates = std::max<size_t>(1, static_cast<size_t>(std::ceil(opt.m * count)));
-    Vec2 best = gen_detail::uniform_in(rng, window);
-    double best_d = -1;
-    if (count > 0) {
-      // Search radius that usually contains a neighbor; doubled when it does not.
-      const double start = 2 * std::sqrt(d.area() / count);
-      for (size_t c = 0; c < candidates; ++c) {
-        if (opt.poll && ++since_poll >= 4096) since_poll = 0, opt.poll();
-        Vec2 q = c == 0 ? best : gen_detail::uniform_in(rng, window);
-        double lim = start, dn;
-        while ((dn = grid.nearest_within(q, lim)) >= lim && lim < diag) lim *= 2;
-        if (dn > best_d) {
-          best_d = dn;
-          best = q;
-        }
-      }
-    }
-    grid.insert(best);
+    if (opt.poll && count % 1024 == 0) opt.poll();
+    const size_t candidates = std::max<size_t>(1, static_cast<size_t>(std::ceil(opt.m * static_cast<double>(count))));
+    const Vec2 best = count == 0 ? gen_detail::uniform_in(rng, window) : cells.best_of(candidates, rng);
+    cells.accept(best);
     ps.add(best);
   }
   return ps;

@@ -5,6 +5,9 @@
 // the sub-window shrunk by `margin` on every side (as a fraction of width/height); the
 // published code initializes with n points in [0.01, 0.99]^2, i.e. margin = 0.01 (the
 // default). margin = 0 gives the classic toroidal best-candidate pattern.
+// Cost O(n log n): the candidates are handed out to cells and drawn only in the cells that
+// could hold the best one (candidate_cells.hpp); the pattern has the distribution of Mitchell's,
+// drawn with other random numbers than the one that drew all m * count candidates.
 // Registered as "best_candidate" {m, margin}.
 #include <cstdint>
 #include <functional>
@@ -16,8 +19,7 @@ namespace ppsynth {
 struct BestCandidateOptions {
   double m = 10;        // candidates per accepted point
   double margin = 0.01;  // candidates drawn in [x0+margin*W, x1-margin*W] x (same in y)
-  // Called every few thousand candidates when set (a caller's stop check, which may throw):
-  // the cost grows with n^2, minutes for large n.
+  // Called every thousand points when set (a caller's stop check, which may throw).
   std::function<void()> poll;
 };
 

@@ -57,7 +57,28 @@ class DynamicGrid {
     return std::sqrt(best2);
   }
 
+  // Calls f(offset) for every inserted point within `r` of q, as its offset from q: on a
+  // periodic domain every image of it within r (a radius beyond half the domain meets several).
+  template <class F>
+  void for_each_within(Vec2 q, double r, F&& f) const {
+    const long rx = static_cast<long>(std::ceil(r / cw_)), ry = static_cast<long>(std::ceil(r / ch_));
+    const long cx = cx_of(q.x), cy = cy_of(q.y), NX = nx_, NY = ny_;
+    for (long gy = cy - ry; gy <= cy + ry; ++gy) {
+      const long sy = floor_div(gy, NY);  // which copy of the domain, in y
+      if (sy != 0 && !periodic_) continue;
+      for (long gx = cx - rx; gx <= cx + rx; ++gx) {
+        const long sx = floor_div(gx, NX);
+        if (sx != 0 && !periodic_) continue;
+        for (size_t i : cells_[static_cast<size_t>((gy - sy * NY) * NX + (gx - sx * NX))]) {
+          const Vec2 v{pts_[i].x + static_cast<double>(sx) * d_.width() - q.x, pts_[i].y + static_cast<double>(sy) * d_.height() - q.y};
+          if (v.x * v.x + v.y * v.y <= r * r) f(v);
+        }
+      }
+    }
+  }
+
  private:
+  static long floor_div(long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
   int cx_of(double x) const { return std::min(nx_ - 1, std::max(0, static_cast<int>((x - d_.x0) / cw_))); }
   int cy_of(double y) const { return std::min(ny_ - 1, std::max(0, static_cast<int>((y - d_.y0) / ch_))); }
   size_t cell_of(Vec2 p) const { return static_cast<size_t>(cy_of(p.y)) * nx_ + cx_of(p.x); }

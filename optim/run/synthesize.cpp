@@ -58,9 +58,14 @@ void check_synthesis_size(const nlohmann::json& spec, const PointSet& exemplar) 
   double points = 0;
   for (size_t n : shape.class_counts(exemplar, shape.canvas())) points += static_cast<double>(n);
   const double per_point = kBytesPerPoint + 16.0 * exemplar.num_attributes();
-  char what[160];
-  std::snprintf(what, sizeof what, "an output of %.3g points (%s)", points,
-                shape.rectangle ? (key + " " + size).c_str() : ("upscale " + std::to_string(shape.upscale)).c_str());
+  // The pad counts: a 1 x 1 output padded by 100 is a 201 x 201 canvas to initialize and move.
+  const Domain canvas = shape.canvas();
+  char pad[160] = "";
+  if (shape.rectangle && shape.pad > 0)
+    std::snprintf(pad, sizeof pad, ", output.pad %g: a %g x %g canvas", shape.pad, canvas.width(), canvas.height());
+  char what[320];
+  std::snprintf(what, sizeof what, "an output of %.3g points (%s%s)", points,
+                shape.rectangle ? (key + " " + size).c_str() : ("upscale " + std::to_string(shape.upscale)).c_str(), pad);
   check_memory(points * per_point, what);
 }
 

@@ -19,7 +19,7 @@ class Initializer {
   // (the paper's unit square, or a canvas in exemplar units; margins are fractions of it).
   virtual PointSet initialize(size_t n, int cls, uint64_t seed, const Domain& domain) const = 0;
   // Called often while it works (a run's stop check, SynthesisContext::poll; it may throw to
-  // stop): the paper's best-candidate start costs O(n^2) and runs for minutes on large outputs.
+  // stop): a start of hundreds of thousands of points takes a while.
   void set_poll(std::function<void()> poll) { poll_ = std::move(poll); }
 
  protected:
@@ -27,5 +27,10 @@ class Initializer {
 };
 
 using InitializerRegistry = Registry<Initializer>;
+
+// A synthesis's word before it initializes `points` positions on `canvas` (a large canvas
+// takes a while, and the log says what the config asked for; check_synthesis_size,
+// optim/run/synthesize.hpp, has refused a count beyond the memory before).
+void log_initialization(size_t points, const Domain& canvas);
 
 }  // namespace ppsynth

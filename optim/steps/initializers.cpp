@@ -1,4 +1,6 @@
 // Initializers of the output positions (optim/steps/initializer.hpp).
+#include <spdlog/spdlog.h>
+
 #include "core/config/defaults_catalog.hpp"
 #include "core/generators/best_candidate.hpp"
 #include "core/generators/generator.hpp"
@@ -6,6 +8,12 @@
 #include "optim/steps/initializer.hpp"
 
 namespace ppsynth {
+
+void log_initialization(size_t points, const Domain& canvas) {
+  spdlog::info("initializing {} points on the canvas [{:g}, {:g}] x [{:g}, {:g}] ({:g} x {:g}, area {:g})", points, canvas.x0,
+               canvas.x1, canvas.y0, canvas.y1, canvas.width(), canvas.height(), canvas.area());
+}
+
 namespace {
 
 // `d` shrunk by `margin` (a fraction of its width and height) on every side.
