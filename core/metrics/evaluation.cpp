@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/metrics/border.hpp"
+#include "core/metrics/class_match.hpp"
 #include "core/metrics/nearest_neighbor.hpp"
 #include "core/metrics/overlap.hpp"
 #include "core/metrics/patches.hpp"
@@ -159,18 +160,22 @@ void check_eval_options(const EvalOptions& opt) {
     throw InputError("spectrum_frequency must be in 1.." + std::to_string(kMaxPeriodogramFrequencies));
 }
 
-json evaluate(const PointSet& exemplar, const PointSet& output, const EvalOptions& opt) {
+json evaluate(const PointSet& exemplar, const PointSet& output_as_read, const EvalOptions& opt) {
   check_eval_options(opt);
   if (exemplar.empty()) throw InputError("evaluate: the exemplar is empty");
-  if (output.empty()) throw InputError("evaluate: the output is empty");
+  if (output_as_read.empty()) throw InputError("evaluate: the output is empty");
   check_domain(exemplar, "exemplar");
-  check_domain(output, "output");
+  check_domain(output_as_read, "output");
+  // Every row compares a class with the exemplar's class of the same label.
+  const ClassMatch match = match_classes(exemplar, output_as_read);
+  const PointSet& output = match.output;
   const Progress progress(exemplar.size() + output.size() >= kProgressPoints);
   progress("{} exemplar and {} output points: nearest neighbors", exemplar.size(), output.size());
   json r;
   r["exemplar"] = set_summary(exemplar);
   r["output"] = set_summary(output);
   r["upscale"] = std::sqrt(static_cast<double>(output.size()) / exemplar.size());
+  r["classes_matched"] = class_match_json(match);
   const ProtocolPlan plan = plan_protocol(exemplar, output, opt.protocol, opt.crops, opt.crop_seed, opt.zoom);
   const bool crops = plan.used == PatchProtocol::Crops;
   r["protocol"] = protocol_json(plan);

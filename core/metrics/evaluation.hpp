@@ -32,6 +32,10 @@
 //                "pcf_mse_quartiles", "wasserstein_quartiles", "chamfer_quartiles":
 //                  [first quartile, median, third quartile] over the crops (linear
 //                  interpolation, summary_stats.hpp; nulls left out)
+//   "classes_matched": how the output's classes were matched to the exemplar's: by label
+//              (class_match.hpp), with the labels "missing" from the output and "extra" in it
+//              (their verdict rows fail). Every row below uses the matched ids: "class" k is
+//              the exemplar's class k and the output's class of its label.
 //   "classes": [ { "class", "label", same metrics } ]  per class (present in the exemplar)
 //   "cross":   [ { "ci", "cj", "pcf_mse", "pcf": {...} } ] for every class pair ci < cj
 //              (crops: with "per_crop": { "pcf_mse" } and "pcf_mse_quartiles")
@@ -79,7 +83,7 @@ struct EvalOptions {
   PatchProtocol protocol = PatchProtocol::Auto;  // eval_protocol.hpp
   int crops = kDefaultCrops;                     // crops protocol: how many crops
   uint64_t crop_seed = kDefaultCropSeed;         // crops protocol: where they go
-  double zoom = 0;  // crops protocol, second order, verdict: output units per exemplar unit (a run's OutputShape::zoom()); 0: from the densities
+  double zoom = 0;  // crops protocol, second order, verdict: output units per exemplar unit; 0: from the densities (eval's, a run's)
   bool second_order = true;  // K, L, g, mark correlation (second_order_report.hpp)
   bool verdict = true;       // the two-sample test (verdict.hpp); its zoom is `zoom`'s
   VerdictOptions verdict_options;

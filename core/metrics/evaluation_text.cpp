@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "core/metrics/class_match.hpp"
 #include "core/metrics/eval_protocol.hpp"
 #include "core/metrics/verdict.hpp"
 
@@ -62,7 +63,12 @@ void write_summaries(std::ostream& os, const json& r) {
                  cell(r["output"]["border_profile"]["over_uniform"][i], "%.2f").c_str());
     }
   }
-  os << "upscale (per axis) " << cell(r["upscale"], "%.3f") << "\n\n";
+  os << "upscale (per axis) " << cell(r["upscale"], "%.3f") << "\n";
+  if (r.contains("classes_matched")) {
+    const std::string w = class_match_warning(r["classes_matched"]);
+    if (!w.empty()) os << "note: " << w << "\n";
+  }
+  os << "\n";
 }
 
 // PCF MSE, Wasserstein and Chamfer per row under the protocol, the spread over crops, and
@@ -136,6 +142,7 @@ void write_second_order(std::ostream& os, const json& so) {
   for (const auto& row : so["rows"])
     os << line("  %-16s %18s %19s\n", row_name(row).c_str(), cell(row["l_sup"], "%.5f").c_str(),
                cell(row["l_sup_spacings"], "%.4f").c_str());
+  if (so.contains("pairs_skipped")) os << "  note: " << so["pairs_skipped"].get<std::string>() << "\n";
   for (const auto& m : so["mark_correlation"]) {
     os << "  mark correlation of '" << m["attribute"].get<std::string>() << "': ";
     if (m.contains("skipped"))

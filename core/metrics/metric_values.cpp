@@ -121,6 +121,9 @@ std::vector<std::pair<std::string, double>> metric_values(const nlohmann::json& 
       if (!row["pass"].is_boolean()) r.refuse(k + ".pass", "expected true, false or null");
       const nlohmann::json value = {{"v", row["pass"].get<bool>() ? 1.0 : 0.0}};
       r.add(scope + "/verdict_pass", value, "v", k + ".pass");
+    } else if (row.contains("pass")) {  // neither pass nor fail: counted apart, never as a pass
+      const nlohmann::json value = {{"v", 1.0}};
+      r.add(scope + "/verdict_cannot_judge", value, "v", k + ".pass");
     }
   });
   return v;

@@ -9,7 +9,9 @@
 // two patterns alone, and its studentization keeps it valid when the groups' variances differ.
 //
 //   1. Both patterns in exemplar units: the output's coordinates divided by the zoom (output
-//      units per exemplar unit; given, or from the densities, crops.hpp).
+//      units per exemplar unit; given, or from the densities, crops.hpp); then both in units of
+//      the sub-window's shorter side, so that the test is the same at any coordinate scale.
+//      The output's classes are matched to the exemplar's by label (class_match.hpp).
 //   2. Units: the exemplar's window cut into split x split cells; the output cut into cells of
 //      that size from its corner, of which a block of at most kOutputBlockPerExemplarSide x
 //      split cells a side takes part (placed by the seed): the test of a larger output is the
@@ -18,15 +20,26 @@
 //      sub-windows), so that neighboring sub-windows share less of a cluster or of a hard
 //      core's reach.
 //   3. Per sub-window, K with the translation correction (second_order.hpp) on r_values
-//      radii in (0, r_max], r_max = a quarter of the sub-window's shorter side (spatstat's
-//      rule); "all" takes every point, "class k" its points, "pair (i, j)" K_ij of i to j
-//      (symmetric under translation). A sub-window with fewer than 2 points of the class (1 of
-//      each type for a pair) has no K and is left out of that row, in both groups alike.
+//      radii in (0, r_max]; "all" takes every point, "class k" its points, "pair (i, j)" K_ij
+//      of i to j (symmetric under translation). A sub-window with fewer than 2 points of the
+//      class (1 of each type for a pair) has no K and is left out of that row, in both groups
+//      alike. r_max per row: a quarter of the sub-window's shorter side (spatstat's rule),
+//      extended by sixteenths up to half of it until at least half of the exemplar's
+//      sub-windows hold a pair of the row within it (any one will do at half): a pattern whose
+//      closest pairs lie beyond a quarter would otherwise have K = 0 at every radius, and any
+//      output without close pairs would match it.
 //   4. T = sum_r (mean_1(r) - mean_2(r))^2 / (var_1(r) / n_1 + var_2(r) / n_2) * dr over the
-//      radii where the denominator is > 0 (Hahn's statistic, K-bar the plain means).
+//      radii where the denominator is above the rounding noise of its sums (relative, so the
+//      same at any scale): Hahn's statistic, K-bar the plain means.
 //   5. p = (1 + #{T* >= T}) / (1 + permutations), T* over random reassignments of the
 //      sub-windows to groups of the same sizes (seeded: the same p for the same inputs).
-// A row needs at least 2 sub-windows in each group; else its p is null with the reason.
+// Each row is "pass" (p >= alpha), "fail" (p < alpha, or a class one pattern has and the other
+// lacks: missing from the output or extra in it) or "cannot judge" with the reason (fewer than
+// 2 sub-windows in a group; too few distinct reassignments for p to fall below alpha; no pair
+// of the row within half a sub-window's side in the exemplar; no radius with evidence).
+// "passed" is true when every row passes, false when any fails, null when none fails but some
+// cannot judge: "cannot judge" is never a pass. Permutation counts whose smallest p,
+// 1 / (1 + permutations), is not below alpha are refused.
 // The calibration (independent realizations pass at the nominal rate) and the power of
 // these defaults are measured in docs/verdict.md.
 #include <cstdint>
@@ -58,17 +71,24 @@ struct VerdictOptions {
   double zoom = 0;          // output units per exemplar unit; 0: from the densities
 };
 
-// InputError naming the eval flag for options no test can use.
+// InputError naming the eval flag for options no test can use (a permutation count that
+// cannot reach alpha among them).
 void check_verdict_options(const VerdictOptions& opt);
 
 // { "test", "statistic", "split", "guard", "zoom", "sub_window": [w, h] (exemplar units),
-//   "r_max", "permutations", "seed", "alpha",
-//   "rows": [ { "row": "all" | "class" | "pair", "class" / "ci", "cj", "label"(s),
-//               "p" (null when untestable), "pass", "statistic", "units": [exemplar, output],
-//               "reason" (when untestable) } ] }
+//   "r_max" (spatstat's quarter, exemplar units), "r_rule", "permutations", "seed", "alpha",
+//   "classes": class_match_json, "failed", "cannot_judge", "passed": true | false | null,
+//   "rows": [ { "row": "all" | "class" | "pair", "class" + "label" / "ci", "cj" + "labels",
+//               "outcome": "pass" | "fail" | "cannot judge", "p" (null unless tested),
+//               "pass" (true, false, or null when it cannot judge), "statistic",
+//               "units": [exemplar, output], "r_max" (exemplar units) and "r_max_sides" (in
+//               sub-window sides) when tested, "reason" (when decided without a p) } ] }
 nlohmann::json verdict(const PointSet& exemplar, const PointSet& output, const VerdictOptions& opt = {});
 
-// Lines for eval's table: one per row, "verdict  all classes   p = 0.412  pass (4 + 16 sub-windows)".
+// Lines for eval's table: one per row, "  all classes   p = 0.4120  pass  (4 + 16 sub-windows)",
+// then the whole verdict and any class that does not match.
 std::string format_verdict(const nlohmann::json& v);
+// "all classes", "class 1000", "pair 1000-1001" (labels).
+std::string verdict_row_name(const nlohmann::json& row);
 
 }  // namespace ppsynth
