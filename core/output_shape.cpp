@@ -67,6 +67,7 @@ OutputShape resolve_output_shape(const nlohmann::json& r, const PointSet& ex) {
   const auto& j = r.at("output");
   const bool has_size = !j["size"].is_null(), has_points = !j["points"].is_null();
   const Domain E = ex.domain();
+  o.exemplar_width = E.width();
   if (!has_size && !has_points && is_square(E)) return o;
   if (has_size && has_points) throw config_error("output", "give \"size\" or \"points\", not both");
   o.rectangle = true;
@@ -79,11 +80,13 @@ OutputShape resolve_output_shape(const nlohmann::json& r, const PointSet& ex) {
     o.width = o.upscale * E.width();
     o.height = o.upscale * E.height();
   } else if (has_size) {
+    // In exemplar sides (the exemplar's width and height), as documented: the same request
+    // gives the same output of an exemplar in any coordinate units.
     const auto& s = j["size"];
     if (!s.is_array() || s.size() != 2 || !s[0].is_number() || !s[1].is_number())
-      throw config_error("output.size", "expected [width, height] in exemplar units");
-    o.width = s[0].get<double>();
-    o.height = s[1].get<double>();
+      throw config_error("output.size", "expected [width, height] in exemplar sides (multiples of the exemplar's width and height)");
+    o.width = s[0].get<double>() * E.width();
+    o.height = s[1].get<double>() * E.height();
   } else {
     if (!j["points"].is_number_integer() || j["points"].get<long long>() < 1)
       throw config_error("output.points", "expected a point count >= 1");

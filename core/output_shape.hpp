@@ -7,8 +7,10 @@
 //                               [0, u W] x [0, u H] in exemplar units instead, as if "size"
 //                               said so: the square would squeeze its pattern to the square's
 //                               aspect.
-//   {"size": [W, H]}:           the rectangle [0, W] x [0, H] in EXEMPLAR units: points keep
-//                               the exemplar's spacing; each class keeps its density.
+//   {"size": [a, b]}:           a times the exemplar's width by b times its height (exemplar
+//                               sides, so the same at any coordinate units): the rectangle
+//                               [0, a W] x [0, b H] in exemplar units; points keep the
+//                               exemplar's spacing; each class keeps its density.
 //   {"points": N}:              a square of the area that holds N points at the exemplar's
 //                               density (the exemplar's shape when it is not square: W/H kept).
 //
@@ -49,8 +51,12 @@ struct OutputShape {
   Domain moving_area() const;
   // Methods without a frozen pad call this: "context" is then an error naming output.border.
   void require_no_exemplar_pad(const std::string& method) const;
-  // Output units per exemplar unit: 1/u for the paper's outputs, 1 for rectangles.
-  double zoom() const { return rectangle ? 1.0 : 1.0 / upscale; }
+  double exemplar_width = 1;    // the exemplar's domain width (exemplar units), for zoom()
+
+  // Output units per exemplar unit: the paper's unit square holds u x u exemplars, so an
+  // exemplar of width W is 1 / u of the square's side: 1 / (u W); rectangles are in exemplar
+  // units: 1.
+  double zoom() const { return rectangle ? 1.0 : 1.0 / (upscale * exemplar_width); }
   // Points of each exemplar class over `d` (an area in output units) at the exemplar's
   // density, rounded; at least 1 for a class of the exemplar.
   std::vector<size_t> class_counts(const PointSet& exemplar, const Domain& d) const;

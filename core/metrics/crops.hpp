@@ -7,11 +7,10 @@
 // Crop size: the exemplar's domain (W_ex x H_ex) scaled by the zoom
 //   z = sqrt((N_ex / A_ex) / (N_out / A_out))      (output units per exemplar unit)
 // (all classes counted), so a crop holds about as many points as the exemplar: z = 1 for
-// outputs in exemplar units, 1/2 for the paper's u = 2 unit square. The zoom is read from the
-// two sets' densities when nothing else is known, so any pair of files can be evaluated; a run
-// knows its own (OutputShape::zoom(): the scale it synthesized at) and passes it, so that an
-// output made at another density than the exemplar's domain's (output.density "bounds") is
-// cut at its own scale and not rescaled back to the domain's density.
+// outputs in exemplar units, 1/2 for the paper's u = 2 unit square of a unit exemplar. The zoom
+// is read from the two sets' densities, so any pair of files can be evaluated, and a run's own
+// metrics are eval's on its files; a caller that knows the scale an output was made at
+// (OutputShape::zoom(), gather's re-evaluations) may pass it instead.
 // Placement: lower-left corners uniform in [x0, x1 - w] x [y0, y1 - h] of the output domain,
 // from a 64-bit Mersenne Twister seeded with `seed` (the top 53 bits of each draw: the same
 // windows on every platform for a seed). Crops may overlap; a crop that does not fit (the

@@ -127,9 +127,9 @@ SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec,
     throw config_error(spec["output"]["size"].is_null() ? "output.points" : "output.size",
                        "the synthesis left no point inside the output (" + ctx.output.describe() + "); give a larger output");
   if (spec["evaluate"].get<bool>()) {
-    EvalOptions eo;
-    eo.zoom = ctx.output.zoom();  // crops at the scale the output was made at, whatever its density
-    r.metrics = evaluate(exemplar, r.output, eo);
+    // As `ppsynth eval` evaluates the two files (the zoom from their densities), so that a
+    // run's metrics.json and eval on its output are one answer whatever the exemplar's domain.
+    r.metrics = evaluate(exemplar, r.output, EvalOptions{});
   }
   return r;
 }
