@@ -2,7 +2,8 @@
 // Statistics over seeds: every finished run under the given directories (sweep directories,
 // run directories, or folders of run directories), grouped by configuration with the seeds
 // pooled (one seed is one sample). For each group and each metric of each scope (all
-// classes, each class, each class pair) the median, quartiles, min, max and count; against a
+// classes, each class, each class pair) the median, quartiles, min, max and count (for the
+// verdict, the pass rate: passed of all runs, the runs that cannot judge apart); against a
 // reference output (a published one, say) the ratio of medians and the share of seeds within
 // a bound. Written as CSV, Markdown, JSON and an HTML page with a strip plot per metric.
 #include <optional>
@@ -56,12 +57,25 @@ struct GatheredRun {
   int stage = 0;          // 0: the run's output; N: its points after stage N (GatherOptions::stages)
 };
 
+// A verdict row over seeds: how many runs passed, failed, or could not judge it. A run that
+// cannot judge is counted apart, never as a pass: the share is passed over all the runs.
+struct PassRate {
+  size_t passed = 0, failed = 0, cannot_judge = 0;
+  size_t runs() const { return passed + failed + cannot_judge; }
+  double share() const { return runs() ? static_cast<double>(passed) / static_cast<double>(runs()) : 0.0; }
+  // "2/5 (40 %)", then ", 1 cannot judge" when some could not.
+  std::string text() const;
+};
+
 struct MetricSummary {
   std::string group, group_label, scope, metric;
   std::vector<double> values;  // per seed, in the order of `seeds`
   std::vector<uint64_t> seeds;
   double median = 0, q1 = 0, q3 = 0, min = 0, max = 0;
   std::optional<double> reference, ratio, within;  // within: share of seeds <= bound x reference
+  // Metric "verdict_pass" (values 1 pass, 0 fail, the runs that judged): its pass rate, with
+  // the runs that cannot judge ("verdict_cannot_judge", folded in here); its median means nothing.
+  std::optional<PassRate> rate;
 };
 
 // A group against the baseline of its exemplar, one metric: the ratio of the medians and a

@@ -1,10 +1,12 @@
-// gather, step 2: the statistics over seeds of each group (median, quartiles), against a
-// reference output (ratio, share within a bound) and against a baseline group (ratio of
-// medians and per-seed ratios with bootstrap intervals); and gather_runs, the two steps.
+// gather, step 2: the statistics over seeds of each group (median, quartiles; the verdict's
+// pass rate), against a reference output (ratio, share within a bound) and against a baseline
+// group (ratio of medians and per-seed ratios with bootstrap intervals); and gather_runs, the
+// two steps.
 #include "experiments/gather/gather_steps.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <random>
@@ -80,7 +82,43 @@ void compare_paired(const MetricSummary& s, const MetricSummary& base, BaselineC
   c.paired_lo = quantile(medians, 0.05), c.paired_hi = quantile(medians, 0.95);
 }
 
+// The verdict's metrics of a group's summaries folded into one per scope: "verdict_pass"
+// (1 pass, 0 fail) with its pass rate, the "verdict_cannot_judge" runs counted into it.
+void fold_pass_rates(std::vector<MetricSummary>& list) {
+  for (auto it = list.begin(); it != list.end();) {
+    if (it->metric != "verdict_cannot_judge") {
+      ++it;
+      continue;
+    }
+    const MetricSummary cannot = *it;
+    it = list.erase(it);
+    auto pass = std::find_if(list.begin(), list.end(), [&](const MetricSummary& s) { return s.scope == cannot.scope && s.metric == "verdict_pass"; });
+    if (pass == list.end()) {  // no run of the group could judge this row
+      MetricSummary fresh;
+      fresh.group = cannot.group, fresh.group_label = cannot.group_label, fresh.scope = cannot.scope, fresh.metric = "verdict_pass";
+      it = list.insert(it, std::move(fresh));
+      pass = it++;
+    }
+    pass->rate = PassRate{};
+    pass->rate->cannot_judge = cannot.values.size();
+  }
+  for (auto& s : list)
+    if (s.metric == "verdict_pass") {
+      if (!s.rate) s.rate = PassRate{};
+      s.rate->passed = static_cast<size_t>(std::count(s.values.begin(), s.values.end(), 1.0));
+      s.rate->failed = s.values.size() - s.rate->passed;
+    }
+}
+
 }  // namespace
+
+std::string PassRate::text() const {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%zu/%zu (%.0f %%)", passed, runs(), 100 * share());
+  std::string t = buf;
+  if (cannot_judge > 0) t += ", " + std::to_string(cannot_judge) + " cannot judge";
+  return t;
+}
 
 void summarize_groups(GatherResult& r) {
   const GatherOptions& options = r.options;
@@ -103,6 +141,7 @@ void summarize_groups(GatherResult& r) {
       it->seeds.push_back(run.seed);
     }
   }
+  for (const auto& g : group_order) fold_pass_rates(by_group[g]);
   // Each group's exemplar (the stem of its file) and the reference that belongs to it.
   std::map<std::string, std::string> exemplar_of;
   std::set<std::string> exemplars;
@@ -148,7 +187,9 @@ void summarize_groups(GatherResult& r) {
       const Summary sum = summarize(s.values);
       s.median = sum.median, s.q1 = sum.q1, s.q3 = sum.q3, s.min = sum.min, s.max = sum.max;
       const auto it = ref.find(s.scope + "/" + s.metric);
-      if (it != ref.end()) {
+      if (it != ref.end() && s.rate) {
+        s.reference = it->second;  // the reference's own pass (1) or fail (0); no ratio of rates
+      } else if (it != ref.end()) {
         s.reference = it->second;
         if (it->second != 0) s.ratio = s.median / it->second;
         const auto within = std::count_if(s.values.begin(), s.values.end(), [&](double v) { return v <= options.bound * it->second; });
@@ -171,6 +212,7 @@ void summarize_groups(GatherResult& r) {
     for (const auto& g : group_order) {
       if (exemplar_of[g] != exemplar_of[base]) continue;
       for (const auto& s : by_group[g]) {
+        if (s.rate) continue;  // a ratio of medians of 0s and 1s says nothing: the rates are in the table
         const auto b = std::find_if(by_group[base].begin(), by_group[base].end(),
                                     [&](const MetricSummary& x) { return x.scope == s.scope && x.metric == s.metric; });
         if (b == by_group[base].end()) continue;

@@ -39,14 +39,23 @@ std::string references_text(const GatherOptions& o) {
 }
 
 std::vector<std::string> summary_header() {
-  return {"group", "scope", "metric", "n", "median", "q1", "q3", "min", "max", "reference", "median / reference", "share within bound"};
+  return {"group", "scope", "metric", "n", "median", "q1", "q3", "min", "max", "pass rate", "reference", "median / reference",
+          "share within bound"};
 }
+
+// A run count: the pass rate's runs (those that cannot judge included) or the values'.
+size_t runs_of(const MetricSummary& s) { return s.rate ? s.rate->runs() : s.values.size(); }
 
 std::vector<std::vector<std::string>> summary_rows(const GatherResult& r) {
   std::vector<std::vector<std::string>> rows;
-  for (const auto& s : r.summaries)
-    rows.push_back({s.group_label, s.scope, s.metric, std::to_string(s.values.size()), num(s.median), num(s.q1), num(s.q3),
-                    num(s.min), num(s.max), opt(s.reference), opt(s.ratio, "%.3f"), opt(s.within, "%.2f")});
+  for (const auto& s : r.summaries) {
+    if (s.rate)  // the verdict: its rate, not the median of 0s and 1s
+      rows.push_back({s.group_label, s.scope, s.metric, std::to_string(runs_of(s)), "", "", "", "", "", s.rate->text(),
+                      opt(s.reference, "%g"), "", ""});
+    else
+      rows.push_back({s.group_label, s.scope, s.metric, std::to_string(s.values.size()), num(s.median), num(s.q1), num(s.q3),
+                      num(s.min), num(s.max), "", opt(s.reference), opt(s.ratio, "%.3f"), opt(s.within, "%.2f")});
+  }
   return rows;
 }
 
@@ -93,11 +102,16 @@ nlohmann::json to_json(const GatherResult& r) {
                     {"stage", run.stage}, {"values", v}});
   }
   auto optional = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); };
-  for (const auto& s : r.summaries)
+  for (const auto& s : r.summaries) {
+    nlohmann::json rate;
+    if (s.rate)
+      rate = {{"passed", s.rate->passed}, {"failed", s.rate->failed}, {"cannot_judge", s.rate->cannot_judge},
+              {"runs", s.rate->runs()}, {"share", s.rate->share()}, {"text", s.rate->text()}};
     sums.push_back({{"group", s.group}, {"group_label", s.group_label}, {"scope", s.scope}, {"metric", s.metric},
-                    {"n", s.values.size()}, {"values", s.values}, {"seeds", s.seeds}, {"median", s.median}, {"q1", s.q1},
-                    {"q3", s.q3}, {"min", s.min}, {"max", s.max}, {"reference", optional(s.reference)},
+                    {"n", runs_of(s)}, {"values", s.values}, {"seeds", s.seeds}, {"median", s.median}, {"q1", s.q1},
+                    {"q3", s.q3}, {"min", s.min}, {"max", s.max}, {"pass_rate", rate}, {"reference", optional(s.reference)},
                     {"ratio_of_medians", optional(s.ratio)}, {"share_within_bound", optional(s.within)}});
+  }
   nlohmann::json refs = nlohmann::json::array();
   for (const auto& ref : r.options.references) refs.push_back({{"exemplar", shown_text(ref.exemplar)}, {"file", shown_text(ref.file)}});
   nlohmann::json comps = nlohmann::json::array();
@@ -212,9 +226,13 @@ std::string format_gather(const GatherResult& r) {
   std::string group;
   for (const auto& m : r.summaries) {
     if (m.group != group) s += m.group_label + "\n", group = m.group;
-    std::snprintf(line, sizeof line, "  %-14.14s %-22.22s %3zu %11s %11s %11s %9s %7s\n", m.scope.c_str(), m.metric.c_str(),
-                  m.values.size(), num(m.median, "%.5g").c_str(), num(m.q1, "%.5g").c_str(), num(m.q3, "%.5g").c_str(),
-                  opt(m.reference, "%.5g").c_str(), opt(m.ratio, "%.3f").c_str());
+    if (m.rate)  // the verdict's pass rate across the three number columns
+      std::snprintf(line, sizeof line, "  %-14.14s %-22.22s %3zu   pass %s\n", m.scope.c_str(), m.metric.c_str(), runs_of(m),
+                    m.rate->text().c_str());
+    else
+      std::snprintf(line, sizeof line, "  %-14.14s %-22.22s %3zu %11s %11s %11s %9s %7s\n", m.scope.c_str(), m.metric.c_str(),
+                    m.values.size(), num(m.median, "%.5g").c_str(), num(m.q1, "%.5g").c_str(), num(m.q3, "%.5g").c_str(),
+                    opt(m.reference, "%.5g").c_str(), opt(m.ratio, "%.3f").c_str());
     s += line;
   }
   if (!r.comparisons.empty()) {
