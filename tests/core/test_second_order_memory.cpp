@@ -15,6 +15,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "core/metrics/evaluation.hpp"
+#include "core/metrics/evaluation_text.hpp"
 #include "core/metrics/mark_correlation.hpp"
 #include "core/metrics/overlap.hpp"
 #include "core/metrics/second_order.hpp"
@@ -141,6 +143,12 @@ TEST_CASE("more than 64 classes: no class-pair rows of K, L, g, and the report s
     } else {
       CHECK(pairs == 0);
       CHECK(so["pairs_skipped"].get<std::string>().find("65 classes") != std::string::npos);
+      // eval's table says it too.
+      EvalOptions opt;
+      opt.verdict = false;
+      opt.include_curves = false;
+      const std::string text = format_evaluation(evaluate(ps, ps, opt));
+      CHECK(text.find("class pairs' K, L and g are computed up to 64 classes only") != std::string::npos);
     }
   }
 }
