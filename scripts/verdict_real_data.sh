@@ -36,18 +36,40 @@ Rscript scripts/spatstat_export.R "$dir/exemplars" $sets > /dev/null
 row() {  # DATA SET KIND SEED EXEMPLAR OUTPUT [EVAL FLAGS...] -> a line of results.tsv
   local set=$1 kind=$2 seed=$3 ex=$4 out=$5
   shift 5
-  "$bin" eval -q --exemplar "$ex" --output "$out" --json --no-curves "$@" | /usr/bin/python3 -c '
+  # A row of the verdict is its p, FAIL (failed without a p: a class missing from the output
+  # or extra in it) or NA (cannot judge); an output eval refuses is one line saying so, and
+  # the batch goes on.
+  local json
+  if ! json=$("$bin" eval -q --exemplar "$ex" --output "$out" --json --no-curves "$@" 2> "$out.eval.log"); then
+    echo "verdict_real_data: $set $kind seed $seed: eval failed (see $out.eval.log); recorded as a failure" >&2
+    printf '%s\t%s\t%s\tNA\tall=FAIL\n' "$set" "$kind" "$seed"
+    return 0
+  fi
+  printf '%s' "$json" | /usr/bin/python3 -c '
 import json, sys
 r = json.load(sys.stdin)
 def name(row):
-    return row["row"] if row["row"] == "all" else ("class %d" % row["class"] if row["row"] == "class" else "pair %d-%d" % (row["ci"], row["cj"]))
-cells = sys.argv[1:4] + ["%.6g" % r["all"]["pcf_mse"]]
+    if row["row"] == "all":
+        return "all"
+    if row["row"] == "class":
+        return "class %d" % row["class"]
+    return "pair %d-%d" % (row["ci"], row["cj"])
+def p(row):
+    if row["p"] is not None:
+        return "%.4f" % row["p"]
+    return "FAIL" if row.get("outcome") == "fail" or row.get("pass") is False else "NA"
+pcf = r["all"]["pcf_mse"]
+cells = sys.argv[1:4] + ["NA" if pcf is None else "%.6g" % pcf]
 for row in r["verdict"]["rows"]:
-    cells.append("%s=%s" % (name(row), "NA" if row["p"] is None else "%.4f" % row["p"]))
+    cells.append("%s=%s" % (name(row), p(row)))
 for row in r["second_order"]["rows"]:
-    cells.append("L:%s=%.4f" % (name(row), row["l_sup_spacings"]))
+    v = row.get("l_sup_spacings")
+    cells.append("L:%s=%s" % (name(row), "NA" if v is None else "%.4f" % v))
 print("\t".join(cells))
-' "$set" "$kind" "$seed"
+' "$set" "$kind" "$seed" || {
+    echo "verdict_real_data: $set $kind seed $seed: eval's JSON not read; recorded as a failure" >&2
+    printf '%s\t%s\t%s\tNA\tall=FAIL\n' "$set" "$kind" "$seed"
+  }
 }
 
 results="$dir/results.tsv"
@@ -82,24 +104,36 @@ echo "results: $results"
 # in mean spacings per row (smaller is closer), the median PCF MSE.
 /usr/bin/python3 - "$results" <<'EOF'
 import sys, collections, statistics
+def number(v):
+    try:
+        return float(v)
+    except ValueError:
+        return None
 rows = collections.OrderedDict()
 for line in open(sys.argv[1]):
     f = line.rstrip("\n").split("\t")
     s, kind, seed, pcf = f[:4]
     cells = dict(x.split("=") for x in f[4:])
     ps = {k: v for k, v in cells.items() if not k.startswith("L:")}
-    ls = {k[2:]: float(v) for k, v in cells.items() if k.startswith("L:")}
-    rows.setdefault((s, kind), collections.OrderedDict())[seed] = (seed, float(pcf), ps, ls)  # a rerun's line replaces
+    ls = {k[2:]: number(v) for k, v in cells.items() if k.startswith("L:")}
+    rows.setdefault((s, kind), collections.OrderedDict())[seed] = (seed, number(pcf), ps, ls)  # a rerun's line replaces
 rows = collections.OrderedDict((k, sorted(v.values(), key=lambda r: int(r[0]))) for k, v in rows.items())  # seeds in order
 print("| data set | output | seeds | pass rate at 5 % per row | median sup L distance per row (mean spacings) | median PCF MSE (all) |")
 print("|---|---|---|---|---|---|")
 for (s, kind), runs in rows.items():
-    names = list(runs[0][2].keys())
+    names = []
+    for r in runs:
+        names += [n for n in r[2] if n not in names]
     pr, ml = [], []
     for n in names:
-        vals = [float(r[2][n]) for r in runs if r[2].get(n, "NA") != "NA"]
-        pr.append("%s %d/%d" % (n, sum(v >= 0.05 for v in vals), len(vals)))
-        lv = [r[3][n] for r in runs if n in r[3]]
+        # A run without the row, or whose row is FAIL (no p), fails it; NA cannot judge: apart.
+        vals = [r[2].get(n, "FAIL") for r in runs]
+        passed = sum(number(v) is not None and number(v) >= 0.05 for v in vals)
+        cannot = sum(v == "NA" for v in vals)
+        pr.append("%s %d/%d%s" % (n, passed, len(vals), ", %d cannot judge" % cannot if cannot else ""))
+        lv = [r[3][n] for r in runs if r[3].get(n) is not None]
         ml.append("%s %.3f" % (n, statistics.median(lv)) if lv else n + " -")
-    print("| %s | %s | %s | %s | %s | %.4f |" % (s, kind, ",".join(r[0] for r in runs), ", ".join(pr), ", ".join(ml), statistics.median(r[1] for r in runs)))
+    pcfs = [r[1] for r in runs if r[1] is not None]
+    print("| %s | %s | %s | %s | %s | %s |" % (s, kind, ",".join(r[0] for r in runs), ", ".join(pr), ", ".join(ml),
+                                               "%.4f" % statistics.median(pcfs) if pcfs else "-"))
 EOF
