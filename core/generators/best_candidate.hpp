@@ -5,9 +5,9 @@
 // the sub-window shrunk by `margin` on every side (as a fraction of width/height); the
 // published code initializes with n points in [0.01, 0.99]^2, i.e. margin = 0.01 (the
 // default). margin = 0 gives the classic toroidal best-candidate pattern.
-// Cost O(n log n): the candidates are handed out to cells and drawn only in the cells that
-// could hold the best one (candidate_cells.hpp); the pattern has the distribution of Mitchell's,
-// drawn with other random numbers than the one that drew all m * count candidates.
+// The candidates are handed out to cells and drawn only in the cells that could hold the best
+// one (candidate_cells.hpp): the pattern has the distribution of Mitchell's, drawn with other
+// random numbers than drawing all m * count candidates (O(m n^2)), in a small part of its time.
 // Registered as "best_candidate" {m, margin}.
 #include <cstdint>
 #include <functional>

@@ -8,11 +8,12 @@
 // area left), draws each cell's candidates uniformly in it, and stops at the first cell whose
 // largest distance cannot beat the best candidate so far: the candidates of the cells after it
 // would all lose. The best candidate therefore has the distribution of the best of K uniform
-// candidates, while a step draws only the few near the largest holes.
-// The cells are about a quarter of the mean spacing of the points the pattern will hold at the
-// next doubling of its count (rebuilt at each doubling), so that a cell sees a few points and
-// an accepted point changes a few cells: O(n log n) for n points, where drawing the m * count
-// candidates of Mitchell's method was O(m n^2).
+// candidates, while a step draws only those of the cells near the largest holes.
+// The cells hold a quarter of the area per point of the count the pattern will have at the
+// next doubling (rebuilt at each doubling), so that a cell sees a few points and an accepted
+// point changes a few cells. A step visits the cells whose largest distance beats its winner:
+// their number grows with the count, far slower than the m * count candidates Mitchell's
+// method draws (docs/performance.md, "Best-candidate initialization", says how much).
 // Internal helper of the generators.
 #include <cstdint>
 #include <random>
