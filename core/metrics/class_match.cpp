@@ -82,7 +82,7 @@ std::string class_match_warning(const nlohmann::json& match) {
   if (!match.value("extra", nlohmann::json::array()).empty())
     s += std::string(s.empty() ? "" : "; ") + "the exemplar has no class " + labels_text(match["extra"]) +
          " of the output";
-  return s.empty() ? s : "classes: " + s + " (classes are matched by label; their rows fail)";
+  return s.empty() ? s : "classes: " + s + " (matched by " + match.value("by", std::string("label")) + "; their rows fail)";
 }
 
 }  // namespace ppsynth
