@@ -112,7 +112,10 @@ def card(run_dir):
     for r in m.get("verdict", {}).get("rows", []):
         row = {"all": "all points", "class": f"class {r.get('class')}", "pair": f"classes {r.get('ci')}-{r.get('cj')}"}
         label = row.get(r.get("row"), str(r.get("row")))
-        if r.get("p") is None:
+        outcome = r.get("outcome", "cannot judge" if r.get("p") is None else ("pass" if r.get("pass") else "fail"))
+        if outcome == "fail" and r.get("p") is None:  # a class missing from the output, or extra in it
+            rows.append((f"K test, {label}", "<b>fails</b>: " + html.escape(str(r.get("reason") or "no p"))))
+        elif outcome == "cannot judge":
             rows.append((f"K test, {label}", "cannot judge: " + html.escape(str(r.get("reason") or "too few points"))))
         else:
             word = "same K-function" if r.get("pass") else "<b>K-function differs</b>"

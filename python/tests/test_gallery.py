@@ -67,6 +67,26 @@ def test_a_measure_not_computed_shows_as_such(tmp_path, one_run):
     assert re.search(r"<th>Chamfer</th><td>n/a</td>", text)
 
 
+def test_a_row_that_fails_without_a_p_shows_as_a_failure(tmp_path, one_run):
+    # A class missing from the output fails its row with no p: not "cannot judge".
+    run = tmp_path / "run"
+    shutil.copytree(one_run, run)
+    metrics = json.loads((run / "metrics.json").read_text())
+    metrics["verdict"]["rows"] = [
+        {"row": "class", "class": 1, "p": None, "pass": False, "outcome": "fail",
+         "reason": "the output has no points of class 2000"},
+        {"row": "pair", "ci": 0, "cj": 1, "p": None, "pass": None, "outcome": "cannot judge",
+         "reason": "too few sub-windows"}]
+    (run / "metrics.json").write_text(json.dumps(metrics))
+    page = tmp_path / "g.html"
+    p = gallery("-o", page, "--runs", run)
+    assert p.returncode == 0, p.stderr
+    text = page.read_text()
+    assert "<b>fails</b>: the output has no points of class 2000" in text
+    assert "cannot judge: too few sub-windows" in text
+    assert "cannot judge: the output has no points" not in text
+
+
 def test_the_page_is_checked_before_any_synthesis(tmp_path):
     # A stand-in for ppsynth that leaves a mark when it runs: it must not run at all.
     mark = tmp_path / "ran"

@@ -74,7 +74,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_option("--verdict-guard", a->verdict.guard,
                  "verdict: share of a sub-window cell's side left out between sub-windows, 0..0.9")
       ->capture_default_str();
-  app.add_option("--verdict-permutations", a->verdict.permutations, "verdict: random reassignments, 19..1000000")
+  app.add_option("--verdict-permutations", a->verdict.permutations, "verdict: random reassignments, up to 1000000, with 1/(1 + N) below --verdict-alpha (at least 20 at 0.05)")
       ->capture_default_str();
   app.add_option("--verdict-seed", a->verdict.seed, "verdict: seed of the reassignments, 0 to 2^63 - 1")
       ->capture_default_str()

@@ -1,6 +1,6 @@
 // `ppsynth synthesize [CONFIG] [--exemplar FILE] [-o RUN_DIR] [--set key=value ...]`
 // `ppsynth synthesize --resume RUN_DIR [--force]`  (--force: afresh from its config.json)
-// `--size W H` / `--points N`: an output of that size (exemplar units) or point count instead of
+// `--size W H` / `--points N`: an output of that size (exemplar sides) or point count instead of
 // the paper's u x u unit square (the config's "output"; core/output_shape.hpp).
 // Runs one synthesis (default method: the paper's, with the published settings) and writes a
 // run directory (see run_synthesis.hpp). SIGINT and SIGTERM stop it at the end of the current
@@ -49,7 +49,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_option("--init", o->init, "explicit initialization point file")->check(ppsynth::app::path_text());
   app.add_option("--device", o->device, "where the synthesis runs: cpu (default), cuda, cuda:N or auto (runtime.device)");
   app.add_flag("--quick", o->quick, "tiny grid and few iterations (smoke test)");
-  auto* size = app.add_option("--size", o->size, "output rectangle W H in exemplar units (clean borders, window by window)")
+  auto* size = app.add_option("--size", o->size, "output rectangle W H in exemplar sides: W exemplar widths by H exemplar heights (clean borders)")
                    ->expected(2)
                    ->check(ppsynth::app::positive_number());
   app.add_option("--points", o->points, "output of about N points (a square at the exemplar's density)")
