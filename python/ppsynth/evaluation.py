@@ -226,6 +226,9 @@ def evaluate(exemplar, output, bins: int = 100, r_max: float = 0.0, periodic_pcf
     KeyboardInterrupt
         Ctrl-C while it works (it stops within a fraction of a second).
     """
+    for name, seed in (("crop_seed", crop_seed), ("verdict_seed", verdict_seed)):
+        if not 0 <= int(seed) < 2 ** 63:  # the C++ side takes unsigned 64-bit seeds; a negative one would wrap
+            raise ValueError(f"{name} must be in 0..2^63-1, got {seed}")
     ex = _as_points(exemplar, "exemplar")
     out = _as_points(output, "output")
     return Evaluation(_native.evaluate(ex._to_native(), out._to_native(), int(bins), float(r_max), bool(periodic_pcf),

@@ -34,6 +34,9 @@ def test_evaluate_takes_the_switches_of_eval(tmp_path):
     assert r.to_dict() == expected
     with pytest.raises(ValueError, match="verdict-split"):
         ppsynth.evaluate(ex, out, verdict_split=0)
+    for key, value in (("verdict_seed", -1), ("crop_seed", -3), ("verdict_seed", 2 ** 64)):
+        with pytest.raises(ValueError, match=key):  # was a TypeError from the binding
+            ppsynth.evaluate(ex, out, bins=20, second_order=False, **{key: value})
 
 
 def test_passed_is_the_verdicts_own_answer():
