@@ -7,6 +7,7 @@
 #include "core/config/param_bounds.hpp"
 #include "core/memory_budget.hpp"
 #include "core/metrics/nearest_neighbor.hpp"
+#include "models/feature_grid.hpp"
 #include "optim/gabor/gabor_options.hpp"
 #include "optim/gabor/grid_options.hpp"
 #include "optim/gabor/map_term.hpp"
@@ -92,6 +93,7 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   const WindowOptions window = WindowOptions::resolve(p["window"]);
   const GaborOptions o = GaborOptions::resolve(p);
   s.res = grid.res;
+  if (shape.rectangle) s.exemplar_grid = exemplar.domain();
   int num_sigmas = o.num_sigmas;
   s.max_iterations = o.max_iterations;
   s.feature_net = with_channels_for_classes(p["feature_net"], K, "method.feature_net");
@@ -204,7 +206,11 @@ GaborPipeline::GaborPipeline(const json& p, const GaborSettings& s, uint64_t see
 }
 
 void GaborPipeline::build_rasterizers() {
-  RasterizerArgs ex_args{res_, 1.0, s_.k}, out_args{out_res_, s_.out_scale, s_.k, true, 0, out_rows_};
+  // The exemplar's raster over s_.exemplar_grid, its width the unit (the unit square: res_ x res_).
+  const Domain& E = s_.exemplar_grid;
+  const int ex_cols = static_cast<int>(std::lround(E.width() * res_)), ex_rows = grid_rows(ex_cols, E.height() / E.width());
+  RasterizerArgs ex_args{ex_cols, E.width(), s_.k, false, 0, ex_rows},
+      out_args{out_res_, s_.out_scale, s_.k, true, 0, out_rows_};
   ex_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", ex_args, &resolved_rast_);
   out_rast_ = RasterizerRegistry::instance().create(p_["rasterizer"], "method.rasterizer", out_args);
   if (s_.measure_tiles()) {
@@ -246,7 +252,11 @@ void GaborPipeline::set_targets(const torch::Tensor& ex_points, const torch::Ten
     build_rasterizers();
   }
   const auto weights = ex_weights.defined() ? ex_weights.to(device_) : ex_weights;
-  auto f = net_->forward(ex_rast_->forward(ex_points.to(device_), weights, sigma, {}));
+  // In the raster's coordinates: (p - corner) / width (the unit square's are the points').
+  const Domain& E = s_.exemplar_grid;
+  const bool unit = E.x0 == 0 && E.y0 == 0 && E.x1 == 1 && E.y1 == 1;
+  const auto local = unit ? ex_points : (ex_points - torch::tensor({{E.x0, E.y0}}, ex_points.options())) / E.width();
+  auto f = net_->forward(ex_rast_->forward(local.to(device_), weights, sigma, {}));
   // Tiles are the exemplar's size: their features match the targets' one to one.
   loss_.set_target(f, LossContext{s_.measure_tiles() ? 1 : s_.upscale, seed_});
 }

@@ -32,6 +32,10 @@ json gabor_bounds();
 struct GaborSettings {
   double mean_nn_distance = 0;  // d of the exemplar (all classes)
   int res = 0;                  // exemplar grid (positions per exemplar unit)
+  // What the exemplar's raster covers, in exemplar coordinates: the unit square (the paper's
+  // outputs), or the exemplar's whole domain (rectangle outputs, in exemplar units: a
+  // 1.6 x 1 exemplar's grid is res x 1.6 columns by res rows, as the output's keeps its aspect).
+  Domain exemplar_grid{};
   int upscale = 0;              // the paper's u (1 for rectangle outputs: exemplar units)
   // The output raster: `out_res` columns and `out_rows` rows at one spacing over a grid
   // `out_scale` exemplar units wide. The paper's: the unit square, u * res across u.
@@ -116,7 +120,7 @@ class GaborPipeline {
   CompositeLoss loss_;
   json resolved_rast_, resolved_net_;
   int in_channels_ = 10;
-  int res_ = 0, out_res_ = 0, out_rows_ = 0;  // the current stage's grids
+  int res_ = 0, out_res_ = 0, out_rows_ = 0;  // the current stage's grids (res_: per exemplar unit)
   void build_rasterizers();
 };
 

@@ -10,6 +10,7 @@
 #include "core/generators/lattices.hpp"
 #include "core/metrics/nearest_neighbor.hpp"
 #include "core/output_shape.hpp"
+#include "models/point_tensor.hpp"
 #include "optim/gabor/gabor_pipeline.hpp"
 #include "optim/method/method.hpp"
 #include "optim/run/run_config.hpp"
@@ -653,4 +654,28 @@ TEST_CASE("a rectangle grid's local coordinates: the width is the unit along bot
   const Vec2 back = g.to_output(0.5, 0.25);
   CHECK(back.x == Approx(1.5));
   CHECK(back.y == Approx(0.5));
+}
+
+TEST_CASE("a rectangular exemplar's targets come from its whole domain, not its unit square", "[optim][windows]") {
+  // amacrine is 1.601 x 1: its raster covered the unit square of its coordinates, so the part
+  // beyond x = 1 (38 % of its points) reached the targets only through the grid's right edge.
+  const PointSet a = rectangle_exemplar(1.6, 1.0);
+  PointSet b(a.domain());  // the same exemplar with another pattern beyond x = 1.3
+  for (size_t i = 0; i < a.size(); ++i)
+    b.add(a[i].x > 1.3 ? Vec2{a[i].x, std::fmod(a[i].y + 0.37, 1.0)} : a[i], a.cls(i));
+  const json params = gabor_params(json{{"type", "gabor"}, {"quick", {{"res", 24}, {"channels", 4}, {"num_sigmas", 2}}}});
+  const GaborSettings s = resolve_gabor_settings(params, a, shape_of(json{{"size", {2, 2}}}, a), true);
+  REQUIRE(3 * s.sigmas.back() < 0.3);  // the moved points lie beyond the maps' reach of x <= 1
+  GaborPipeline pipe(params, s, 3);
+  pipe.set_grid(static_cast<int>(s.sigmas.size()) - 1);
+  auto gen = at::detail::createCPUGenerator(5);
+  const auto out = at::rand({120, 2}, gen, torch::kFloat32) * torch::tensor({{1.0f, 0.65f}});  // a fixed output, local coordinates
+  auto loss_for = [&](const PointSet& ex) {
+    torch::NoGradGuard ng;
+    pipe.set_targets(positions_tensor(ex), {}, s.sigmas.back());
+    return pipe.loss(pipe.features(pipe.output_maps(out, {}, s.sigmas.back(), {}))).item<double>();
+  };
+  const double la = loss_for(a), lb = loss_for(b);
+  INFO("loss against the exemplar " << la << ", against the one with its right part moved " << lb);
+  CHECK(std::abs(la - lb) > 1e-3 * la);
 }
