@@ -1,6 +1,7 @@
 #include "optim/gabor/gabor_pipeline.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <tuple>
 
@@ -93,7 +94,22 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   const WindowOptions window = WindowOptions::resolve(p["window"]);
   const GaborOptions o = GaborOptions::resolve(p);
   s.res = grid.res;
-  if (shape.rectangle) s.exemplar_grid = exemplar.domain();
+  if (shape.rectangle) {
+    s.exemplar_grid = exemplar.domain();
+    // A rectangle is synthesized in the exemplar's own units, and the grid's resolution is
+    // per unit: an exemplar in far smaller or larger units than 1 would get a grid of a
+    // fraction of a position, or of millions, across it (the maps then failed inside).
+    const double side = std::min(exemplar.domain().width(), exemplar.domain().height()), across = s.res * side;
+    if (!(across >= 8 && across <= 8192)) {
+      char what[320];
+      std::snprintf(what, sizeof what,
+                    "a rectangle output is synthesized in the exemplar's units on %d grid positions a unit, which "
+                    "gives %.3g positions across this exemplar's shorter side (%g units), outside 8..8192; give the "
+                    "exemplar in units where its shorter side is near 1, or set method.grid.res",
+                    s.res, across, side);
+      throw config_error("method.grid", what);
+    }
+  }
   int num_sigmas = o.num_sigmas;
   s.max_iterations = o.max_iterations;
   s.feature_net = with_channels_for_classes(p["feature_net"], K, "method.feature_net");

@@ -84,6 +84,20 @@ TEST_CASE("--size is in exemplar sides: an exemplar in 0.001 units and its x1000
   CHECK(out[0].size() == out[1].size());
 }
 
+TEST_CASE("the Gabor method refuses a rectangle exemplar in units its grid cannot hold, naming method.grid", "[apps][synthesize][verdict_honest]") {
+  // Its grid is per exemplar unit: a 0.0016 x 0.001 exemplar got a fraction of a position
+  // across and died inside the maps with an internal error (exit 3).
+  const auto d = ppsynth::test::scratch_dir("rect_units");
+  const ppsynth::PointSet small = ppsynth::poisson_disk_points(40, 6, ppsynth::Domain{0, 0, 0.0016, 0.001});
+  ppsynth::write_points((d / "small.txt").string(), small);
+  const auto r = ppsynth_cmd("synthesize -e " + (d / "small.txt").string() + " --size 2 2 --quick -q -o " + (d / "run").string());
+  INFO(r.output);
+  CHECK(r.status == 2);
+  CHECK(r.output.find("method.grid") != std::string::npos);
+  CHECK(r.output.find("shorter side") != std::string::npos);
+  CHECK_FALSE(fs::exists(d / "run"));
+}
+
 TEST_CASE("lines' own run gives a real p or cannot judge, never a vacuous pass", "[apps][synthesize][verdict_honest]") {
   // lines' closest pair (0.1126) lies beyond a quarter of the 0.45-wide sub-windows (0.1125):
   // every K was 0, and the verdict read p = 1 with statistic 0.
