@@ -1,5 +1,5 @@
 // Messages that lead somewhere, through the real binary: each case names the defect a review
-// found (issue 60) that it guards against.
+// found that it guards against.
 #include <catch2/catch.hpp>
 
 #include <sched.h>

@@ -8,14 +8,14 @@
 # the phases (run.json's phase_seconds; what is left of the synthesis time: the stages' and
 # windows' bookkeeping) and the peak memory. A benchmark: it prints numbers.
 #
-# Usage: scripts/bench_rectangle.sh OUT_DIR NAME=ARGS... [-- FLAGS...]
-#   scripts/bench_rectangle.sh /tmp/b "amacrine=-e data/spatstat/amacrine.txt" \
+# Usage: docs/lab/rectangle_one_grid/bench_rectangle.sh OUT_DIR NAME=ARGS... [-- FLAGS...]
+#   docs/lab/rectangle_one_grid/bench_rectangle.sh /tmp/b "amacrine=-e data/spatstat/amacrine.txt" \
 #     "poisson_u4=-e shared:data/exemplars/gabor-paper/poisson_n64c2_point.txt --set upscale=4" \
 #     -- --preset fast --set method.max_iterations=3
 #   PPSYNTH    the binary (default build/ppsynth); PPSYNTH_THREADS as for any run (default 1)
 set -euo pipefail
-here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-[ $# -ge 2 ] || { echo "usage: scripts/bench_rectangle.sh OUT_DIR NAME=ARGS... [-- FLAGS...]" >&2; exit 2; }
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
+[ $# -ge 2 ] || { echo "usage: docs/lab/rectangle_one_grid/bench_rectangle.sh OUT_DIR NAME=ARGS... [-- FLAGS...]" >&2; exit 2; }
 out=$1
 shift
 runs=()
