@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Prepares what a machine that cannot install packages needs to build and check ppsynth (a
-# GPU machine of the device tool: no network there; docs/performance.md, "On a GPU"):
+# GPU machine of the device tool: no network there; docs/explanation/performance.md, "On a GPU"):
 #   .deps/debs/    the header-only Debian packages ppsynth builds with, as .deb files
 #                  (apt-get download: nanoflann, nlohmann-json, CLI11, Catch2, spdlog, fmt)
 #   .deps/root/    their headers, unpacked (usr/include): cmake -DPPSYNTH_DEPS_DIR=$PWD/.deps/root
 #   .deps/shared/  the exemplars scripts/gpu_check.sh synthesizes (PPSYNTH_SHARED there)
-# (.deps/real_data/, scripts/gpu_real_data.sh's exemplars and runs, is left as it is.)
+# (.deps/real_data/, docs/lab/verdict/gpu_real_data.sh's exemplars and runs, is left as it is.)
 # .deps/ is ignored by git; the device tool takes it along when its `carry` names it.
 # Usage: scripts/carry_deps.sh   (on a Debian machine with ../shared beside the checkout)
 set -euo pipefail
@@ -15,7 +15,7 @@ shared="${PPSYNTH_SHARED:-$here/../shared}"
 packages=(libnanoflann-dev nlohmann-json3-dev libcli11-dev catch2 libspdlog-dev libfmt-dev)
 exemplars=(data/exemplars/gabor-paper/lines.txt)
 
-# Its own folders only, rebuilt from scratch: .deps/real_data (scripts/gpu_real_data.sh's
+# Its own folders only, rebuilt from scratch: .deps/real_data (docs/lab/verdict/gpu_real_data.sh's
 # exemplars and runs) is the user's and stays.
 rm -rf "$out/debs" "$out/root" "$out/shared"
 mkdir -p "$out/debs" "$out/root" "$out/shared"

@@ -1,6 +1,6 @@
 # shellcheck shell=bash
 # Sourced by the scripts that run on a GPU machine of the device tool (scripts/gpu_check.sh,
-# scripts/gpu_real_data.sh): no Debian packages, no network, a torch wheel, CMake and ninja.
+# docs/lab/verdict/gpu_real_data.sh): no Debian packages, no network, a torch wheel, CMake and ninja.
 # Defines
 #   gpu_python             the python3 that imports torch (its LibTorch is what we build with)
 #   gpu_describe DEVICE    lines on the machine: cores, compilers, torch, the GPU (fails on cuda

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The device check (docs/performance.md, "On a GPU"). On a machine with a CUDA GPU, a torch
+# The device check (docs/lab/performance/README.md, "The device check"). On a machine with a CUDA GPU, a torch
 # wheel, CMake and ninja, and no network (the device tool's: 16 cores, H100 or H200), it
 #   1. builds ppsynth against the wheel's LibTorch, with the header-only dependencies carried
 #      in .deps (scripts/carry_deps.sh) and without cairo (no figures);
@@ -16,7 +16,7 @@
 # the runs of step 5 take what the build and steps 2-4 leave (a run that would not end in
 # time is not started, one still running then is stopped; the summary says which ended). On a machine
 # without CUDA, GPU_CHECK_DEVICE=cpu runs every step on the CPU at --quick sizes (a dry run of
-# the script, its build and its tests; docs/performance.md says how it was run).
+# the script, its build and its tests; docs/lab/performance/README.md says how it was run).
 #
 # Usage: scripts/gpu_check.sh [OUT_DIR]   (OUT_DIR: $OUT if set, else gpu_check/)
 #   GPU_CHECK_DEVICE   cuda (default) or cpu
@@ -118,7 +118,7 @@ fi
 "$py" - "$work" "$out" "$device" << 'EOF' | tee -a "$summary"
 import json, os, statistics, sys
 work, out, device = sys.argv[1:4]
-# The CPU default's medians over seeds 95-99 (docs/performance.md, "Each knob on lines").
+# The CPU default's medians over seeds 95-99 (docs/lab/fast_preset.md, "Each knob on `lines`").
 cpu = {"pcf_mse": 0.0266, "wasserstein": 0.108, "chamfer": 0.192}
 runs = []
 for seed in range(95, 100):

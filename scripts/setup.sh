@@ -24,7 +24,7 @@ PACKAGES=(
   python3-pytest python3-matplotlib python3-venv python3-pip python3-setuptools python3-wheel  # its tests, example, install
   # R's spatstat: the field's reference for K, L, g and mark correlation (tests/core
   # test_spatstat_*), its real data sets as exemplars (scripts/spatstat_export.R) and the
-  # simulated processes that calibrate eval's verdict (scripts/verdict_calibration.sh)
+  # simulated processes that calibrate eval's verdict (docs/lab/verdict/verdict_calibration.sh)
   r-base-core r-cran-spatstat r-cran-spatstat.explore r-cran-spatstat.data r-cran-spatstat.random r-cran-spatstat.model
   r-cran-randomfields     # the Gaussian fields of spatstat's log-Gaussian Cox simulations
 )

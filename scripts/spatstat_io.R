@@ -1,5 +1,5 @@
 # ppsynth's plain point text (core/formats/plain_text_format.hpp) read into and written from
-# spatstat's ppp, for the R scripts beside this file (source()d, not run).
+# spatstat's ppp, for the R scripts beside this file and docs/lab/verdict/'s (source()d, not run).
 #
 # read_plain(path): the "# domain" rectangle (default the unit square), the "# x y ..." header's
 # columns; a "class" column becomes factor marks (multitype), a column "mark" numeric marks

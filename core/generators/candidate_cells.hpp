@@ -13,7 +13,7 @@
 // next doubling (rebuilt at each doubling), so that a cell sees a few points and an accepted
 // point changes a few cells. A step visits the cells whose largest distance beats its winner:
 // their number grows with the count, far slower than the m * count candidates Mitchell's
-// method draws (docs/performance.md, "Best-candidate initialization", says how much).
+// method draws (docs/lab/performance/README.md, "Best-candidate initialization", says how much).
 // Internal helper of the generators.
 #include <cstdint>
 #include <random>

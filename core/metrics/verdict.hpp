@@ -41,7 +41,7 @@
 // cannot judge: "cannot judge" is never a pass. Permutation counts whose smallest p,
 // 1 / (1 + permutations), is not below alpha are refused.
 // The calibration (independent realizations pass at the nominal rate) and the power of
-// these defaults are measured in docs/verdict.md.
+// these defaults are measured in docs/lab/verdict/README.md.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -58,7 +58,7 @@ namespace ppsynth {
 // group with alike sub-windows and a tiny variance, Hahn's T of such reassignments swamps
 // the observed one, and the power against a clustered exemplar falls as the output grows;
 // sub-windows scattered over a larger output instead make the test reject a clustered
-// process's own realizations too often (docs/verdict.md, "Power against the output's size").
+// process's own realizations too often (docs/lab/verdict/README.md, "Power against the output's size").
 inline constexpr int kOutputBlockPerExemplarSide = 2;
 
 struct VerdictOptions {

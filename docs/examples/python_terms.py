@@ -4,7 +4,7 @@
     ppsynth.register_loss("py_gram", python_terms.gram_loss, defaults={"weight": 0.08})
     ppsynth.register_point_term("repulsion", python_terms.repulsion, defaults={"h": 0.03})
 
-The test suite (python/tests/test_terms.py) and scripts/bench_python_terms.py use them.
+The test suite (python/tests/test_terms.py) and docs/lab/performance/bench_python_terms.py use them.
 """
 import torch
 

@@ -140,7 +140,7 @@ class Evaluation(Record):
         ``second_order=False``.
     verdict : Record
         The studentized permutation test of equal K-functions over sub-windows
-        (docs/verdict.md): ``rows``, each with ``row`` (``"all"``, ``"class"``, ``"pair"``),
+        (docs/explanation/verdict.md): ``rows``, each with ``row`` (``"all"``, ``"class"``, ``"pair"``),
         ``p`` and ``pass_``; ``passed`` (True, False, or None when a row cannot be judged);
         ``alpha``, ``test``. Absent with ``verdict=False``.
     passed : bool or None

@@ -1,4 +1,4 @@
-"""scripts/edge_against_lines.py (a proposed border criterion): on a torus output the
+"""docs/lab/border_criterion/edge_against_lines.py (a proposed border criterion): on a torus output the
 edge is one line like any other, so a pattern with no border artifact puts the edge among its
 random lines, a pile on the edge puts it at the top, and a thin seam at the bottom."""
 import os
@@ -9,7 +9,7 @@ import numpy as np
 
 from conftest import SOURCE_DIR
 
-SCRIPT = os.path.join(SOURCE_DIR, "scripts", "edge_against_lines.py")
+SCRIPT = os.path.join(SOURCE_DIR, "docs", "lab", "border_criterion", "edge_against_lines.py")
 
 
 def write(path, points):

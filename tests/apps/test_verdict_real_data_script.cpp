@@ -1,4 +1,4 @@
-// scripts/verdict_real_data.sh records an output with a class missing as a failure of that
+// docs/lab/verdict/verdict_real_data.sh records an output with a class missing as a failure of that
 // class's rows and goes on with the batch (it stopped the whole batch there). Needs R with
 // spatstat.data (scripts/setup.sh installs it): skipped, saying why, without it.
 #include <catch2/catch.hpp>
@@ -52,7 +52,7 @@ TEST_CASE("verdict_real_data.sh records a missing class as a failure and goes on
     std::ofstream(run / "run.json") << "{}\n";
   }
   const auto r = test::run_program("cd " + root + " && VERDICT_SYNTHESIZE=no PPSYNTH_THREADS=1",
-                                   "scripts/verdict_real_data.sh " + d.string() + " amacrine 'gabor tiled_copy' 95");
+                                   "docs/lab/verdict/verdict_real_data.sh " + d.string() + " amacrine 'gabor tiled_copy' 95");
   INFO(r.output);
   REQUIRE(r.status == 0);
   std::ifstream in(d / "results.tsv");

@@ -1,16 +1,16 @@
 #!/usr/bin/env bash
-# The real-data table's syntheses on a GPU machine of the device tool (docs/verdict.md): a
-# rectangular exemplar such as amacrine (48 window stages) takes about 9 h a seed on a 2-core
-# CPU and about 12 minutes for five seeds side by side on an H200.
+# The real-data table's syntheses on a GPU machine of the device tool (docs/lab/verdict/README.md):
+# a borrowed GPU runs several seeds side by side a call at a time, where a CPU takes a seed at a
+# time (amacrine, two classes on one grid: 2 x 4 sigmas = 8 stages; how long: that page).
 #
 # Here, beforehand (Debian, R with spatstat; the exemplar is exported, never shipped):
 #   scripts/carry_deps.sh                                        # .deps: the headers
 #   Rscript scripts/spatstat_export.R .deps/real_data amacrine   # .deps/real_data/amacrine.txt
 # There, through the device tool with carry [".deps"]:
-#   scripts/gpu_real_data.sh amacrine "95 96 97 98 99" --preset fast --set method.feature_net.precision=float32
+#   docs/lab/verdict/gpu_real_data.sh amacrine "95 96 97 98 99" --preset fast --set method.feature_net.precision=float32
 # it builds (scripts/gpu_build.sh; a warm machine's build is reused), runs the gabor method on
 # every seed side by side into .deps/real_data/runs/SET_gabor_sSEED (the names
-# scripts/verdict_real_data.sh reads), continues a run whose directory holds a checkpoint,
+# docs/lab/verdict/verdict_real_data.sh reads), continues a run whose directory holds a checkpoint,
 # stops what is still running when the budget is spent (SIGTERM: each run keeps its
 # checkpoint) and packs every run directory, checkpoints included, into OUT/runs.tgz beside
 # OUT/summary.txt. Back here:
@@ -18,16 +18,16 @@
 # then either call it again (the runs that did not end continue from their checkpoints: the
 # carried .deps is what the device machine sees) or, once all have ended, evaluate them:
 #   mkdir -p DIR && cp -r .deps/real_data/runs DIR/
-#   VERDICT_SYNTHESIZE=no scripts/verdict_real_data.sh DIR amacrine gabor "95 96 97 98 99"
+#   VERDICT_SYNTHESIZE=no docs/lab/verdict/verdict_real_data.sh DIR amacrine gabor "95 96 97 98 99"
 #
-# Usage: scripts/gpu_real_data.sh SET "SEEDS" [SYNTHESIZE FLAGS...]   (into $OUT, else gpu_real_data/)
+# Usage: docs/lab/verdict/gpu_real_data.sh SET "SEEDS" [SYNTHESIZE FLAGS...]   (into $OUT, else gpu_real_data/)
 #   GPU_SECONDS  the whole script's budget, the build's included (default 540: the device
 #                tool's 600 s a call, less the packing)
 #   GPU_DEVICE   cuda (default) or cpu (a dry run of the script at --quick sizes)
 #   GPU_BUILD    the build folder (default build-gpu); PPSYNTH_BIN: a built ppsynth instead
 set -uo pipefail
-here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-usage='usage: scripts/gpu_real_data.sh SET "SEEDS" [SYNTHESIZE FLAGS...]'
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"  # the checkout: this script is in docs/lab/verdict/
+usage='usage: docs/lab/verdict/gpu_real_data.sh SET "SEEDS" [SYNTHESIZE FLAGS...]'
 set_name=${1:?$usage}
 seeds=${2:?$usage}
 shift 2

@@ -10,7 +10,7 @@ where the edge looks like any other line. Unlike a bound on the density itself, 
 for lattice-like patterns, whose density near a line depends on where the line falls between
 rows (Tree1: docs/lab/large_outputs.md, "The relax as the default").
 
-    scripts/edge_against_lines.py RUN_DIR/output.txt [RUN_DIR/snapshots/stage04.txt ...]
+    docs/lab/border_criterion/edge_against_lines.py RUN_DIR/output.txt [RUN_DIR/snapshots/stage04.txt ...]
 
 Reads the ppsynth point format (`# domain 0 0 1 1` outputs only); the lines are drawn from
 `--seed`, so the same files give the same table.

@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """The verdict's power on real exemplars: how often patterns that are NOT the exemplar's
-process are told apart from it, per data set (docs/verdict.md, "Real data").
+process are told apart from it, per data set (docs/lab/verdict/README.md, "Real data").
 
-    scripts/verdict_power_real_data.py EXEMPLAR_DIR "SETS" DRAWS [--copies K] [-o TSV]
-    e.g. scripts/verdict_power_real_data.py /tmp/real/exemplars "cells redwood amacrine" 20
+    docs/lab/verdict/verdict_power_real_data.py EXEMPLAR_DIR "SETS" DRAWS [--copies K] [-o TSV]
+    e.g. docs/lab/verdict/verdict_power_real_data.py /tmp/real/exemplars "cells redwood amacrine" 20
 
 EXEMPLAR_DIR holds the exported data sets (scripts/spatstat_export.R). For each data set and
 draw, three kinds of output of K x K the exemplar's window (default 2, the size ppsynth

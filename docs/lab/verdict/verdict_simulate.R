@@ -1,7 +1,7 @@
 # Simulated exemplars and outputs of known processes for calibrating eval's verdict
-# (core/metrics/verdict.hpp; docs/verdict.md): spatstat.random draws them, ppsynth judges them.
+# (core/metrics/verdict.hpp; docs/lab/verdict/README.md): spatstat.random draws them, ppsynth judges them.
 #
-#   Rscript scripts/verdict_simulate.R OUT_DIR DRAWS [U=2] [FIRST=1] [PROCESS ...]
+#   Rscript docs/lab/verdict/verdict_simulate.R OUT_DIR DRAWS [U=2] [FIRST=1] [PROCESS ...]
 #
 # For each process and draw d = FIRST..FIRST+DRAWS-1 (seeded by d: the same files for the same
 # arguments; another FIRST gives fresh draws),
@@ -27,11 +27,11 @@ suppressPackageStartupMessages({
   library(spatstat.geom)
   library(spatstat.random)
 })
-source(file.path(dirname(normalizePath(sub("^--file=", "", grep("^--file=", commandArgs(FALSE), value = TRUE)[1]))), "spatstat_io.R"))
+source(file.path(dirname(normalizePath(sub("^--file=", "", grep("^--file=", commandArgs(FALSE), value = TRUE)[1]))), "..", "..", "..", "scripts", "spatstat_io.R"))  # the shared reader stays in scripts/
 
 args <- commandArgs(trailingOnly = TRUE)
 if (length(args) < 2) {
-  cat("usage: Rscript scripts/verdict_simulate.R OUT_DIR DRAWS [U] [FIRST] [PROCESS ...]\n", file = stderr())
+  cat("usage: Rscript docs/lab/verdict/verdict_simulate.R OUT_DIR DRAWS [U] [FIRST] [PROCESS ...]\n", file = stderr())
   quit(status = 2)
 }
 out_dir <- args[1]

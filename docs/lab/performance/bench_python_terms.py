@@ -5,7 +5,7 @@ On `lines` at the published settings (256 x 256 grid), the first stage's iterati
 with the compiled "gram" loss and with the same Gram loss written in Python (python
 registered as "py_gram"), alternating, REPEATS times each; prints the median seconds per
 iteration of each and their ratio. Usage (after scripts/install_python.sh, or with
-PYTHONPATH=build/python):  /usr/bin/python3 scripts/bench_python_terms.py [ITERATIONS] [REPEATS]
+PYTHONPATH=build/python):  /usr/bin/python3 docs/lab/performance/bench_python_terms.py [ITERATIONS] [REPEATS]
 """
 import os
 import statistics
@@ -19,7 +19,7 @@ REPEATS = int(sys.argv[2]) if len(sys.argv) > 2 else 3
 LINES = "shared:data/exemplars/gabor-paper/lines.txt"
 
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs", "examples"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples"))
 import python_terms  # noqa: E402
 
 py_gram = python_terms.gram_loss

@@ -1,27 +1,27 @@
 #!/usr/bin/env bash
-# The real-data table of docs/verdict.md: spatstat.data's patterns as exemplars
+# The real-data table of docs/lab/verdict/README.md: spatstat.data's patterns as exemplars
 # (scripts/spatstat_export.R), each judged against
-#   fitted      realizations of a model spatstat fits to it (scripts/spatstat_fitted.R)
+#   fitted      realizations of a model spatstat fits to it (docs/lab/verdict/spatstat_fitted.R)
 #   METHOD      ppsynth's outputs of each method given (gabor, tiled_copy, roveri2015, pcf2017)
 # by `ppsynth eval` (its verdict, the L-function's distance and the PCF MSE the project
 # reports), one row per data set, kind and seed in DIR/results.tsv:
 #   data set, kind, seed, pcf_mse (all), then per row ("all", "class k", "pair i-j") the
 #   verdict's p ("ROW=p") and sup |L_out - L_ex| in mean spacings ("L:ROW=value").
 #
-#   scripts/verdict_real_data.sh DIR "DATA SETS" "METHODS" "SEEDS" [GABOR FLAGS...]
+#   docs/lab/verdict/verdict_real_data.sh DIR "DATA SETS" "METHODS" "SEEDS" [GABOR FLAGS...]
 # GABOR FLAGS go to the gabor method's syntheses (the baselines run with their defaults).
-#   e.g. scripts/verdict_real_data.sh /tmp/real "cells redwood" "gabor tiled_copy" "95 96" \
+#   e.g. docs/lab/verdict/verdict_real_data.sh /tmp/real "cells redwood" "gabor tiled_copy" "95 96" \
 #          --preset fast --set method.feature_net.precision=float32
 # Runs one synthesis at a time with PPSYNTH_THREADS=1 under nice (the machine is shared);
 # a run directory that already holds a finished run is evaluated again, not rerun. With
 # VERDICT_SYNTHESIZE=no nothing is synthesized: runs made elsewhere (a GPU machine:
-# scripts/gpu_real_data.sh) are evaluated, and a missing one is named and left out. The
+# docs/lab/verdict/gpu_real_data.sh) are evaluated, and a missing one is named and left out. The
 # fitted model's draws are numbered by the seeds too. Each synthesis's wall time is in
-# DIR/runs/<data set>_<method>_s<seed>/run.json. Prints the table of docs/verdict.md from
+# DIR/runs/<data set>_<method>_s<seed>/run.json. Prints the table of docs/lab/verdict/README.md from
 # results.tsv (every line there, earlier calls' included).
 set -euo pipefail
-cd "$(dirname "$0")/.."
-usage='usage: scripts/verdict_real_data.sh DIR "DATA SETS" "METHODS" "SEEDS" [GABOR FLAGS...]'
+cd "$(dirname "$0")/../../.."  # the checkout: this script is in docs/lab/<topic>/
+usage='usage: docs/lab/verdict/verdict_real_data.sh DIR "DATA SETS" "METHODS" "SEEDS" [GABOR FLAGS...]'
 dir=${1:?$usage}
 sets=${2:?$usage}
 methods=${3:?$usage}
@@ -79,7 +79,7 @@ for set in $sets; do
   # The fitted model's draws (seeds as draw numbers), in exemplar units: eval with --zoom 1.
   for seed in $seeds; do
     if [[ ! -f $dir/fitted/${set}_d$(printf '%03d' "$seed").txt ]]; then
-      Rscript scripts/spatstat_fitted.R "$ex" "$dir/fitted/$set" "$seed:$seed" 2 >> "$dir/fitted/$set.log" 2>&1
+      Rscript docs/lab/verdict/spatstat_fitted.R "$ex" "$dir/fitted/$set" "$seed:$seed" 2 >> "$dir/fitted/$set.log" 2>&1
     fi
     row "$set" fitted "$seed" "$ex" "$dir/fitted/${set}_d$(printf '%03d' "$seed").txt" --zoom 1 >> "$results"
   done

@@ -1,22 +1,22 @@
 #!/usr/bin/env bash
-# Calibration and power of eval's verdict (core/metrics/verdict.hpp; docs/verdict.md): known
-# processes simulated by spatstat (scripts/verdict_simulate.R), judged by `ppsynth eval`.
+# Calibration and power of eval's verdict (core/metrics/verdict.hpp; docs/lab/verdict/README.md): known
+# processes simulated by spatstat (docs/lab/verdict/verdict_simulate.R), judged by `ppsynth eval`.
 # Prints, per process and per kind of output, the share of draws whose p < 0.05 in each row:
 #   same     an independent realization: the share should be 0.05 (calibration)
 #   csr      uniform points of the same count per class (power)
 #   ssi      a Poisson-disk pattern of the same count per class (power)
 #   relabel  the realization with its labels permuted (power; multitype only)
 #
-#   scripts/verdict_calibration.sh DIR DRAWS [U=2] [FIRST=1] [EVAL FLAGS...]
-#   e.g. scripts/verdict_calibration.sh /tmp/verdict 200 2 201 --verdict-guard 0.1
-# Draws FIRST..FIRST+DRAWS-1 (scripts/verdict_simulate.R; another FIRST, fresh draws).
+#   docs/lab/verdict/verdict_calibration.sh DIR DRAWS [U=2] [FIRST=1] [EVAL FLAGS...]
+#   e.g. docs/lab/verdict/verdict_calibration.sh /tmp/verdict 200 2 201 --verdict-guard 0.1
+# Draws FIRST..FIRST+DRAWS-1 (docs/lab/verdict/verdict_simulate.R; another FIRST, fresh draws).
 # DIR receives the simulated files (made once: an existing DIR/U<u> is reused, and must hold
 # those draws) and
 # results_U<u>.tsv (process, draw, output kind, row, p). Needs build/ppsynth and R with
 # spatstat (scripts/setup.sh). The outputs are in exemplar units: eval runs with --zoom 1.
 set -euo pipefail
-cd "$(dirname "$0")/.."
-usage="usage: scripts/verdict_calibration.sh DIR DRAWS [U] [FIRST] [EVAL FLAGS...]"
+cd "$(dirname "$0")/../../.."  # the checkout: this script is in docs/lab/<topic>/
+usage="usage: docs/lab/verdict/verdict_calibration.sh DIR DRAWS [U] [FIRST] [EVAL FLAGS...]"
 dir=${1:?$usage}
 draws=${2:?$usage}
 u=${3:-2}
@@ -26,7 +26,7 @@ bin=build/ppsynth
 [[ -x $bin ]] || { echo "verdict_calibration: $bin not built (scripts/setup.sh)" >&2; exit 1; }
 sim="$dir/U$u"
 if [[ ! -d $sim ]]; then
-  Rscript scripts/verdict_simulate.R "$sim.tmp" "$draws" "$u" "$first" > /dev/null
+  Rscript docs/lab/verdict/verdict_simulate.R "$sim.tmp" "$draws" "$u" "$first" > /dev/null
   mv "$sim.tmp" "$sim"
 fi
 results="$dir/results_U$u.tsv"

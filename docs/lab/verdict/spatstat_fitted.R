@@ -1,10 +1,10 @@
 # What a statistician would do instead of ppsynth: fit a point process model to an exemplar with
 # spatstat (ppm for Gibbs and Poisson models, kppm for cluster models) and simulate it on the
-# output's window. The realizations are the "fitted model" column of docs/verdict.md's
+# output's window. The realizations are the "fitted model" column of docs/lab/verdict/README.md's
 # real-data table: eval's verdict should pass them at its nominal rate when the model is
 # right.
 #
-#   Rscript scripts/spatstat_fitted.R EXEMPLAR OUT_STEM DRAWS [U=2] [MODEL=auto]
+#   Rscript docs/lab/verdict/spatstat_fitted.R EXEMPLAR OUT_STEM DRAWS [U=2] [MODEL=auto]
 #
 # EXEMPLAR: a plain point file (scripts/spatstat_export.R writes them; a "class" column makes
 # it multitype). DRAWS: a count N (draws 1..N) or a range A:B. Writes OUT_STEM_dNNN.txt on
@@ -26,11 +26,11 @@ suppressPackageStartupMessages({
   library(spatstat.explore)
   library(spatstat.model)
 })
-source(file.path(dirname(normalizePath(sub("^--file=", "", grep("^--file=", commandArgs(FALSE), value = TRUE)[1]))), "spatstat_io.R"))
+source(file.path(dirname(normalizePath(sub("^--file=", "", grep("^--file=", commandArgs(FALSE), value = TRUE)[1]))), "..", "..", "..", "scripts", "spatstat_io.R"))  # the shared reader stays in scripts/
 
 args <- commandArgs(trailingOnly = TRUE)
 if (length(args) < 3) {
-  cat("usage: Rscript scripts/spatstat_fitted.R EXEMPLAR OUT_STEM DRAWS [U] [MODEL]\n", file = stderr())
+  cat("usage: Rscript docs/lab/verdict/spatstat_fitted.R EXEMPLAR OUT_STEM DRAWS [U] [MODEL]\n", file = stderr())
   quit(status = 2)
 }
 draws <- if (grepl(":", args[3])) {
@@ -95,5 +95,5 @@ for (d in draws) {
     simulate(fit, nsim = 1, w = grow.rectangle(big, margin), drop = TRUE, progress = FALSE)
   if (is.list(Y) && !is.ppp(Y)) Y <- Y[[1]]
   Y <- Y[big]
-  write_plain(Y, sprintf("%s_d%03d.txt", args[2], d), sprintf("fitted model: %s, simulated by scripts/spatstat_fitted.R", model))
+  write_plain(Y, sprintf("%s_d%03d.txt", args[2], d), sprintf("fitted model: %s, simulated by docs/lab/verdict/spatstat_fitted.R", model))
 }

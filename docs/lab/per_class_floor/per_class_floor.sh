@@ -10,12 +10,12 @@
 # whose MSE is at most half the median initialization's. A class where even the copy rarely
 # meets that bound is one the metric cannot judge at this exemplar size.
 #
-#   scripts/per_class_floor.sh EXEMPLAR [N=40] [UPSCALE=2]
-#   e.g. scripts/per_class_floor.sh shared:data/exemplars/gabor-paper/lemon_4c_v2.txt 40
+#   docs/lab/per_class_floor/per_class_floor.sh EXEMPLAR [N=40] [UPSCALE=2]
+#   e.g. docs/lab/per_class_floor/per_class_floor.sh shared:data/exemplars/gabor-paper/lemon_4c_v2.txt 40
 # Needs build/ppsynth (scripts/setup.sh). Writes only under a temporary directory.
 set -euo pipefail
-cd "$(dirname "$0")/.."
-exemplar=${1:?usage: scripts/per_class_floor.sh EXEMPLAR [N] [UPSCALE]}
+cd "$(dirname "$0")/../../.."  # the checkout: this script is in docs/lab/<topic>/
+exemplar=${1:?usage: docs/lab/per_class_floor/per_class_floor.sh EXEMPLAR [N] [UPSCALE]}
 n=${2:-40}
 u=${3:-2}
 bin=build/ppsynth
