@@ -21,9 +21,8 @@ double peak_resident_mib();
 // Hands the heap's free pages back to the kernel (glibc's malloc_trim; nothing elsewhere).
 // A synthesis keeps freed memory on the heap so that every iteration reuses its buffers
 // without page faults (optim/run/runtime.hpp); a run of many windows calls this at each
-// window's end, or the heap's fragments add up window after window (100,000 points of
-// lines: 608 -> 936 MiB over 25 windows; a malloc_trim at window 24 of a later run gave back
-// 213 of its 779 MiB; docs/lab/large_outputs.md).
+// window's end, or the heap's fragments add up window after window (how much:
+// docs/lab/large_outputs.md, "Numbers that were in code comments").
 void release_freed_memory();
 
 }  // namespace ppsynth

@@ -8,7 +8,8 @@ namespace {
 
 // G = s m^T m for a pixels x channels matrix m (s m m^T for channels x pixels). Its gradient
 // is one matrix product, 2 s m (dG + dG^T)/2 -- autograd's mm backward spends two (one per
-// operand), a third of the Gram cost at a 256 x 256 grid.
+// operand), and the Gram's cost is mostly those products (docs/lab/performance/README.md,
+// "Per phase", step 5).
 class GramFunction : public torch::autograd::Function<GramFunction> {
  public:
   static torch::Tensor forward(torch::autograd::AutogradContext* ctx, torch::Tensor m, bool pixels_by_channels,

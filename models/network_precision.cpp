@@ -14,7 +14,7 @@ namespace ppsynth {
 namespace {
 
 // The network's dominant operation at a small size: a 64 -> 64 7x7 convolution, channels-last,
-// on a 24 x 24 map (0.23 GFLOP: milliseconds in float32, a fraction of a second emulated).
+// on a 24 x 24 map (0.23 GFLOP): small enough to time at start-up even where bf16 is emulated.
 double conv_seconds(torch::Dtype dtype) {
   torch::NoGradGuard ng;
   const auto cl = at::MemoryFormat::ChannelsLast;

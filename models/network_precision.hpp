@@ -4,9 +4,10 @@
 //   "float32"   the paper's; every processor.
 //   "bfloat16"  oneDNN's bf16 convolutions: several times float32's rate on a CPU with bf16
 //               units (AVX512_BF16, AMX), but emulated elsewhere, where it is far slower
-//               (AVX2: about 0.01 x). It runs as asked, with a warning that gives the slowdown
-//               measured on this processor; refused where no bf16 convolution can run (an
-//               AVX-512 CPU with oneDNN capped below AVX512_CORE: CpuIsa::bf16_unavailable).
+//               (docs/lab/performance/README.md, "Per machine class"). It runs as asked,
+//               with a warning that gives the slowdown measured on this processor; refused
+//               where no bf16 convolution can run (an AVX-512 CPU with oneDNN capped below
+//               AVX512_CORE: CpuIsa::bf16_unavailable).
 //   "auto"      bfloat16 where the CPU has bf16 units that oneDNN may use (core/processor.hpp:
 //               the ISA caps count), float32 elsewhere. The same config and seed then give
 //               one output per processor class; the run records the choice and its reason.

@@ -13,8 +13,8 @@ constexpr auto kChannelsLast = at::MemoryFormat::ChannelsLast;
 // A convolution with frozen filters: the backward returns the input gradient only. At stride
 // 1 that gradient is the convolution of the output gradient with the filters transposed
 // (in <-> out) and flipped, which oneDNN runs as fast as a forward convolution; LibTorch's own
-// backward is about 1.3x slower (120 -> 120 7x7 at 256 x 256, channels-last, 2 threads: 0.25 s
-// vs 0.33 s). Stride 2 keeps LibTorch's input-gradient kernel.
+// backward is slower (docs/lab/performance/README.md, "Per phase", step 4). Stride 2 keeps
+// LibTorch's input-gradient kernel.
 class FrozenConvFunction : public torch::autograd::Function<FrozenConvFunction> {
  public:
   static torch::Tensor forward(AutogradContext* ctx, torch::Tensor x, torch::Tensor w, torch::Tensor b,

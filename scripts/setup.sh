@@ -9,7 +9,7 @@ if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 PACKAGES=(
   build-essential cmake ninja-build ccache pkg-config
   libtorch-dev            # LibTorch 1.13, CPU
-  libopenblas0-pthread    # without it LibTorch's matrix products run on the reference BLAS (~20x slower)
+  libopenblas0-pthread    # without it LibTorch's matrix products run on the reference BLAS, far slower
   libnanoflann-dev        # k-NN and radius queries
   nlohmann-json3-dev      # configs, JSON point sets, reports
   libspdlog-dev           # logging

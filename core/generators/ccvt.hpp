@@ -10,9 +10,9 @@
 // did not change in the previous iteration are skipped), (2) moves each site to the
 // (toroidal) centroid of its samples. Initial assignment: samples in random order go to the
 // nearest site with room. Stops when an iteration makes no swap or after `max_iterations`.
-// Measured relative radius (256 sites): ~0.76 with 1024 samples per site (Balzer's choice;
-// ~15 s), ~0.75 with 512 (100 sites, 1.5 s), 0.67-0.71 with 256, ~0.66 with 64: fewer samples
-// per site leave the discrete solution noisier (paper Table 1: 0.7341 for its CCVT exemplar).
+// Fewer samples per site leave the discrete solution noisier, a lower relative radius, and
+// more cost more time (how much: docs/lab/performance/README.md, "Numbers that were in code
+// comments"; paper Table 1: 0.7341 for its CCVT exemplar).
 // Cost per iteration O(n * neighbor_sites * points_per_site); 100-200 iterations typical.
 // Registered as "ccvt" {points_per_site, max_iterations, neighbor_sites}.
 #include <cstdint>

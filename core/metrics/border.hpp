@@ -29,8 +29,8 @@ double uniform_border_fraction(const Domain& d);
 // (1 = uniform). border_fraction is one band; a profile tells the two artifacts apart that it
 // mixes: the published method's pile (points parked within a fraction of a spacing of the
 // edge: > 1 in the narrowest bands) and a thin seam behind it or left by a relax that moved
-// the pile away (< 1). On the unit square the published poisson_n64c2_point output is 1.14 at
-// 0.5 % and 0.75 at 1 % (docs/lab/large_outputs.md).
+// the pile away (< 1); one output can show both at once (docs/lab/large_outputs.md,
+// "Numbers that were in code comments").
 // Widths as fractions of the domain's shorter side, as kBorderBand.
 inline constexpr double kBorderProfileBands[] = {0.005, 0.01, 0.02, 0.04};
 struct BorderProfile {

@@ -49,7 +49,9 @@ Curve estimate(const PointSet& a, const PointSet& b, bool same, double r_max, do
   const double step = (r1 - r0) / (o.bins - 1) * r_max;
   const double delta = step / sigma, q_step = std::exp(-2 * delta * delta);
   const size_t n_a = a.size();
-  const bool report = n_a >= 1000000;  // ~10 s and more: a line per 10 %
+  // From a million points a PCF runs long enough to look hung without a line per 10 %
+  // (docs/lab/performance/README.md, "Evaluation on large inputs").
+  const bool report = n_a >= 1000000;
   size_t next_report = n_a / 10;
   NeighborIndex index(b.positions(), dom, periodic);
   std::vector<double> dist;

@@ -1,16 +1,17 @@
 #pragma once
 // Wasserstein-1 (earth mover's) distance between two point sets via an exact optimal
 // assignment: Hungarian algorithm in the Jonker-Volgenant shortest-augmenting-path form
-// with potentials, O(n^2 m) for n <= m (~0.1 s for 300 x 300).
+// with potentials, O(n^2 m) for n <= m.
 // Cost = Euclidean distance in the plane (no wrap; both sets in the same coordinates).
 // Unequal sizes: every point of the smaller set is matched to a distinct point of the larger
 // set (the unmatched surplus of the larger set is ignored). Returns the mean matched distance
 // over the min(|a|, |b|) pairs, in domain units. Either set empty => InputError.
 //
-// Size limit. The assignment needs the |a| x |b| cost matrix and O(n^2 m) time (measured on
-// this 2-core machine: ~0.1 s for 1,000 x 1,000, ~2.8 s for 4,000 x 4,000; 100,000 points
-// would need 80 GB). wasserstein_distance refuses (InputError) beyond `max_pairs` = |a| |b|
-// (default kWassersteinExactPairs = 4e6, e.g. 2,000 x 2,000: 32 MB, well under a second).
+// Size limit. The assignment needs the |a| x |b| cost matrix (8 bytes a pair: 100,000 points
+// would need 80 GB) and O(n^2 m) time, which grows past what a user waits for well before
+// memory runs out (docs/lab/performance/README.md, "Numbers that were in code comments").
+// wasserstein_distance refuses (InputError) beyond `max_pairs` = |a| |b| (default
+// kWassersteinExactPairs = 4e6, e.g. 2,000 x 2,000: 32 MB).
 // wasserstein_estimate is what the evaluation uses: the exact value up to the limit; beyond
 // it, the exact assignment between uniform random subsamples of both sets (fixed seed, so
 // reproducible), sizes chosen as large as the limit allows with the sets' size ratio kept

@@ -38,7 +38,7 @@ struct ProgressEvent {
   bool window_ends = true;  // the window's last stage (snapshots and canvas progress then)
   // Large outputs: the window's grid in output units. A window's snapshot shows this part,
   // not the canvas: a canvas per window would make the snapshots grow with the area squared
-  // (1.1 GB for 100,000 points of lines, 256 windows).
+  // (docs/lab/large_outputs.md says how much).
   Domain window_grid;
   // At a stage's beginning: why it does what it does, where the stage decides that itself
   // (the border relax: how much its class parks, and whether its band moves). Empty otherwise.

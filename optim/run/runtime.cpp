@@ -23,9 +23,9 @@ namespace ppsynth {
 
 namespace {
 
-// Measured with `ppsynth bench` on lines, idle machine: 256 x 256 output grid, one iteration
-// 1.71 s -> 1.20 s (network backward 0.76 -> 0.45 s); 512 x 512, 5.8 s -> 3.7 s. Peak resident
-// memory at 512 x 512: 1655 -> 2085 MiB (returned when the process ends).
+// Keeping freed memory on the heap spares every iteration the page faults of its large
+// activation buffers, at the price of resident memory held until the process ends (how much
+// of each: docs/lab/performance/README.md, "Per phase", step 3, and "512 x 512 output grid").
 bool keep_freed_memory() {
 #ifdef __GLIBC__
   static const bool applied = [] {

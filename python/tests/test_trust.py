@@ -110,7 +110,7 @@ def test_ctrl_c_stops_a_long_initialization_within_a_second(tmp_path):
     with pytest.raises(KeyboardInterrupt):
         ppsynth.synthesize(LINES, seed=5, threads=1, checkpoint_dir=tmp_path / "ck",
                            overrides={"evaluate": False, "output.size": [120, 120], "method.max_iterations": 1})
-    assert time.monotonic() - t0 < 10  # about 1.3 s on an idle machine (1 s timer + the stop)
+    assert time.monotonic() - t0 < 10  # the 1 s timer and the stop, with room: catches a hang
 
 
 def test_resume_of_a_damaged_checkpoint_is_a_value_error(tmp_path):
