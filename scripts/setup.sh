@@ -1,8 +1,16 @@
 #!/usr/bin/env bash
-# Installs every Debian package ppsynth needs, then configures and builds in Release.
-# Usage: scripts/setup.sh [--no-build]
+# Installs every Debian package ppsynth needs, then configures in Release and builds the
+# command, build/ppsynth: all the main job needs, so a first synthesis does not wait for the
+# test binary and the Python module (scripts/test.sh builds those, or --all here).
+# Usage: scripts/setup.sh [--no-build | --all]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+targets=(--target ppsynth)
+case "${1:-}" in
+  "" | --no-build) ;;
+  --all) targets=() ;;  # every target: the test binary, the library example, the Python module
+  *) echo "usage: scripts/setup.sh [--no-build | --all]" >&2; exit 2 ;;
+esac
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 
@@ -48,4 +56,4 @@ export CCACHE_BASEDIR="$here"
 export CCACHE_SLOPPINESS="pch_defines,time_macros,include_file_mtime,include_file_ctime"
 export CCACHE_NOHASHDIR=1
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j"$(nproc)"
+cmake --build build -j"$(nproc)" ${targets[@]+"${targets[@]}"}

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# The test command (README, .ci/run): installs what is missing, builds, runs the one Catch2
-# binary under CTest, then replays and briefly runs the fuzz targets (scripts/fuzz.sh).
+# The test command (README, .ci/run): installs what is missing, builds every target the
+# first command left out (the test binary, the library example, the Python module; an
+# up-to-date target is not rebuilt), runs the one Catch2 binary and the Python tests under
+# CTest, then replays and briefly runs the fuzz targets (scripts/fuzz.sh).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-"$here/scripts/setup.sh"
+"$here/scripts/setup.sh" --all
 cd "$here"
 ctest --test-dir build --output-on-failure --parallel 2
 # The point-file readers and the config loader under libFuzzer (clang, ASan + UBSan, its own
