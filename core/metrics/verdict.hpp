@@ -58,7 +58,8 @@ namespace ppsynth {
 // group with alike sub-windows and a tiny variance, Hahn's T of such reassignments swamps
 // the observed one, and the power against a clustered exemplar falls as the output grows;
 // sub-windows scattered over a larger output instead make the test reject a clustered
-// process's own realizations too often (docs/lab/verdict/README.md, "Power against the output's size").
+// process's own realizations too often (docs/lab/verdict/README.md, "Power against the
+// output's size").
 inline constexpr int kOutputBlockPerExemplarSide = 2;
 
 struct VerdictOptions {

@@ -6,7 +6,8 @@
 // Chosen by "preset": "fast" in a config, `--preset fast` on the command line, or
 // `preset=fast` in a sweep's "set" or "grid". The config's own keys win over the preset's;
 // the resolved config keeps the preset's name beside every value it set. Each preset is
-// declared once, in presets.cpp, with what it trades (docs/explanation/performance.md, "Which knobs trade what").
+// declared once, in presets.cpp, with what it trades (docs/explanation/performance.md,
+// "Which knobs trade what").
 //
 // A preset may differ by processor class: its "config" holds for every processor, and its
 // "without_bf16_units" fragment is merged over it where the network's bf16 would be emulated

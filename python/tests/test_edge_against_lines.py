@@ -1,6 +1,6 @@
-"""docs/lab/border_criterion/edge_against_lines.py (a proposed border criterion): on a torus output the
-edge is one line like any other, so a pattern with no border artifact puts the edge among its
-random lines, a pile on the edge puts it at the top, and a thin seam at the bottom."""
+"""docs/lab/border_criterion/edge_against_lines.py (a proposed border criterion): on a torus
+output the edge is one line like any other, so a pattern with no border artifact puts the edge
+among its random lines, a pile on the edge puts it at the top, and a thin seam at the bottom."""
 import os
 import subprocess
 import sys

@@ -1,5 +1,5 @@
-// docs/lab/verdict/verdict_real_data.sh records an output with a class missing as a failure of that
-// class's rows and goes on with the batch (it stopped the whole batch there). Needs R with
+// docs/lab/verdict/verdict_real_data.sh records an output with a class missing as a failure
+// of that class's rows and goes on with the batch (it stopped the whole batch there). Needs R with
 // spatstat.data (scripts/setup.sh installs it): skipped, saying why, without it.
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,7 @@
 // The verdict (core/metrics/verdict.hpp): a studentized permutation test over sub-windows.
 // Uniform against uniform passes at about the nominal rate (the test is calibrated on the one
-// process whose sub-windows are exactly independent; docs/lab/verdict/README.md has the others, simulated
-// in R); a Poisson-disk exemplar against uniform outputs fails nearly always (power); rows per
+// process whose sub-windows are exactly independent; docs/lab/verdict/README.md has the
+// others, simulated in R); a Poisson-disk exemplar against uniform outputs fails nearly always (power); rows per
 // class and class pair; the same inputs give the same p; a row with too few sub-windows says
 // why instead of giving a p; an output larger than the default is tested on a block of the
 // default's size, so its power does not fall as it grows.
@@ -74,7 +74,8 @@ TEST_CASE("verdict: a large output is tested on a block of the default output's 
   // Outputs of 4 x 4 the exemplar's window: the output group is a block of the default
   // output's 4 x 4 sub-windows (not all 64: against the exemplar's 4, reassignments that leave
   // the small group alike swamp the statistic, and on real clustered exemplars the power
-  // against CSR fell to 0 as the output grew; docs/lab/verdict/README.md), and the test keeps its power.
+  // against CSR fell to 0 as the output grew; docs/lab/verdict/README.md), and the test keeps
+  // its power.
   const VerdictOptions o = fast_options();
   const PointSet ex = matern_cluster_points(100, 300);
   const PointSet out = uniform_points(1600, 700, Domain{0, 0, 4, 4});
