@@ -22,8 +22,9 @@ double since(std::chrono::steady_clock::time_point t) {
 
 // A canvas's start in blocks of about the paper's output (2 x 2 exemplar units), each
 // initialized on its own with its share of the points: the paper's best-candidate start
-// costs O(n^2) (m * i candidates for the i-th point), 4 minutes for 12,000 points, while
-// blocks keep it linear in the area. Only the start: block edges vanish in the synthesis.
+// grows faster than its point count (m * i candidates for the i-th point, each a nearest
+// search), while blocks keep it linear in the area. Only the start: block edges vanish in
+// the synthesis.
 PointSet initialize_in_blocks(const Initializer& init, size_t n, int cls, uint64_t seed, const Domain& canvas,
                               const SynthesisContext& ctx) {
   const int bx = std::max(1, static_cast<int>(std::lround(canvas.width() / 2))),
@@ -96,7 +97,7 @@ PointSet initial_output(const PointSet& ex, const SynthesisContext& ctx, const I
 // the rectangle's corner, appended after the points to synthesize. They never move (final
 // from the start): the rectangle's points meet a pattern of the exemplar's own statistics
 // at the rectangle's edge instead of an empty border to fill, and the count is exact (a
-// cropped padded canvas loses 5-10 % of Tree1's points to its border). Measured, it helps
+// cropped padded canvas loses some of its points to its border). Measured, it helps
 // only exemplars like lines; on poisson, Tree1 and lemon it is worse than the crop
 // (docs/lab/large_outputs.md, "Context borders"), which is why "clean" stays the default.
 // The tiles are centered on the rectangle's corner (shifted by half a tile): a pad narrower
