@@ -1,7 +1,7 @@
 #pragma once
 // A checkpoint on disk (checkpoint.bin): typed arrays and JSON that prove where they belong
 // and that they are intact. Torch-free, so that its reader is fuzzed (tests/fuzz) like the
-// point readers; optim/gabor/synthesis_state.hpp puts a synthesis's state into one.
+// point readers; optim/gabor/stages/synthesis_state.hpp puts a synthesis's state into one.
 //
 // Layout (integers little-endian):
 //   "ppsynth-checkpoint\n"      magic

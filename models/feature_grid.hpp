@@ -3,7 +3,7 @@
 // linspace(b, 1-b, res) with b = 1/(res+1). x runs along image columns, y along rows, as in
 // the published code. The output grid is the exemplar grid times the upscaling u.
 //
-// A rectangle grid (a rectangle output's, optim/gabor/window_plan.hpp) has `rows` rows at the
+// A rectangle grid (a rectangle output's, optim/gabor/windows/window_plan.hpp) has `rows` rows at the
 // columns' spacing: its width is the unit, so positions and maps stay isotropic (one sigma,
 // one frequency along both axes) and y runs past 1 when rows > res. rows = 0 (or res) is the
 // square, position for position.

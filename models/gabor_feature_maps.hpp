@@ -36,6 +36,8 @@
 
 #include <vector>
 
+#include "models/gabor_channels.hpp"
+
 namespace ppsynth {
 
 // Which implementation evaluates the maps: `automatic` takes the CPU kernel for CPU tensors
@@ -51,7 +53,7 @@ struct GaborMapsOptions {
   double upscale = 1.0;    // u
   int k = 30;              // neighbors per grid position
   // Each position's sum over its neighbors is divided by this; 0: by the neighbors summed,
-  // min(k, N). A tile of the output (optim/gabor/random_tiles.hpp) holding fewer points than the
+  // min(k, N). A tile of the output (optim/gabor/stages/random_tiles.hpp) holding fewer points than the
   // exemplar's k takes the exemplar's divisor, so that a point weighs in it what it weighs
   // in the exemplar's maps, whatever the tile's count.
   int divisor = 0;
@@ -67,13 +69,6 @@ struct GaborMapsOptions {
 // auto or tensor_ops is an InputError naming it.
 GaborMapsPath gabor_maps_path(GaborMapsPath requested, const torch::Device& device);
 const char* gabor_maps_path_name(GaborMapsPath path);  // "cpu_kernel", "tensor_ops" (run.json)
-
-// One output channel: which frequency (-1 = spatial map) and which weight column (-1 = none).
-struct GaborChannel {
-  int freq = -1;  // 0..8 -> nu = ((freq % 3) - 1, (freq / 3) - 1) * f
-  int weight = -1;
-};
-std::vector<GaborChannel> gabor_channels(int num_attributes, bool spatial_only);
 
 class GaborFeatureMapsImpl : public torch::nn::Module {
  public:

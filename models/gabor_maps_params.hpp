@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "models/gabor_feature_maps.hpp"
+#include "models/gabor_channels.hpp"
 
 namespace ppsynth {
 

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "models/gabor_feature_maps.hpp"
 #include "models/gabor_maps_params.hpp"
 
 namespace ppsynth {

@@ -11,7 +11,7 @@
 #include "core/generators/generator.hpp"
 #include "core/paths.hpp"
 #include "models/rasterizer.hpp"
-#include "optim/gabor/gabor_pipeline.hpp"
+#include "optim/gabor/resolution/gabor_resolution.hpp"
 #include "optim/method/method.hpp"
 
 namespace fs = std::filesystem;

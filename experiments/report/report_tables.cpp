@@ -6,7 +6,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/report/html_report.hpp"
-#include "optim/gabor/gabor_pipeline.hpp"
+#include "optim/gabor/resolution/gabor_resolution.hpp"
 
 namespace ppsynth {
 

@@ -39,7 +39,7 @@ Key state_key(const torch::Tensor& p) {
   }
 }
 
-// Checks of a restored state (optim/gabor/synthesis_state.hpp reads the tensors; these are their values).
+// Checks of a restored state (optim/gabor/stages/synthesis_state.hpp reads the tensors; these are their values).
 class StateReader {
  public:
   // Tensors are read on the CPU and go where the positions are (runtime.device).

@@ -14,7 +14,7 @@
 namespace ppsynth {
 
 // An optimizer's state as named tensors (moments, step counts, history), as a checkpoint
-// holds it (optim/gabor/synthesis_state.hpp); empty before the first step.
+// holds it (optim/gabor/stages/synthesis_state.hpp); empty before the first step.
 using OptimizerState = std::map<std::string, torch::Tensor>;
 
 class PositionOptimizer {

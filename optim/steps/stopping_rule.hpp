@@ -11,7 +11,7 @@
 //              changing what any metric sees).
 //
 // A rule is asked after every iteration. What it remembers of the stage goes into `record`,
-// which the engine keeps in the checkpoint (optim/gabor/synthesis_state.hpp), so a resumed stage
+// which the engine keeps in the checkpoint (optim/gabor/stages/synthesis_state.hpp), so a resumed stage
 // stops at the same iteration as one never interrupted. A rule that measures the pattern may
 // also mark an iterate as the stage's best so far: the engine then keeps a copy of those
 // positions (also checkpointed) and ends the stage on them rather than on its last iterate.

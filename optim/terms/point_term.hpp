@@ -10,7 +10,7 @@
 // switched on by `method.terms: {"name": {"weight": w, ...}}`; nothing else changes (the test
 // "A point term registered in a test file acts in a synthesis" shows it).
 // A term runs on the paper's u x u torus; one that also knows a window of a rectangle output
-// (optim/gabor/window_plan.hpp: plane distances, no wrap) says so with in_windows(), and the
+// (optim/gabor/windows/window_plan.hpp: plane distances, no wrap) says so with in_windows(), and the
 // others are refused there when the settings resolve (method.terms.<name>), before any output.
 // Registered: "separation" (optim/terms/separation_term.hpp; torus and windows), "pcf_match"
 // (optim/terms/pcf_match_term.hpp; torus only).

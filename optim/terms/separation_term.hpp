@@ -1,7 +1,7 @@
 #pragma once
 // SeparationTerm: not in the paper (method.terms.separation, off by default; a point term,
 // optim/terms/point_term.hpp; method.border_relax.separation switches it on in the relax stages
-// only, optim/gabor/gabor_pipeline.cpp). A soft minimum-distance
+// only, optim/gabor/stages/border_relax/border_relax_stage.cpp). A soft minimum-distance
 // penalty on the moving output points. The Gabor losses see two points closer than a grid
 // cell as one blurred point, so outputs keep pairs closer than the exemplar ever has them:
 // the small-r mass of their PCF and, for disks, the overlaps the paper names as the method's

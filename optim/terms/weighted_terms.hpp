@@ -1,6 +1,6 @@
 #pragma once
 // The config shape shared by the optional loss terms beside the paper's (point terms,
-// optim/terms/point_term.hpp; map terms, optim/gabor/map_term.hpp):
+// optim/terms/point_term.hpp; map terms, optim/gabor/stages/map_term.hpp):
 //   "<key>": {"<registered name>": {"weight": w, ...params}, ...}
 // A term is on when its weight is > 0; unknown names, unknown keys and a missing or negative
 // weight are refused, naming the key path (method.<key>.<name>...).

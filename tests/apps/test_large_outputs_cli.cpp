@@ -1,6 +1,6 @@
 // `ppsynth synthesize --size W H` / `--points N` end to end (--quick): the output's domain
 // and count, bad sizes refused with nothing written, and the peak resident memory of a run
-// that does not grow with the output (window by window: optim/gabor/window_plan.hpp).
+// that does not grow with the output (window by window: optim/gabor/windows/window_plan.hpp).
 #include <catch2/catch.hpp>
 
 #include <filesystem>

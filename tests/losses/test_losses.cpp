@@ -56,7 +56,7 @@ TEST_CASE("FFT deep correlation equals the direct sum, values and exact gradient
 
 TEST_CASE("Deep correlation of a rectangle map: FFT equals the direct sum, each lag a mean over its overlap",
           "[losses][correlation]") {
-  // A rectangle output's features are rows x columns (optim/gabor/window_plan.hpp): each lag is
+  // A rectangle output's features are rows x columns (optim/gabor/windows/window_plan.hpp): each lag is
   // still a mean over the positions it pairs, so a constant map correlates to its square at
   // every lag, whatever the aspect, and the targets' crop (the exemplar's layer) applies.
   for (const auto& [h, w] : {std::pair{5, 9}, std::pair{9, 4}}) {

@@ -9,7 +9,7 @@
 #include "models/rasterizer.hpp"
 #include "optim/steps/initializer.hpp"
 #include "optim/method/method.hpp"
-#include "optim/gabor/map_term.hpp"
+#include "optim/gabor/stages/map_term.hpp"
 #include "optim/terms/point_term.hpp"
 #include "optim/steps/position_optimizer.hpp"
 #include "optim/steps/stopping_rule.hpp"

@@ -1,4 +1,4 @@
-// method.border_relax (optim/gabor/border_relax_stage.hpp): after each class's sigma stages on the u x u
+// method.border_relax (optim/gabor/stages/border_relax/border_relax_stage.hpp): after each class's sigma stages on the u x u
 // torus, a stage that moves only that class's points within the band of the grid's edge, on
 // the rolled grid. It must leave every other point where the stage found it, move the band,
 // resume bit for bit, and be refused where there is no grid edge. By default ("auto") it runs
@@ -14,7 +14,7 @@
 #include "core/metrics/border.hpp"
 #include "core/metrics/nearest_neighbor.hpp"
 #include "core/output_shape.hpp"
-#include "optim/gabor/gabor_pipeline.hpp"
+#include "optim/gabor/resolution/gabor_resolution.hpp"
 #include "optim/method/method.hpp"
 #include "optim/run/run_config.hpp"
 #include "tests/support/gabor_runs.hpp"

@@ -15,7 +15,7 @@
 #include "core/generators/lattices.hpp"
 #include "core/metrics/pcf.hpp"
 #include "optim/method/method.hpp"
-#include "optim/gabor/synthesis_state.hpp"
+#include "optim/gabor/stages/synthesis_state.hpp"
 #include "tests/support/gabor_runs.hpp"
 #include "tests/support/same_bits.hpp"
 #include "tests/support/small_exemplar.hpp"

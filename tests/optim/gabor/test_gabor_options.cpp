@@ -1,14 +1,14 @@
-// The Gabor method's typed options (optim/gabor/gabor_options.hpp, grid_options.hpp,
+// The Gabor method's typed options (optim/gabor/settings/gabor_options.hpp, grid_options.hpp,
 // window_options.hpp, quick_options.hpp): each reads its keys, names the key on a bad value,
 // and is what the method's defaults and ranges list.
 #include <catch2/catch.hpp>
 
 #include "core/error.hpp"
-#include "optim/gabor/gabor_options.hpp"
-#include "optim/gabor/gabor_pipeline.hpp"
-#include "optim/gabor/grid_options.hpp"
-#include "optim/gabor/quick_options.hpp"
-#include "optim/gabor/window_options.hpp"
+#include "optim/gabor/settings/gabor_options.hpp"
+#include "optim/gabor/resolution/gabor_resolution.hpp"
+#include "optim/gabor/settings/grid_options.hpp"
+#include "optim/gabor/settings/quick_options.hpp"
+#include "optim/gabor/settings/window_options.hpp"
 
 using namespace ppsynth;
 using Catch::Matchers::Contains;

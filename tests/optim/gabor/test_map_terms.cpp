@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "core/generators/lattices.hpp"
-#include "optim/gabor/map_term.hpp"
+#include "optim/gabor/stages/map_term.hpp"
 #include "optim/method/method.hpp"
 
 using namespace ppsynth;

@@ -1,4 +1,4 @@
-// method.measure "tiles" and "rolled" (optim/gabor/random_tiles.hpp): the u x u torus cut into
+// method.measure "tiles" and "rolled" (optim/gabor/stages/random_tiles.hpp): the u x u torus cut into
 // exemplar-sized tiles at a random offset, each measured as the exemplar is, or rolled under
 // the whole grid. The cut partitions the points and keeps their gradient; a tile holding the
 // exemplar itself has the exemplar's loss (zero); the roll wraps and keeps the gradient; both
@@ -12,11 +12,12 @@
 #include "core/output_shape.hpp"
 #include "models/gabor_feature_maps.hpp"
 #include "models/point_tensor.hpp"
-#include "optim/gabor/gabor_pipeline.hpp"
+#include "optim/gabor/pipeline/gabor_pipeline.hpp"
+#include "optim/gabor/resolution/gabor_resolution.hpp"
 #include "optim/method/method.hpp"
-#include "optim/gabor/random_tiles.hpp"
+#include "optim/gabor/stages/random_tiles.hpp"
 #include "optim/run/run_config.hpp"
-#include "optim/gabor/synthesis_state.hpp"
+#include "optim/gabor/stages/synthesis_state.hpp"
 #include "tests/support/gabor_runs.hpp"
 #include "tests/support/same_bits.hpp"
 #include "tests/support/small_exemplar.hpp"

@@ -9,8 +9,8 @@
 #include "core/metrics/patches.hpp"
 #include "core/metrics/pcf.hpp"
 #include "optim/steps/stopping_rule.hpp"
-#include "optim/gabor/gabor_pipeline.hpp"
-#include "optim/gabor/sigma_schedule.hpp"
+#include "optim/gabor/pipeline/gabor_pipeline.hpp"
+#include "optim/gabor/settings/sigma_schedule.hpp"
 
 using namespace ppsynth;
 

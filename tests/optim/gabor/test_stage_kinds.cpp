@@ -1,4 +1,4 @@
-// A stage kind is one file (optim/gabor/stage_kind.hpp): this one, written and registered here
+// A stage kind is one file (optim/gabor/stages/stage_kind.hpp): this one, written and registered here
 // and nowhere else, enters the plan after each class's sigma stages, moves only the points in
 // the left half of the unit square for a fixed count, and records what it did. The engine runs
 // it without knowing it.
@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "optim/gabor/gabor_pipeline.hpp"
-#include "optim/gabor/stage_kind.hpp"
+#include "optim/gabor/settings/gabor_settings.hpp"
+#include "optim/gabor/stages/stage_kind.hpp"
 #include "optim/method/method.hpp"
 #include "tests/support/same_bits.hpp"
 #include "tests/support/small_exemplar.hpp"

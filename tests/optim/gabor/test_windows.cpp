@@ -1,6 +1,6 @@
 // Outputs of any size and shape: rectangles and point counts in exemplar units,
 // clean borders (a padded canvas, cropped, or its pad held by the frozen exemplar), and synthesis window by window
-// (optim/gabor/window_plan.hpp): the layout tiles the canvas, a window run resumes bit for bit, the
+// (optim/gabor/windows/window_plan.hpp): the layout tiles the canvas, a window run resumes bit for bit, the
 // pattern has no seam at the windows' meeting lines, and the grid (the memory of an
 // iteration) does not grow with the output.
 #include <catch2/catch.hpp>
@@ -11,13 +11,14 @@
 #include "core/metrics/nearest_neighbor.hpp"
 #include "core/output_shape.hpp"
 #include "models/point_tensor.hpp"
-#include "optim/gabor/gabor_pipeline.hpp"
+#include "optim/gabor/pipeline/gabor_pipeline.hpp"
+#include "optim/gabor/resolution/gabor_resolution.hpp"
 #include "optim/method/method.hpp"
 #include "optim/run/run_config.hpp"
-#include "optim/gabor/synthesis_state.hpp"
+#include "optim/gabor/stages/synthesis_state.hpp"
 #include "tests/support/same_bits.hpp"
 #include "tests/support/small_exemplar.hpp"
-#include "optim/gabor/window_plan.hpp"
+#include "optim/gabor/windows/window_plan.hpp"
 
 using namespace ppsynth;
 using ppsynth::test::same_bits;

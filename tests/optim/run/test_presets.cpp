@@ -6,7 +6,7 @@
 #include "core/config/config.hpp"
 #include "core/processor.hpp"
 #include "models/feature_net.hpp"
-#include "optim/gabor/gabor_pipeline.hpp"
+#include "optim/gabor/resolution/gabor_resolution.hpp"
 #include "optim/run/presets.hpp"
 #include "optim/run/run_config.hpp"
 #include "tests/support/gabor_runs.hpp"

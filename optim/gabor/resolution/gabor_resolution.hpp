@@ -1,0 +1,30 @@
+#pragma once
+// The Gabor method's parameters into its settings: the method's defaults and ranges (its own
+// keys, its blocks and its parts' specs, each declared once in its block's file), and
+// resolve_gabor_settings, which reads them for one exemplar and output into GaborSettings
+// (optim/gabor/settings/gabor_settings.hpp); errors name the key.
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/output_shape.hpp"
+#include "core/point_set.hpp"
+#include "optim/gabor/settings/gabor_settings.hpp"
+
+namespace ppsynth {
+
+// The "gabor" method's defaults (the published code's settings, method.md §2-5).
+nlohmann::json gabor_defaults();
+// The range of each numeric default (core/config/param_bounds.hpp), checked on creation.
+nlohmann::json gabor_bounds();
+
+// Resolves settings from the method's (defaults-merged) params for an output of `shape`;
+// errors name the key.
+GaborSettings resolve_gabor_settings(const nlohmann::json& params, const PointSet& exemplar, const OutputShape& shape, bool quick);
+
+// The map weights of Eq. 5 for a config's "map_attributes": null or "auto" = every attribute column
+// that is not constant; or an explicit list of names. Returns column indices.
+std::vector<int> map_attribute_columns(const PointSet& exemplar, const nlohmann::json& spec);
+
+
+}  // namespace ppsynth

@@ -1,0 +1,60 @@
+#pragma once
+// GaborSettings: the resolved numbers of one run of the Gabor method (grid, k, sigmas,
+// attributes, windows, ...), the type alone. resolve_gabor_settings
+// (optim/gabor/resolution/gabor_resolution.hpp) fills it from the method's params; the
+// pipeline, the stages, the windows and the engine read it.
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/point_set.hpp"
+#include "optim/gabor/settings/border_relax_options.hpp"
+#include "optim/gabor/settings/gabor_options.hpp"
+#include "optim/gabor/settings/window_size.hpp"
+
+namespace ppsynth {
+
+// Resolved from the method's params by resolve_gabor_settings: the defaults are gabor_defaults()'s
+// and the run config's, declared once there; the zeros below are not values a run can get.
+struct GaborSettings {
+  double mean_nn_distance = 0;  // d of the exemplar (all classes)
+  int res = 0;                  // exemplar grid (positions per exemplar unit)
+  // What the exemplar's raster covers, in exemplar coordinates: the unit square (the paper's
+  // outputs), or the exemplar's whole domain (rectangle outputs, in exemplar units: a
+  // 1.6 x 1 exemplar's grid is res x 1.6 columns by res rows, as the output's keeps its aspect).
+  Domain exemplar_grid{};
+  int upscale = 0;              // the paper's u (1 for rectangle outputs: exemplar units)
+  // The output raster: `out_res` columns and `out_rows` rows at one spacing over a grid
+  // `out_scale` exemplar units wide. The paper's: the unit square, u * res across u.
+  // Rectangles: the canvas, or one of its windows past the budget (`window`,
+  // optim/gabor/windows/window_plan.hpp), rows x columns in the exemplar's aspect.
+  int out_res = 0, out_rows = 0;
+  double out_scale = 0;
+  WindowSize window;            // rectangles: the windows' size and count (one: the canvas)
+  double window_margin = 0;     // rectangles: exemplar units reserved on each side of a window's interior
+  bool statistics_in_output = false;  // rectangles: the losses measure the grid's part inside the output only
+  // method.measure (the paper's u x u torus only for all but "grid"): "grid" measures the
+  // whole grid as published; "tiles" cuts the output at a random offset into u x u
+  // exemplar-sized tiles, each on the exemplar's grid; "rolled" measures the whole grid of
+  // the torus rolled by a random offset (optim/gabor/stages/random_tiles.hpp). Both offsets change with
+  // every iteration.
+  GaborOptions::Measure measure = GaborOptions::Measure::grid;
+  bool measure_tiles() const { return measure == GaborOptions::Measure::tiles; }
+  BorderRelaxOptions border_relax;  // method.border_relax (optim/gabor/settings/border_relax_options.hpp)
+  // The grid of each sigma stage (coarse -> fine): `res` and `out_res` at every stage, or with
+  // method.grid.per_sigma coarser grids at the coarser sigmas, keeping the finest stage's
+  // grid positions per sigma (the Gabor frequencies scale with 1/sigma, so each stage's
+  // maps are sampled as finely as the finest stage's).
+  std::vector<int> sigma_res, sigma_out_res, sigma_out_rows;
+  int k = 0;                    // neighbors per grid position: min(M, k)
+  bool k_per_stage = true;      // k = min(k, exemplar points of the stage's classes)
+  std::vector<double> sigmas;   // coarse -> fine
+  std::vector<int> attr_cols;   // attribute columns weighting the maps
+  std::vector<int> class_order;
+  int max_iterations = 0;
+  bool jitter = true;
+  bool fresh_net_per_class = false;  // a new random network per class group (the published attribute scenes)
+  nlohmann::json feature_net;             // the net spec after --quick shrinking
+};
+
+}  // namespace ppsynth
