@@ -9,6 +9,7 @@
 #include "core/log.hpp"
 #include "core/metrics/border.hpp"
 #include "core/metrics/class_match.hpp"
+#include "core/metrics/close_pairs.hpp"
 #include "core/metrics/nearest_neighbor.hpp"
 #include "core/metrics/overlap.hpp"
 #include "core/metrics/patches.hpp"
@@ -156,6 +157,7 @@ void check_eval_options(const EvalOptions& opt) {
     throw InputError("crops (--crops) must be in 1.." + std::to_string(kMaxCrops) + " (got " +
                      std::to_string(opt.crops) + ")");
   if (opt.verdict) check_verdict_options(opt.verdict_options);
+  if (opt.scorecard) check_novelty_options(opt.novelty);
   if (opt.spectrum && (opt.spectrum_frequency < 1 || opt.spectrum_frequency > kMaxPeriodogramFrequencies))
     throw InputError("spectrum_frequency must be in 1.." + std::to_string(kMaxPeriodogramFrequencies));
 }
@@ -246,6 +248,11 @@ json evaluate(const PointSet& exemplar, const PointSet& output_as_read, const Ev
   if (opt.second_order) {
     progress("K, L, g and mark correlations");
     r["second_order"] = second_order_report(exemplar, output, plan.zoom, opt.include_curves);
+  }
+  if (opt.scorecard) {
+    progress("scorecard: novelty, close pairs");
+    r["scorecard"] = {{"novelty", novelty_report(exemplar, output, plan.zoom, opt.novelty)},
+                      {"close_pairs", close_pairs_report(exemplar, output, plan.zoom)}};
   }
   if (opt.verdict) {
     progress("verdict");

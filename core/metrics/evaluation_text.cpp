@@ -152,6 +152,35 @@ void write_second_order(std::ostream& os, const json& so) {
   }
 }
 
+// One novelty-kind line (novelty.hpp): the share of matched neighbourhoods and what it means.
+void write_match(std::ostream& os, const char* name, const json& m, const char* against) {
+  os << line("  %-10s ", name);
+  if (!m["share"].is_number()) {
+    os << "cannot judge: no output point has " << m["k"].get<int>() << " neighbours inside the output's window\n";
+    return;
+  }
+  os << cell(m["share"], "%.3f") << " of " << m["scored"].get<size_t>() << " points' " << m["k"].get<int>()
+     << "-neighbourhoods are a translate of " << against << "'s within " << cell(m["tolerance"], "%g")
+     << " mean NN distances: " << (m["copy"].get<bool>() ? "COPY" : "new") << " (a copy from "
+     << cell(m["copy_share"], "%g") << ")\n";
+}
+
+// The scorecard: novelty (and diversity), then the close pairs per row.
+void write_scorecard(std::ostream& os, const json& sc) {
+  os << "\nscorecard (docs/explanation/scorecard.md: what each line measures, its false-alarm rate)\n";
+  if (sc.contains("novelty")) write_match(os, "novelty", sc["novelty"], "the periodic exemplar");
+  if (sc.contains("diversity")) write_match(os, "diversity", sc["diversity"], "the other output");
+  if (!sc.contains("close_pairs")) return;
+  os << "  close pairs (plane, exemplar units): output pairs closer than the exemplar's closest, the share of points in one;\n"
+        "  normalized min distance = closest pair / the largest possible at the row's density (paper's Table 1)\n";
+  os << "                   exemplar min  pairs below  share of points  normalized: exemplar  output\n";
+  for (const auto& row : sc["close_pairs"]["rows"])
+    os << line("  %-16s %12s %12s %16s %21s %7s\n", row_name(row).c_str(), cell(row["exemplar_min"], "%.4g").c_str(),
+               row["pairs_below"].is_number() ? std::to_string(row["pairs_below"].get<size_t>()).c_str() : "-",
+               cell(row["share_below"], "%.4f").c_str(), cell(row["exemplar_normalized"], "%.3f").c_str(),
+               cell(row["output_normalized"], "%.3f").c_str());
+}
+
 }  // namespace
 
 std::string format_evaluation(const json& r) {
@@ -160,6 +189,7 @@ std::string format_evaluation(const json& r) {
   write_metrics(os, r);
   if (r.contains("overlap")) write_overlaps(os, r["overlap"]);
   if (r.contains("second_order")) write_second_order(os, r["second_order"]);
+  if (r.contains("scorecard")) write_scorecard(os, r["scorecard"]);
   if (r.contains("verdict")) os << "\n" << format_verdict(r["verdict"]);
   return os.str();
 }

@@ -94,10 +94,10 @@ std::vector<std::pair<std::string, double>> metric_values(const nlohmann::json& 
     }
   // spatstat's L (sup distance) and the verdict's p-value and pass (1/0: the mean over seeds
   // is the pass rate), in the scopes above (second_order_report.hpp, verdict.hpp).
-  auto rows = [&](const char* section, auto&& each) {
-    const auto* sec = r.object(m, section, section);
+  auto rows_of = [&](const nlohmann::json& parent, const char* section, const std::string& at, auto&& each) {
+    const auto* sec = r.object(parent, section, at);
     if (!sec) return;
-    const std::string key = std::string(section) + ".rows";
+    const std::string key = at + ".rows";
     const auto* list = r.array(*sec, "rows", key);
     if (!list) return;
     for (size_t i = 0; i < list->size(); ++i) {
@@ -112,6 +112,7 @@ std::vector<std::pair<std::string, double>> metric_values(const nlohmann::json& 
       each(scope, row, k);
     }
   };
+  auto rows = [&](const char* section, auto&& each) { rows_of(m, section, section, each); };
   rows("second_order", [&](const std::string& scope, const nlohmann::json& row, const std::string& k) {
     r.add(scope + "/l_sup", row, "l_sup", k);
   });
@@ -126,6 +127,24 @@ std::vector<std::pair<std::string, double>> metric_values(const nlohmann::json& 
       r.add(scope + "/verdict_cannot_judge", value, "v", k + ".pass");
     }
   });
+  // The scorecard (novelty.hpp, close_pairs.hpp): the share of the output's neighbourhoods
+  // copied from the exemplar and its copy flag (1/0: the mean over seeds is the share of seeds
+  // flagged); per row the share of points in a pair closer than the exemplar's closest and the
+  // normalized minimum distance.
+  if (const auto* sc = r.object(m, "scorecard", "scorecard")) {
+    if (const auto* nov = r.object(*sc, "novelty", "scorecard.novelty")) {
+      r.add("all/novelty_share", *nov, "share", "scorecard.novelty");
+      if (nov->contains("copy") && !(*nov)["copy"].is_null()) {
+        if (!(*nov)["copy"].is_boolean()) r.refuse("scorecard.novelty.copy", "expected true, false or null");
+        const nlohmann::json value = {{"v", (*nov)["copy"].get<bool>() ? 1.0 : 0.0}};
+        r.add("all/copy", value, "v", "scorecard.novelty.copy");
+      }
+    }
+    rows_of(*sc, "close_pairs", "scorecard.close_pairs", [&](const std::string& scope, const nlohmann::json& row, const std::string& k) {
+      r.add(scope + "/close_pair_share", row, "share_below", k);
+      r.add(scope + "/min_distance_normalized", row, "output_normalized", k);
+    });
+  }
   return v;
 }
 

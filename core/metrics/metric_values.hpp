@@ -2,8 +2,9 @@
 // The numbers of one evaluation (a run's metrics.json, evaluate()'s JSON) as
 // "<scope>/<metric>" -> value: "all/pcf_mse", "class 1/wasserstein", "classes 0-1/pcf_mse",
 // "all/border_density_0.5%", "all/l_sup", "class 0/verdict_p", "all/verdict_pass" (1 pass,
-// 0 fail), "all/verdict_cannot_judge" (1 for a row that cannot judge: never a pass). What
-// gather pools over seeds. A metrics.json that is not the evaluation's layout (edited, truncated, crafted) is an InputError naming `source` and the
+// 0 fail), "all/verdict_cannot_judge" (1 for a row that cannot judge: never a pass),
+// "all/novelty_share", "all/copy" (1 flagged a copy, 0 not), "class 1/close_pair_share",
+// "classes 0-1/min_distance_normalized" (the scorecard). What gather pools over seeds. A metrics.json that is not the evaluation's layout (edited, truncated, crafted) is an InputError naming `source` and the
 // key; a metric that is null (undefined for that output) is left out.
 #include <string>
 #include <utility>

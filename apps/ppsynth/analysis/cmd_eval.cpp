@@ -5,7 +5,10 @@
 // core/metrics/eval_protocol.hpp), all classes, per class, cross-class PCF, relative radius,
 // disk overlaps, border share; spatstat's K, L, g and mark correlations in exemplar units
 // (core/metrics/second_order_report.hpp) and the verdict, a p-value per row for "is the output
-// a plausible realization of the exemplar's process?" (core/metrics/verdict.hpp, docs/verdict.md).
+// a plausible realization of the exemplar's process?" (core/metrics/verdict.hpp, docs/verdict.md),
+// and the scorecard: novelty (is it a copy of the exemplar?), close pairs, and with
+// --diversity OTHER whether it is a translate of another seed's output
+// (core/metrics/novelty.hpp, close_pairs.hpp, docs/explanation/scorecard.md).
 // Human table by default; --json prints the full result (with curves).
 // Sub-quadratic in the point count (k-d tree searches) except the exact Wasserstein, which
 // is exact up to --wasserstein-exact-limit pairs per quadrant and a labeled subsample
@@ -21,15 +24,19 @@
 #include "core/formats/point_io.hpp"
 #include "core/metrics/evaluation.hpp"
 #include "core/metrics/evaluation_text.hpp"
+#include "core/metrics/class_match.hpp"
+#include "core/metrics/novelty.hpp"
 
 namespace {
 
 struct Args {
-  std::string exemplar, output, out_file, format = "auto", protocol = "auto";
+  std::string exemplar, output, out_file, format = "auto", protocol = "auto", diversity;
   int crops = ppsynth::kDefaultCrops;
   uint64_t crop_seed = ppsynth::kDefaultCropSeed;
-  bool json = false, force = false, no_curves = false, spectrum = false, periodic = false, no_verdict = false, no_second_order = false;
+  bool json = false, force = false, no_curves = false, spectrum = false, periodic = false, no_verdict = false, no_second_order = false,
+       no_scorecard = false;
   ppsynth::VerdictOptions verdict;
+  ppsynth::NoveltyOptions novelty;
   int bins = 100;
   double r_max = 0, zoom = 0;
   size_t wasserstein_pairs = ppsynth::kWassersteinExactPairs;
@@ -80,6 +87,17 @@ ppsynth::app::RunFn setup(CLI::App& app) {
       ->capture_default_str()
       ->check(ppsynth::app::seed_number());
   app.add_option("--verdict-alpha", a->verdict.alpha, "verdict: a row passes when p >= alpha")->capture_default_str();
+  app.add_flag("--no-scorecard", a->no_scorecard, "leave out the scorecard (novelty: is the output a copy?; close pairs)");
+  app.add_option("--novelty-k", a->novelty.k, "scorecard: neighbours per neighbourhood compared, 1..64")->capture_default_str();
+  app.add_option("--novelty-tolerance", a->novelty.tolerance,
+                 "scorecard: a neighbourhood matches within this many exemplar mean nearest-neighbour distances, (0, 1]")
+      ->capture_default_str();
+  app.add_option("--novelty-copy-share", a->novelty.copy_share,
+                 "scorecard: the output is flagged a copy when this share of its points match, (0, 1]")
+      ->capture_default_str();
+  app.add_option("--diversity", a->diversity,
+                 "scorecard: another output of the same exemplar (another seed): are the two translates of each other?")
+      ->check(ppsynth::app::path_text());
   return [a]() {
     ppsynth::EvalOptions opt;
     opt.protocol = ppsynth::parse_patch_protocol(a->protocol);
@@ -95,16 +113,32 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     opt.second_order = !a->no_second_order;
     opt.verdict = !a->no_verdict;
     opt.verdict_options = a->verdict;
+    opt.scorecard = !a->no_scorecard;
+    opt.novelty = a->novelty;
+    if (!a->diversity.empty() && a->no_scorecard)
+      throw ppsynth::InputError("--diversity is a line of the scorecard: it cannot go with --no-scorecard");
     ppsynth::check_eval_options(opt);  // before reading: a bad option is reported first
-    ppsynth::app::check_output_files({{"--out", a->out_file}}, {{"--exemplar", a->exemplar}, {"--output", a->output}},
-                                     a->force);
+    std::vector<ppsynth::app::NamedPath> inputs = {{"--exemplar", a->exemplar}, {"--output", a->output}};
+    if (!a->diversity.empty()) inputs.push_back({"--diversity", a->diversity});
+    ppsynth::app::check_output_files({{"--out", a->out_file}}, inputs, a->force);
     ppsynth::ReadOptions ro;
     ro.format = ppsynth::parse_format(a->format);
     ppsynth::PointSet ex = ppsynth::read_points(a->exemplar, ro);
     ppsynth::PointSet out = ppsynth::read_points(a->output, ro);
+    ppsynth::PointSet other;
+    if (!a->diversity.empty()) {
+      other = ppsynth::read_points(a->diversity, ro);
+      if (other.empty()) throw ppsynth::InputError(a->diversity + ": --diversity: the other output is empty");
+    }
     nlohmann::json r = ppsynth::evaluate(ex, out, opt);
     r["exemplar"]["path"] = ppsynth::shown_text(a->exemplar);  // any file name can be written as JSON
     r["output"]["path"] = ppsynth::shown_text(a->output);
+    if (!a->diversity.empty()) {  // at the output's zoom: two seeds of one run share it
+      r["scorecard"]["diversity"] = ppsynth::diversity_report(ex, ppsynth::match_classes(ex, out).output,
+                                                              ppsynth::match_classes(ex, other).output,
+                                                              r["protocol"]["zoom"].get<double>(), opt.novelty);
+      r["scorecard"]["diversity"]["other"] = ppsynth::shown_text(a->diversity);
+    }
     if (!a->out_file.empty()) ppsynth::write_text_atomic(a->out_file, r.dump(2) + "\n");
     if (a->json)
       std::cout << r.dump(2) << "\n";
