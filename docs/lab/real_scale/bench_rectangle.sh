@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# What a Gabor synthesis costs per grid position, run against run (issue 61: a rectangle
+# What a Gabor synthesis costs per grid position, run against run (a rectangle
 # output on one grid against a square one of about as many positions). Each NAME=ARGS is one
 # `ppsynth synthesize ARGS FLAGS` into OUT_DIR/NAME, one after the other (run back to back,
 # their ratios hold on a loaded machine where their times do not); then, per run, the plan
@@ -8,14 +8,14 @@
 # the phases (run.json's phase_seconds; what is left of the synthesis time: the stages' and
 # windows' bookkeeping) and the peak memory. A benchmark: it prints numbers.
 #
-# Usage: docs/lab/rectangle_one_grid/bench_rectangle.sh OUT_DIR NAME=ARGS... [-- FLAGS...]
-#   docs/lab/rectangle_one_grid/bench_rectangle.sh /tmp/b "amacrine=-e data/spatstat/amacrine.txt" \
+# Usage: docs/lab/real_scale/bench_rectangle.sh OUT_DIR NAME=ARGS... [-- FLAGS...]
+#   docs/lab/real_scale/bench_rectangle.sh /tmp/b "amacrine=-e data/spatstat/amacrine.txt" \
 #     "poisson_u4=-e shared:data/exemplars/gabor-paper/poisson_n64c2_point.txt --set upscale=4" \
 #     -- --preset fast --set method.max_iterations=3
 #   PPSYNTH    the binary (default build/ppsynth); PPSYNTH_THREADS as for any run (default 1)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
-[ $# -ge 2 ] || { echo "usage: docs/lab/rectangle_one_grid/bench_rectangle.sh OUT_DIR NAME=ARGS... [-- FLAGS...]" >&2; exit 2; }
+[ $# -ge 2 ] || { echo "usage: docs/lab/real_scale/bench_rectangle.sh OUT_DIR NAME=ARGS... [-- FLAGS...]" >&2; exit 2; }
 out=$1
 shift
 runs=()
