@@ -44,6 +44,9 @@ done
 for c in $copies; do
   [[ $c =~ ^[0-9]+$ ]] && [ "$c" -ge 1 ] || { echo "bench_scaling: --copies holds '$c', not a positive whole number" >&2; exit 2; }
 done
+for ex in $exemplars; do
+  [ -f "$here/configs/runs/$ex.json" ] || { echo "bench_scaling: no config $here/configs/runs/$ex.json (--exemplars names configs/runs/NAME.json)" >&2; exit 2; }
+done
 bin="${PPSYNTH_BIN:-$here/build/ppsynth}"
 [ -x "$bin" ] || { echo "bench_scaling: $bin not built (run scripts/setup.sh)" >&2; exit 1; }
 export PPSYNTH_THREADS=${PPSYNTH_THREADS:-2}
@@ -57,7 +60,6 @@ print("%.6g %.6g" % ((math.sqrt(n), math.sqrt(n)) if sys.argv[2] == "square" els
 
 for ex in $exemplars; do
   config="$here/configs/runs/$ex.json"
-  [ -f "$config" ] || { echo "bench_scaling: no config $config" >&2; exit 2; }
   for preset in $presets; do
     for shape in $shapes; do
       for c in $copies; do
