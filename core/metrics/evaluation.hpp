@@ -58,7 +58,7 @@
 // "wasserstein_sample" [exemplar points, patch points]; "wasserstein_note" says it in words and
 // the table prints the estimate as "~value" with a note.
 // More than kMaxPairClasses (64) classes: "cross" is empty and "cross_skipped" says why.
-// Cost (measured in docs/performance.md, "Evaluation on large inputs"): O(N log N) for the
+// Cost (measured in docs/lab/performance/README.md, "Evaluation on large inputs"): O(N log N) for the
 // nearest-neighbor statistics, Chamfer and the PCFs (k-d tree queries), the exact
 // Wasserstein O(n^2 m) up to the limit, per patch (crops: `crops` patches instead of 4).
 // Inputs of 50,000 points or more log each stage.

@@ -117,7 +117,7 @@ void write_metrics(std::ostream& os, const json& r) {
   if (fewest > 0 && fewest < kFewPoints)
     os << "note: with fewer than " << kFewPoints << " exemplar points, a row's pcf_mse depends on where the "
        << (crops ? "crops" : "quadrants") << "\n"
-       << "      cut the pattern as much as on its structure (scripts/per_class_floor.sh measures it)\n";
+       << "      cut the pattern as much as on its structure (docs/lab/per_class_floor/per_class_floor.sh measures it)\n";
 }
 
 // Overlap is the method's known weakness on disks (paper Fig. 15): every class pair is shown,

@@ -10,8 +10,8 @@ namespace ppsynth {
 nlohmann::json presets() {
   using json = nlohmann::json;
   return json{
-      // The Gabor method's quality in the least time on a CPU (docs/performance.md, "Time to
-      // quality", has the measurements behind each knob):
+      // The Gabor method's quality in the least time on a CPU (docs/explanation/performance.md,
+      // "Which knobs trade what", and the lab pages it links hold the measurements behind each knob):
       //   - the network in bf16 where the CPU has bf16 units ("auto"): oneDNN's bf16
       //     convolutions run several times float32's rate there;
       //   - per-sigma grids: a map blurred by sigma holds no detail finer than sigma, so the

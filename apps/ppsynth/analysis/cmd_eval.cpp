@@ -5,7 +5,7 @@
 // core/metrics/eval_protocol.hpp), all classes, per class, cross-class PCF, relative radius,
 // disk overlaps, border share; spatstat's K, L, g and mark correlations in exemplar units
 // (core/metrics/second_order_report.hpp) and the verdict, a p-value per row for "is the output
-// a plausible realization of the exemplar's process?" (core/metrics/verdict.hpp, docs/verdict.md),
+// a plausible realization of the exemplar's process?" (core/metrics/verdict.hpp, docs/explanation/verdict.md),
 // and the scorecard: novelty (is it a copy of the exemplar?), close pairs, and with
 // --diversity OTHER whether it is a translate of another seed's output
 // (core/metrics/novelty.hpp, close_pairs.hpp, docs/explanation/scorecard.md).
