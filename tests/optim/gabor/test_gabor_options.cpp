@@ -3,6 +3,7 @@
 // and is what the method's defaults and ranges list.
 #include <catch2/catch.hpp>
 
+#include "core/config/config.hpp"
 #include "core/error.hpp"
 #include "optim/gabor/settings/gabor_options.hpp"
 #include "optim/gabor/resolution/gabor_resolution.hpp"
