@@ -12,6 +12,7 @@
 #include "tests/support/run_command.hpp"
 #include "tests/support/scratch_dir.hpp"
 
+using namespace ppsynth;
 namespace fs = std::filesystem;
 
 namespace {
