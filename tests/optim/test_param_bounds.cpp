@@ -10,6 +10,7 @@
 #include "optim/steps/initializer.hpp"
 #include "optim/method/method.hpp"
 #include "optim/gabor/stages/map_term.hpp"
+#include "optim/gabor/stages/stage_kind.hpp"
 #include "optim/terms/point_term.hpp"
 #include "optim/steps/position_optimizer.hpp"
 #include "optim/steps/stopping_rule.hpp"
@@ -39,6 +40,7 @@ TEST_CASE("every registered part declares the range of each numeric parameter", 
   check_registry<ppsynth::InitializerRegistry>("init");
   check_registry<ppsynth::PointTermRegistry>("term");
   check_registry<ppsynth::MapTermRegistry>("map_term");
+  check_registry<ppsynth::StageKindRegistry>("stage_kind");
   check_registry<ppsynth::StoppingRuleRegistry>("convergence");
   check_registry<ppsynth::GeneratorRegistry>("generator");
 }

@@ -226,6 +226,16 @@ void GaborEngine::check_restored(const std::string& source) const {
   for (const auto& r : s.history)
     if (r.stage > s.stage || r.stage >= stages || r.iteration >= iteration_cap(plan_[r.stage]))
       throw refuse("a loss recorded at stage " + std::to_string(r.stage) + ", iteration " + std::to_string(r.iteration));
+  // Each finished stage's record is its stage's: the engine's fields, then its kind's (the
+  // checkpoint's reader keeps them as they are).
+  for (size_t i = 0; i < s.stages.size(); ++i) {
+    const json& d = s.stages[i].details;
+    const std::string which = "stage record " + std::to_string(i) + ": ";
+    for (const char* k : {"class", "k"})
+      if (!d.contains(k) || !d[k].is_number_integer()) throw refuse(which + "'" + k + "' is not a whole number");
+    if (!d.contains("sigma") || !d["sigma"].is_number()) throw refuse(which + "'sigma' is not a number");
+    if (const std::string problem = plan_[i].kind->record_problem(d); !problem.empty()) throw refuse(which + problem);
+  }
   if (s.final_points.size() != (shape_.rectangle ? n : 0)) throw refuse("final flags for another number of points");
   for (uint8_t f : s.final_points)
     if (f > 1) throw refuse("a final flag that is neither 0 nor 1");

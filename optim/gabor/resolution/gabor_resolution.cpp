@@ -17,11 +17,28 @@
 #include "optim/gabor/settings/window_options.hpp"
 #include "optim/gabor/settings/window_size.hpp"
 #include "optim/gabor/stages/map_term.hpp"
+#include "optim/gabor/stages/stage_kind.hpp"
 #include "optim/terms/point_term.hpp"
 
 namespace ppsynth {
 
+namespace {
+json gabor_own_defaults();  // without the stage kinds' blocks
+json gabor_own_bounds();
+}  // namespace
+
 json gabor_defaults() {
+  json d = gabor_own_defaults();
+  // Not in the paper: the class-end stage kinds (the border relax), each its block
+  // method.<name> as its registration declares it (optim/gabor/stages/stage_kind.hpp).
+  const json kinds = StageKindRegistry::instance().describe();
+  for (const auto& [name, block] : kinds.items()) d[name] = block["defaults"];
+  return d;
+}
+
+namespace {
+
+json gabor_own_defaults() {
   // The method's own keys (optim/gabor/settings/gabor_options.hpp), its blocks and its parts' specs.
   return merge(GaborOptions::defaults(), json{
       {"grid", GridOptions::defaults()},  // optim/gabor/settings/grid_options.hpp
@@ -41,9 +58,6 @@ json gabor_defaults() {
       // Not in the paper: losses on the positions themselves (optim/terms/point_term.hpp), by
       // registered name: {"separation": {"weight": 1}, "pcf_match": {"weight": 10}}. Empty = the paper.
       {"terms", json::object()},
-      // Not in the paper: the border relax stage after each class's sigma stages
-      // (optim/gabor/settings/border_relax_options.hpp declares its keys, defaults and ranges).
-      {"border_relax", BorderRelaxOptions::defaults()},
       // Rectangle outputs run window by window (optim/gabor/settings/window_options.hpp).
       {"window", WindowOptions::defaults()},
       // --quick: every knob that sets the cost, shrunk (optim/gabor/settings/quick_options.hpp).
@@ -51,13 +65,22 @@ json gabor_defaults() {
   });
 }
 
-json gabor_bounds() {
+json gabor_own_bounds() {
   return merge(GaborOptions::bounds(), json{
       {"grid", GridOptions::bounds()},
       {"window", WindowOptions::bounds()},
-      {"border_relax", BorderRelaxOptions::bounds()},
       {"quick", QuickOptions::bounds()},
   });
+}
+
+}  // namespace
+
+json gabor_bounds() {
+  json b = gabor_own_bounds();
+  const json kinds = StageKindRegistry::instance().describe();
+  for (const auto& [name, block] : kinds.items())
+    if (!block["bounds"].empty()) b[name] = block["bounds"];
+  return b;
 }
 
 std::vector<int> map_attribute_columns(const PointSet& ex, const json& spec) {
@@ -133,15 +156,13 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
                                          "(output.size or output.points) takes output.border instead");
   if (s.measure != GaborOptions::Measure::grid && !p["map_terms"].empty())
     throw config_error("method.measure", named + " does not combine with method.map_terms (their maps are the unrolled grid's)");
-  BorderRelaxContext relax;
-  relax.rectangle = shape.rectangle;
-  relax.measured_whole = s.measure == GaborOptions::Measure::grid;
-  relax.map_terms = !p["map_terms"].empty();
-  relax.quick = quick;
-  relax.max_iterations = s.max_iterations;
-  relax.mean_nn_distance = s.mean_nn_distance;
-  relax.upscale = s.upscale;
-  s.border_relax = BorderRelaxOptions::resolve(p["border_relax"], relax);
+  s.rectangle = shape.rectangle;
+  s.quick = quick;
+  s.map_terms = !p["map_terms"].empty();
+  // Each class-end kind's block as the method's registry merged and checked it; the kind
+  // resolves it, and refuses what it cannot run, naming method.<name>.<key>, here.
+  for (const std::string& name : StageKindRegistry::instance().names()) s.stage_kinds[name] = p[name];
+  class_end_kinds(s);
   s.fresh_net_per_class = o.fresh_net_per_class;
   if (shape.rectangle) {  // windows: only the terms that know them (optim/terms/point_term.hpp, map_term.hpp)
     check_point_terms_in_windows(p["terms"]);

@@ -13,7 +13,10 @@
 
 namespace ppsynth {
 
-// The "gabor" method's defaults (the published code's settings, method.md §2-5).
+// The "gabor" method's defaults (the published code's settings, method.md §2-5): its own keys
+// and blocks, and the block (method.<name>) of each class-end stage kind registered so far as
+// the kind declares it; a kind registered after the method adds its block to the method's
+// entry itself (register_stage_kind, optim/gabor/stages/stage_kind.hpp).
 nlohmann::json gabor_defaults();
 // The range of each numeric default (core/config/param_bounds.hpp), checked on creation.
 nlohmann::json gabor_bounds();

@@ -2,9 +2,10 @@
 // The Gabor method's own keys, typed: the sigma schedule, the neighbors, the iterations, the
 // class order, where the losses measure; each declared once, here, with its default and its
 // range. The method's blocks have their own (grid_options.hpp, window_options.hpp,
-// quick_options.hpp, border_relax_options.hpp); its parts are specs that their registries
-// resolve (rasterizer, feature_net, losses, optimizer, convergence, init, map_terms, terms).
-// gabor_defaults() and gabor_bounds() (optim/gabor/resolution/gabor_resolution.hpp) put them all together.
+// quick_options.hpp; a class-end stage kind's, where the kind registers: stage_kind.hpp); its
+// parts are specs that their registries resolve (rasterizer, feature_net, losses, optimizer,
+// convergence, init, map_terms, terms). gabor_defaults() and gabor_bounds()
+// (optim/gabor/resolution/gabor_resolution.hpp) put them all together.
 #include <nlohmann/json.hpp>
 
 #include <vector>

@@ -8,7 +8,6 @@
 #include <nlohmann/json.hpp>
 
 #include "core/point_set.hpp"
-#include "optim/gabor/settings/border_relax_options.hpp"
 #include "optim/gabor/settings/gabor_options.hpp"
 #include "optim/gabor/settings/window_size.hpp"
 
@@ -40,7 +39,13 @@ struct GaborSettings {
   // every iteration.
   GaborOptions::Measure measure = GaborOptions::Measure::grid;
   bool measure_tiles() const { return measure == GaborOptions::Measure::tiles; }
-  BorderRelaxOptions border_relax;  // method.border_relax (optim/gabor/settings/border_relax_options.hpp)
+  // What the stage kinds see of the run besides the numbers above: a rectangle output, --quick,
+  // map terms given.
+  bool rectangle = false, quick = false, map_terms = false;
+  // Each class-end stage kind's block (method.<name>, its defaults merged and its ranges checked
+  // as its StageKindRegistry entry declares them), by the kind's name: the kind reads it
+  // (optim/gabor/stages/stage_kind.hpp); the settings do not.
+  nlohmann::json stage_kinds = nlohmann::json::object();
   // The grid of each sigma stage (coarse -> fine): `res` and `out_res` at every stage, or with
   // method.grid.per_sigma coarser grids at the coarser sigmas, keeping the finest stage's
   // grid positions per sigma (the Gabor frequencies scale with 1/sigma, so each stage's

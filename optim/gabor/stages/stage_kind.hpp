@@ -10,10 +10,14 @@
 //   terms    point terms of its own, beside the run's method.terms
 //
 // The paper's stage is SigmaStage (optim/gabor/stages/sigma_stage.hpp). Kinds that follow each
-// class's sigma stages (BorderRelaxStage, optim/gabor/stages/border_relax/border_relax_stage.hpp) register under a
-// name in StageKindRegistry: a factory gets the resolved settings and returns the kind, or
-// null when the settings do not ask for it. A new kind is one file: its class and its
-// registration (tests/optim/gabor/test_stage_kinds.cpp adds one).
+// class's sigma stages (BorderRelaxStage, optim/gabor/stages/border_relax/border_relax_stage.hpp)
+// register under a name with PPSYNTH_REGISTER_STAGE_KIND, declaring their options block
+// method.<name> (its defaults and ranges; the method's defaults list it): a factory gets that
+// block, merged and checked, with the resolved settings, and returns the kind, or null when
+// the block does not ask for it. A kind's record fields are its own: the checkpoint keeps them
+// as they are, and record_problem() checks them when a run resumes. A new kind is one file:
+// its class and its registration (tests/optim/gabor/test_stage_kinds.cpp adds one,
+// test_stage_kind_options.cpp one with options and a record it resumes from).
 #include <torch/torch.h>
 
 #include <memory>
@@ -68,16 +72,31 @@ class StageKind {
   // run.json's stats.
   std::vector<WeightedPointTerm>& terms() { return terms_; }
   virtual void describe(nlohmann::json& /*stats*/) const {}
+  // What is wrong with the kind's own fields in a stage record read back from a checkpoint
+  // (StageStart::record's; a resumed run reads them), or "" when nothing is.
+  virtual std::string record_problem(const nlohmann::json& /*details*/) const { return ""; }
 
  protected:
   std::vector<WeightedPointTerm> terms_;
 };
 
-// Class-end kinds by name. The factory's params and key path are unused (a kind reads its
-// settings, resolved from its method.<name> block); it returns null when not asked for.
+// Class-end kinds by name. The factory gets the kind's block method.<name> (GaborSettings::
+// stage_kinds), its key path and the settings; it returns null when the block does not ask for
+// the kind, and throws config_error naming the key for a block it cannot run.
 using StageKindRegistry = Registry<StageKind, const GaborSettings&>;
 
 // The class-end kinds the settings ask for, in name order.
 std::vector<std::shared_ptr<StageKind>> class_end_kinds(const GaborSettings& settings);
 
+// Registers a class-end kind, and its block under the "gabor" method's defaults and bounds
+// (whichever of the two registers first; PPSYNTH_REGISTER_STAGE_KIND).
+bool register_stage_kind(const std::string& name, StageKindRegistry::Entry entry);
+
 }  // namespace ppsynth
+
+// PPSYNTH_REGISTER_STAGE_KIND("name", defaults_json, bounds_json, "description", factory_lambda)
+#define PPSYNTH_REGISTER_STAGE_KIND(NAME, DEFAULTS, BOUNDS, DESC, ...)                              \
+  namespace {                                                                                         \
+  [[maybe_unused]] const bool PPSYNTH_CONCAT(ppsynth_stage_kind_, __LINE__) = ppsynth::register_stage_kind( \
+      NAME, ppsynth::StageKindRegistry::Entry{__VA_ARGS__, DEFAULTS, BOUNDS, DESC});                   \
+  }

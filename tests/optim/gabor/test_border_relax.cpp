@@ -15,6 +15,7 @@
 #include "core/metrics/nearest_neighbor.hpp"
 #include "core/output_shape.hpp"
 #include "optim/gabor/resolution/gabor_resolution.hpp"
+#include "optim/gabor/stages/border_relax/border_relax_stage.hpp"
 #include "optim/method/method.hpp"
 #include "optim/run/run_config.hpp"
 #include "tests/support/gabor_runs.hpp"
@@ -28,6 +29,14 @@ using ppsynth::test::same_bits;
 using ppsynth::test::StageEnds;
 
 namespace {
+
+// The relax's options as its kind resolved them from the settings' block (none asked: 0
+// iterations).
+BorderRelaxOptions relax_options(const GaborSettings& s) {
+  for (const auto& kind : class_end_kinds(s))
+    if (const auto* relax = dynamic_cast<const BorderRelaxStage*>(kind.get())) return relax->options();
+  return {};
+}
 
 // parked 0: every class is relaxed, parked or not (tiny runs park less than the issue's bound).
 // after "class": each class's relax right after its sigma stages (the default "all": below).
@@ -126,7 +135,7 @@ TEST_CASE("by default the relaxes follow every class's sigma stages, which stay 
   bad["border_relax"]["after"] = "each";
   OutputShape square;
   square.upscale = 2;
-  CHECK(resolve_gabor_settings(method_params(after_all), ex, square, false).border_relax.after_all);
+  CHECK(relax_options(resolve_gabor_settings(method_params(after_all), ex, square, false)).after_all);
   // One class: after it is after all, the plan "class" makes, bit for bit.
   const PointSet one = test::small_exemplar(1, false);
   auto one_run = [&](const json& m) {
@@ -275,8 +284,8 @@ TEST_CASE("method.border_relax is refused where there is no grid edge, naming th
   OutputShape square;
   square.upscale = 2;
   json relax = {{"type", "gabor"}, {"border_relax", {{"iterations", 10}}}};
-  CHECK(resolve_gabor_settings(method_params(relax), ex, square, false).border_relax.iterations == 10);
-  CHECK(resolve_gabor_settings(method_params(relax), ex, square, true).border_relax.iterations == 4);  // --quick's cap
+  CHECK(relax_options(resolve_gabor_settings(method_params(relax), ex, square, false)).iterations == 10);
+  CHECK(relax_options(resolve_gabor_settings(method_params(relax), ex, square, true)).iterations == 4);  // --quick's cap
   const OutputShape rect = resolve_output_shape(resolve_run_config(json{{"output", {{"size", {2, 2}}}}}, {}), ex);
   CHECK_THROWS_WITH(resolve_gabor_settings(method_params(relax), ex, rect, false), Catch::Contains("method.border_relax"));
   json tiles = relax;
@@ -300,8 +309,8 @@ TEST_CASE("method.border_relax is refused where there is no grid edge, naming th
   // Off (0 iterations, as configs/runs set it) it is the paper's plan, wherever the output goes.
   json off = relax;
   off["border_relax"]["iterations"] = 0;
-  CHECK(resolve_gabor_settings(method_params(off), ex, square, false).border_relax.iterations == 0);
-  CHECK(resolve_gabor_settings(method_params(off), ex, rect, false).border_relax.iterations == 0);
+  CHECK(relax_options(resolve_gabor_settings(method_params(off), ex, square, false)).iterations == 0);
+  CHECK(relax_options(resolve_gabor_settings(method_params(off), ex, rect, false)).iterations == 0);
 }
 
 TEST_CASE("by default (null, \"auto\") the border is relaxed on the u x u square measured as one grid, and nowhere else", "[optim][border_relax]") {
@@ -312,20 +321,20 @@ TEST_CASE("by default (null, \"auto\") the border is relaxed on the u x u square
   CHECK(method_params(plain)["border_relax"]["iterations"].is_null());
   json named = plain;
   named["border_relax"] = {{"iterations", "auto"}};
-  CHECK(resolve_gabor_settings(method_params(named), ex, square, false).border_relax.iterations == 60);
-  CHECK(resolve_gabor_settings(method_params(plain), ex, square, false).border_relax.iterations == 60);
-  CHECK(resolve_gabor_settings(method_params(plain), ex, square, true).border_relax.iterations == 4);  // --quick's cap
+  CHECK(relax_options(resolve_gabor_settings(method_params(named), ex, square, false)).iterations == 60);
+  CHECK(relax_options(resolve_gabor_settings(method_params(plain), ex, square, false)).iterations == 60);
+  CHECK(relax_options(resolve_gabor_settings(method_params(plain), ex, square, true)).iterations == 4);  // --quick's cap
   // No fixed grid edge: a rectangle (output.border instead), tiles, rolled, maps of other terms.
   const OutputShape rect = resolve_output_shape(resolve_run_config(json{{"output", {{"size", {2, 2}}}}}, {}), ex);
-  CHECK(resolve_gabor_settings(method_params(plain), ex, rect, false).border_relax.iterations == 0);
+  CHECK(relax_options(resolve_gabor_settings(method_params(plain), ex, rect, false)).iterations == 0);
   for (const char* measure : {"tiles", "rolled"}) {
     json m = plain;
     m["measure"] = measure;
-    CHECK(resolve_gabor_settings(method_params(m), ex, square, false).border_relax.iterations == 0);
+    CHECK(relax_options(resolve_gabor_settings(method_params(m), ex, square, false)).iterations == 0);
   }
   json own = plain;
   own["map_terms"] = {{"class_own", {{"weight", 1}}}};
-  CHECK(resolve_gabor_settings(method_params(own), ex, square, false).border_relax.iterations == 0);
+  CHECK(relax_options(resolve_gabor_settings(method_params(own), ex, square, false)).iterations == 0);
   // The shipped paper configs keep the published border.
   for (const char* name : {"lines", "lemon_4c_v2", "poisson_n64c2_point", "ps_Tree1"}) {
     INFO(name);

@@ -232,7 +232,6 @@ TEST_CASE("a restored state is checked against the plan: indices, counts, flags,
       {"optimizer state 'step'", [](SynthesisState& s) { s.optimizer["step"] = torch::tensor(int64_t{0}); }},
       {"optimizer state 'momentum'", [](SynthesisState& s) { s.optimizer["momentum"] = torch::zeros({1}); }},
       {"best iterate", [](SynthesisState& s) { s.stage_best = torch::zeros({1, 2}); }},
-      {"another type", [](SynthesisState& s) { s.stages.push_back(StageRecord{"sigma 1/2", 1, 0.0, 0.0, {{"relaxed", "yes"}}}); }},
       {"generator", [](SynthesisState& s) { s.rng = "not a generator"; }},
   };
   for (const Case& c : cases) {
@@ -244,6 +243,35 @@ TEST_CASE("a restored state is checked against the plan: indices, counts, flags,
   // Intact, the round trip resumes to the same bits.
   const std::string same = edited(mid, [](SynthesisState&) {});
   CHECK(same_bits(synthesize(ex, &same).output, whole.output));
+}
+
+TEST_CASE("a finished stage's record is checked when a run resumes: the engine's fields, then its kind's", "[optim][checkpoint][border_relax]") {
+  const PointSet ex = test::small_exemplar(2, true);
+  const Run whole = synthesize(ex);
+  // Inside the last stage: every earlier stage's record is in it, the relaxes' among them.
+  const std::string& late = whole.checkpoints[whole.checkpoints.size() - 2];
+  size_t relax = 0;
+  {
+    const SynthesisState st = deserialize_state(late, "test");
+    while (relax < st.stages.size() && !st.stages[relax].details.contains("relaxed")) ++relax;
+    REQUIRE(relax < st.stages.size());
+  }
+  struct Case {
+    const char* what;
+    std::function<void(SynthesisState&)> edit;
+  };
+  const std::vector<Case> cases = {
+      {"'k' is not a whole number", [](SynthesisState& s) { s.stages[0].details["k"] = "two"; }},
+      {"'sigma' is not a number", [](SynthesisState& s) { s.stages[0].details.erase("sigma"); }},
+      {"'relaxed' is not true or false", [&](SynthesisState& s) { s.stages[relax].details["relaxed"] = "yes"; }},
+      {"'parked_over_uniform' is not a number", [&](SynthesisState& s) { s.stages[relax].details["parked_over_uniform"] = "x"; }},
+  };
+  for (const Case& c : cases) {
+    const std::string bytes = edited(late, c.edit);
+    INFO(c.what);
+    CHECK_THROWS_AS(synthesize(ex, &bytes), CheckpointError);
+    CHECK_THROWS_WITH(synthesize(ex, &bytes), Catch::Contains(c.what));
+  }
 }
 
 TEST_CASE("random bytes changed in a checkpoint (checksum mended) never crash a resume", "[optim][checkpoint]") {

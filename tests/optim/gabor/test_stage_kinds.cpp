@@ -40,11 +40,11 @@ class LeftHalfStage : public StageKind {
   }
 };
 
-PPSYNTH_REGISTER(StageKindRegistry, "test_left_half", json::object(), json::object(), "a test's stage kind",
-                 [](const json&, const std::string&, const GaborSettings&) -> std::unique_ptr<StageKind> {
-                   if (!left_half_enabled) return nullptr;
-                   return std::make_unique<LeftHalfStage>();
-                 })
+PPSYNTH_REGISTER_STAGE_KIND("test_left_half", json::object(), json::object(), "a test's stage kind",
+                            [](const json&, const std::string&, const GaborSettings&) -> std::unique_ptr<StageKind> {
+                              if (!left_half_enabled) return nullptr;
+                              return std::make_unique<LeftHalfStage>();
+                            })
 
 PointSet run(const PointSet& ex, test::StageEnds& ends, StagesReport* stages) {
   const json method = {{"type", "gabor"},

@@ -33,33 +33,32 @@ torch::Tensor border_band(const PointSet& output, const std::vector<size_t>& mov
 
 }  // namespace
 
-BorderRelaxStage::BorderRelaxStage(const GaborSettings& s) : after_all_(s.border_relax.after_all) {
-  terms_ = create_weighted_terms<PointTerm>(json{{"separation", {{"weight", s.border_relax.separation}}}}, "method.border_relax");
+BorderRelaxStage::BorderRelaxStage(const BorderRelaxOptions& o) : o_(o) {
+  terms_ = create_weighted_terms<PointTerm>(json{{"separation", {{"weight", o_.separation}}}}, "method.border_relax");
 }
 
-int BorderRelaxStage::iteration_cap(const GaborSettings& s) const { return s.border_relax.iterations; }
+int BorderRelaxStage::iteration_cap(const GaborSettings&) const { return o_.iterations; }
 
-nlohmann::json BorderRelaxStage::optimizer(nlohmann::json spec, const GaborSettings& s) const {
-  if (s.border_relax.lr > 0) spec["lr"] = json::array({s.border_relax.lr});  // else the finest sigma's
+nlohmann::json BorderRelaxStage::optimizer(nlohmann::json spec, const GaborSettings&) const {
+  if (o_.lr > 0) spec["lr"] = json::array({o_.lr});  // else the finest sigma's
   return spec;
 }
 
 StageStart BorderRelaxStage::start(const StageStartView& v) const {
-  const GaborSettings& s = v.settings;
   const double parked = parked_over_uniform(v.output, v.moving);
   // Relaxed when it parks, or when an earlier class was relaxed, parked or not: its sigma
   // stages measured the unrolled grid, where its pairs with the relaxed classes across the
   // seam were never seen (lemon_4c_v2's later classes: docs/lab/large_outputs.md). The
   // records are the checkpoint's, so a resumed run decides as the uninterrupted one.
-  const bool relax = s.border_relax.parked <= 0 || parked > s.border_relax.parked ||
+  const bool relax = o_.parked <= 0 || parked > o_.parked ||
                      std::any_of(v.finished_stages.begin(), v.finished_stages.end(),
                                  [](const StageRecord& r) { return r.details.value("relaxed", false); });
   StageStart st;
-  st.moving_mask = relax ? border_band(v.output, v.moving, s.border_relax.band)
+  st.moving_mask = relax ? border_band(v.output, v.moving, o_.band)
                          : torch::zeros({static_cast<int64_t>(v.moving.size()), 1}, torch::kBool);
   const bool moves = st.moving_mask.any().item<bool>();
   st.note = fmt::format("{:.2f} x uniform points' share within 1 % of the edge (method.border_relax.parked {:g}): {}",
-                        parked, s.border_relax.parked, moves ? "relaxing its band" : "nothing to move");
+                        parked, o_.parked, moves ? "relaxing its band" : "nothing to move");
   st.record = {{"parked_over_uniform", parked}, {"relaxed", moves}};
   return st;
 }
@@ -68,11 +67,27 @@ void BorderRelaxStage::describe(nlohmann::json& stats) const {
   for (const auto& t : terms_) stats["border_relax_terms"][t.name] = t.weight;
 }
 
-PPSYNTH_REGISTER(StageKindRegistry, "border_relax", json::object(), json::object(),
-                 "method.border_relax: after each class's sigma stages, its points near the torus's grid edge move",
-                 [](const json&, const std::string&, const GaborSettings& s) -> std::unique_ptr<StageKind> {
-                   if (s.border_relax.iterations <= 0) return nullptr;
-                   return std::make_unique<BorderRelaxStage>(s);
-                 })
+std::string BorderRelaxStage::record_problem(const nlohmann::json& d) const {
+  if (d.contains("relaxed") && !d["relaxed"].is_boolean()) return "'relaxed' is not true or false";
+  if (d.contains("parked_over_uniform") && !d["parked_over_uniform"].is_number()) return "'parked_over_uniform' is not a number";
+  return "";
+}
+
+PPSYNTH_REGISTER_STAGE_KIND("border_relax", BorderRelaxOptions::defaults(), BorderRelaxOptions::bounds(),
+                            "method.border_relax: after each class's sigma stages, its points near the torus's grid edge move",
+                            [](const json& block, const std::string&, const GaborSettings& s) -> std::unique_ptr<StageKind> {
+                              // What the rest of the settings say about where a relax can run.
+                              BorderRelaxContext where;
+                              where.rectangle = s.rectangle;
+                              where.measured_whole = s.measure == GaborOptions::Measure::grid;
+                              where.map_terms = s.map_terms;
+                              where.quick = s.quick;
+                              where.max_iterations = s.max_iterations;
+                              where.mean_nn_distance = s.mean_nn_distance;
+                              where.upscale = s.upscale;
+                              const BorderRelaxOptions o = BorderRelaxOptions::resolve(block, where);
+                              if (o.iterations <= 0) return nullptr;
+                              return std::make_unique<BorderRelaxStage>(o);
+                            })
 
 }  // namespace ppsynth

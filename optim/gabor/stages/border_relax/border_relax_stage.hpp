@@ -7,27 +7,31 @@
 // term. A class is relaxed when its share of points within 1 % of the edge exceeds `parked` x
 // uniform points' share, or when an earlier class was relaxed (its pairs with the relaxed
 // classes across the seam were never measured). Its options, declared once with their
-// defaults and ranges: GaborSettings::border_relax (optim/gabor/settings/border_relax_options.hpp).
+// defaults and ranges: its block method.border_relax (border_relax_options.hpp), resolved where
+// it registers; its record: parked_over_uniform and relaxed.
+#include "optim/gabor/stages/border_relax/border_relax_options.hpp"
 #include "optim/gabor/stages/stage_kind.hpp"
 
 namespace ppsynth {
 
 class BorderRelaxStage : public StageKind {
  public:
-  explicit BorderRelaxStage(const GaborSettings& settings);
+  explicit BorderRelaxStage(const BorderRelaxOptions& options);
   std::string label() const override { return "border relax"; }
   int iteration_cap(const GaborSettings& settings) const override;
   bool judged() const override { return false; }
   bool rolls_grid() const override { return true; }
-  bool after_all_classes() const override { return after_all_; }
+  bool after_all_classes() const override { return o_.after_all; }
   nlohmann::json optimizer(nlohmann::json spec, const GaborSettings& settings) const override;
   // The band's mask, from the positions the stage starts from; its record: the share that
   // decided ("parked_over_uniform") and whether it moved anything ("relaxed").
   StageStart start(const StageStartView& view) const override;
   void describe(nlohmann::json& stats) const override;
+  std::string record_problem(const nlohmann::json& details) const override;
+  const BorderRelaxOptions& options() const { return o_; }
 
  private:
-  bool after_all_ = false;
+  BorderRelaxOptions o_;
 };
 
 }  // namespace ppsynth

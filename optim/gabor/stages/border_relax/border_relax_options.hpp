@@ -1,7 +1,7 @@
 #pragma once
 // method.border_relax, typed: each parameter declared once, here, with its default, its range
-// and what --quick does to it. The relax stage (optim/gabor/stages/border_relax/border_relax_stage.hpp) reads it;
-// gabor_defaults() and gabor_bounds() list its block from defaults() and bounds().
+// and what --quick does to it. The relax stage (border_relax_stage.hpp) registers with
+// defaults() and bounds() as its block method.border_relax, and resolves it.
 #include <nlohmann/json.hpp>
 
 namespace ppsynth {

@@ -1,4 +1,4 @@
-#include "optim/gabor/settings/border_relax_options.hpp"
+#include "optim/gabor/stages/border_relax/border_relax_options.hpp"
 
 #include <algorithm>
 
