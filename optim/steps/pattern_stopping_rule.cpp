@@ -14,11 +14,18 @@
 // exemplar-sized crops at fixed places, other than the evaluation's: the pattern away from
 // the border, which is where the published border's parked pairs made the whole
 // rectangle's PCF a poor judge; docs/lab/large_outputs.md).
+// `"rows"` says which PCFs are measured when a stage moves one class among others:
+// "moving_class" (the mean MSE of the moving class's own PCF and of its cross PCF with each
+// other class in play, as the verdict's rows name them) or "all" (the points in play as one
+// pattern, classes pooled). Pooled, a later class's stage is judged mostly by the frozen
+// classes, which it cannot change: its own spacing may worsen while the pooled curve improves
+// (docs/lab/later_classes/). A stage of one class in play measures the same either way.
 //
 // Why: the loss of a stage keeps falling for hundreds of iterations while the points only
 // jitter around their places (the grid jitter of every iteration feeds Adam fresh noise);
 // the loss rule waits for that tail (docs/lab/fast_preset.md).
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "core/error.hpp"
@@ -32,15 +39,26 @@ namespace {
 
 class PatternStoppingRule : public StoppingRule {
  public:
-  PatternStoppingRule(int window, int check_every, double threshold, int min_iterations, bool end_on_best, bool best_by_crops)
+  PatternStoppingRule(int window, int check_every, double threshold, int min_iterations, bool end_on_best, bool best_by_crops,
+                      bool rows_of_moving_class)
       : window_(window), check_every_(check_every), threshold_(threshold), min_iterations_(min_iterations),
-        end_on_best_(end_on_best), best_by_crops_(best_by_crops) {}
+        end_on_best_(end_on_best), best_by_crops_(best_by_crops), rows_of_moving_class_(rows_of_moving_class) {}
 
-  void begin_stage(const PointSet& exemplar_in_play) override {
+  void begin_stage(const PointSet& exemplar_in_play, int moving_class) override {
     target_ = pcf(exemplar_in_play);
     exemplar_ = exemplar_in_play;
     crop_pcf_.r_max = pcf_unit(exemplar_.size(), 1.0);  // as the evaluation's patches (patches.hpp)
     crop_target_ = pcf(to_unit_square(exemplar_), crop_pcf_);
+    rows_.clear();
+    std::vector<int> others;
+    for (int c : exemplar_.classes())
+      if (c != moving_class && std::find(others.begin(), others.end(), c) == others.end()) others.push_back(c);
+    std::sort(others.begin(), others.end());
+    const bool moving_in_play = std::find(exemplar_.classes().begin(), exemplar_.classes().end(), moving_class) !=
+                                exemplar_.classes().end();
+    if (!rows_of_moving_class_ || moving_class < 0 || !moving_in_play || others.empty()) return;  // one pattern
+    rows_.push_back(class_row(moving_class, moving_class));
+    for (int c : others) rows_.push_back(class_row(moving_class, c));
   }
 
   StopVerdict judge(const StageView& v, std::vector<double>& record) override {
@@ -49,7 +67,7 @@ class PatternStoppingRule : public StoppingRule {
     const PointSet points = v.points();
     PcfOptions o;
     o.periodic = v.periodic;
-    const double now = curve_mse(pcf(points, o), target_);
+    const double now = whole_mse(points, o);
     StopVerdict verdict;
     size_t stride = 1;
     if (end_on_best_) {
@@ -60,7 +78,7 @@ class PatternStoppingRule : public StoppingRule {
       // The record then holds pairs (as optimized, as seen); the stop watches the first.
       stride = 2;
       const double seen = best_by_crops_ ? crops_mse(points, v.zoom, now)
-                          : v.periodic    ? curve_mse(pcf(points, PcfOptions{}), target_)
+                          : v.periodic    ? whole_mse(points, PcfOptions{})
                                           : now;
       double best_seen = std::numeric_limits<double>::infinity();
       for (size_t i = 1; i < record.size(); i += 2) best_seen = std::min(best_seen, record[i]);
@@ -81,6 +99,59 @@ class PatternStoppingRule : public StoppingRule {
   }
 
  private:
+  // One PCF the rule measures of a stage moving a class among others: class a's own (a == b)
+  // or the cross PCF from a to b, with the exemplar's curve whole and as a unit-square crop.
+  struct Row {
+    int a = 0, b = 0;
+    Curve target, crop_target;
+    PcfOptions crop;  // r_max of the exemplar's row on the unit square, as the evaluation's patches
+  };
+
+  Row class_row(int a, int b) const {
+    Row row{a, b, {}, {}, {}};
+    const PointSet ea = exemplar_.subset_class(a), eb = exemplar_.subset_class(b);
+    row.target = row_curve(row, ea, eb, PcfOptions{});
+    row.crop.r_max = pcf_unit(a == b ? ea.size() : ea.size() + eb.size(), 1.0);
+    row.crop_target = row_curve(row, to_unit_square(ea), to_unit_square(eb), row.crop);
+    return row;
+  }
+
+  static Curve row_curve(const Row& row, const PointSet& a, const PointSet& b, const PcfOptions& o) {
+    return row.a == row.b ? pcf(a, o) : cross_pcf(a, b, o);
+  }
+
+  // The row's curve can be measured: two points of each of its classes (a cross PCF from
+  // one point is that point's neighbourhood, not the pattern's).
+  static bool measurable(const Row& row, const PointSet& a, const PointSet& b) {
+    return a.size() >= 2 && (row.a == row.b || b.size() >= 2);
+  }
+
+  // The mean MSE of the rows' curves of `points` to their targets (`crop`: the crop targets);
+  // a row without enough points in `points` is left out; NaN when every row is.
+  double rows_mse(const PointSet& points, const PcfOptions& o, bool crop) const {
+    double sum = 0;
+    int measured = 0;
+    for (const Row& row : rows_) {
+      const PointSet a = points.subset_class(row.a), b = row.a == row.b ? PointSet() : points.subset_class(row.b);
+      if (!measurable(row, a, b)) continue;
+      PcfOptions ro = o;
+      if (crop) ro.r_max = row.crop.r_max;
+      sum += curve_mse(row_curve(row, a, b, ro), crop ? row.crop_target : row.target);
+      ++measured;
+    }
+    return measured ? sum / measured : std::numeric_limits<double>::quiet_NaN();
+  }
+
+  // The stage's points against the exemplar's: its rows, or the points as one pattern (also
+  // where none of the rows can be measured, e.g. a window without two points of the moving class).
+  double whole_mse(const PointSet& points, const PcfOptions& o) const {
+    if (!rows_.empty()) {
+      const double by_rows = rows_mse(points, o, false);
+      if (std::isfinite(by_rows)) return by_rows;
+    }
+    return curve_mse(pcf(points, o), target_);
+  }
+
   // The mean PCF MSE of kCrops exemplar-sized crops of `points` (at `zoom`), each mapped onto
   // the unit square as the evaluation maps its patches; `whole` where no crop fits.
   double crops_mse(const PointSet& points, double zoom, double whole) const {
@@ -89,7 +160,10 @@ class PatternStoppingRule : public StoppingRule {
       return whole;
     const CropPlan plan = plan_crops(exemplar_, points, kCrops, kCropSeed, zoom);
     double sum = 0;
-    for (const PointSet& patch : cut_patches(points, plan.windows)) sum += curve_mse(pcf(patch, crop_pcf_), crop_target_);
+    for (const PointSet& patch : cut_patches(points, plan.windows)) {
+      const double by_rows = rows_.empty() ? std::numeric_limits<double>::quiet_NaN() : rows_mse(patch, PcfOptions{}, true);
+      sum += std::isfinite(by_rows) ? by_rows : curve_mse(pcf(patch, crop_pcf_), crop_target_);
+    }
     return sum / static_cast<double>(plan.windows.size());
   }
 
@@ -98,10 +172,11 @@ class PatternStoppingRule : public StoppingRule {
   int window_, check_every_;
   double threshold_;
   int min_iterations_;
-  bool end_on_best_, best_by_crops_;
+  bool end_on_best_, best_by_crops_, rows_of_moving_class_;
   Curve target_, crop_target_;
   PointSet exemplar_;
   PcfOptions crop_pcf_;
+  std::vector<Row> rows_;  // empty: the points in play as one pattern
 };
 
 }  // namespace
@@ -109,10 +184,10 @@ class PatternStoppingRule : public StoppingRule {
 
 PPSYNTH_REGISTER(ppsynth::StoppingRuleRegistry, "pattern",
                  (ppsynth::json{{"window", 50}, {"check_every", 10}, {"threshold", 0.02}, {"min_iterations", 30}, {"end_on", "last"},
-                                {"best_by", "output"}}),
+                                {"best_by", "output"}, {"rows", "moving_class"}}),
                  (ppsynth::json{{"window", "int [1, 1000000000]"}, {"check_every", "int [1, 1000000000]"},
                                 {"threshold", "[0, 1]"}, {"min_iterations", "int [0, 1000000000]"}}),
-                 "stop when the PCF MSE of the stage's points to the exemplar's has not improved by `threshold` (relative) in `window` iterations; end_on: last | best (the stage ends on its best checked iterate); best_by: output (the points as one rectangle) | crops (20 exemplar-sized crops: the pattern away from the border)",
+                 "stop when the PCF MSE of the stage's points to the exemplar's has not improved by `threshold` (relative) in `window` iterations; end_on: last | best (the stage ends on its best checked iterate); best_by: output (the points as one rectangle) | crops (20 exemplar-sized crops: the pattern away from the border); rows: moving_class (a stage moving one class among others is judged by that class's own PCF and its cross PCFs) | all (the points in play as one pattern)",
                  [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::StoppingRule> {
                    const std::string end_on = p["end_on"].get<std::string>();
                    if (end_on != "last" && end_on != "best")
@@ -120,8 +195,12 @@ PPSYNTH_REGISTER(ppsynth::StoppingRuleRegistry, "pattern",
                    const std::string best_by = p["best_by"].get<std::string>();
                    if (best_by != "output" && best_by != "crops")
                      throw ppsynth::config_error(key + ".best_by", "expected \"output\" or \"crops\", got \"" + best_by + "\"");
+                   const std::string rows = p["rows"].get<std::string>();
+                   if (rows != "moving_class" && rows != "all")
+                     throw ppsynth::config_error(key + ".rows", "expected \"moving_class\" or \"all\", got \"" + rows + "\"");
                    return std::make_unique<ppsynth::PatternStoppingRule>(p["window"].get<int>(), p["check_every"].get<int>(),
                                                                          p["threshold"].get<double>(),
                                                                          p["min_iterations"].get<int>(),
-                                                                         end_on == "best", best_by == "crops");
+                                                                         end_on == "best", best_by == "crops",
+                                                                         rows == "moving_class");
                  })

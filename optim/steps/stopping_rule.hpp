@@ -5,8 +5,8 @@
 //   "loss"     the paper's rule as the published code checks it (§5: the loss fell by less
 //              than 1 % of the stage's whole decrease over the last 100 iterations);
 //              the default (optim/steps/loss_stopping_rule.cpp).
-//   "pattern"  watches the pattern instead of the loss: the PCF of the stage's points
-//              against the exemplar's stops improving (optim/steps/pattern_stopping_rule.cpp;
+//   "pattern"  watches the pattern instead of the loss: the PCFs of the stage's points
+//              against the exemplar's stop improving (optim/steps/pattern_stopping_rule.cpp;
 //              the loss keeps falling slowly after the points have stopped
 //              changing what any metric sees).
 //
@@ -28,8 +28,8 @@ namespace ppsynth {
 struct StageView {
   const std::vector<double>& losses;  // the stage's losses so far; losses.back() is this iteration's
   int iteration = 0;                  // 0-based index of this iteration in the stage; -1: the stage's start
-  // The stage's points in play now (moving and frozen points of its classes) on the
-  // stage's domain; built only when called (a copy of the positions).
+  // The stage's points in play now (moving and frozen points of its classes, with their
+  // classes) on the stage's domain; built only when called (a copy of the positions).
   std::function<PointSet()> points;
   bool periodic = false;  // the domain is a torus (the paper's unit square)
   double zoom = 1;        // the points' units per exemplar unit (1/u on the paper's square)
@@ -44,8 +44,12 @@ struct StopVerdict {
 class StoppingRule {
  public:
   virtual ~StoppingRule() = default;
-  // A stage starts (or resumes): the exemplar's points of the stage's classes.
-  virtual void begin_stage(const PointSet& exemplar_in_play) { (void)exemplar_in_play; }
+  // A stage starts (or resumes): the exemplar's points of the stage's classes, and the class
+  // whose points move (-1: none named; the stage's points as one pattern).
+  virtual void begin_stage(const PointSet& exemplar_in_play, int moving_class) {
+    (void)exemplar_in_play;
+    (void)moving_class;
+  }
   // After each iteration, and once at the stage's start (iteration -1: no loss yet, the
   // points where the previous stage left them; a stop there is ignored), so that a rule
   // keeping the best iterate can keep the start when the stage only worsens the pattern.

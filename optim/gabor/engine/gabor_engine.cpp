@@ -384,7 +384,7 @@ void GaborEngine::enter_stage(const Stage& stage) {
   const PointSet ex_active = exemplar_.subset_classes(stage.target_classes);
   pipe_->set_targets(positions_tensor(ex_active), A > 0 ? normalized_attributes(ex_active, s_.attr_cols) : torch::Tensor(),
                      stage.sigma);
-  rule_->begin_stage(ex_active);
+  rule_->begin_stage(ex_active, stage.own_class);
   for (auto& t : map_terms_) t.term->begin_stage(stage);
   phases_.targets += since(t0);
   start_ = stage.kind->start(StageStartView{stage, s_, out_, moving_idx_, state_.stages});
@@ -552,7 +552,13 @@ PointSet GaborEngine::points_in_play() const {
   torch::NoGradGuard ng;
   const auto mv = geometry_->confine(state_.moving);
   const auto local = (frozen_.size(0) > 0 ? torch::cat({frozen_, mv}) : mv).to(torch::kCPU, torch::kFloat64);
-  return geometry_->pattern(local, frozen_.size(0), shape_.moving_area());
+  std::vector<int> classes;
+  classes.reserve(frozen_idx_.size() + moving_idx_.size());
+  for (const auto i : frozen_idx_) classes.push_back(out_.cls(static_cast<size_t>(i)));
+  for (const auto i : moving_idx_) classes.push_back(out_.cls(static_cast<size_t>(i)));
+  if (static_cast<int64_t>(classes.size()) != local.size(0))
+    throw std::logic_error("points in play: " + std::to_string(local.size(0)) + " positions, " + std::to_string(classes.size()) + " classes");
+  return geometry_->pattern(local, frozen_.size(0), classes, shape_.moving_area());
 }
 
 void GaborEngine::save_checkpoint() {

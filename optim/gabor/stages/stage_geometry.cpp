@@ -40,12 +40,12 @@ torch::Tensor TorusGeometry::to_local(const PointSet& points) const { return pos
 
 torch::Tensor TorusGeometry::confine(const torch::Tensor& moving) const { return wrap_unit(moving); }
 
-PointSet TorusGeometry::pattern(const torch::Tensor& local, int64_t, const Domain&) const {
+PointSet TorusGeometry::pattern(const torch::Tensor& local, int64_t, const std::vector<int>& classes, const Domain&) const {
   const auto a = local.accessor<double, 2>();
   PointSet ps(Domain{});
   for (int64_t i = 0; i < local.size(0); ++i) {
     const Vec2 p{a[i][0], a[i][1]};
-    if (inside(ps.domain(), p)) ps.add(p);
+    if (inside(ps.domain(), p)) ps.add(p, classes[static_cast<size_t>(i)]);
   }
   return ps;
 }
@@ -103,7 +103,8 @@ std::vector<double> WindowGeometry::part_inside(const Domain& output) const {
   return {(o.x0 - g.x0) / g.width(), (o.y0 - g.y0) / g.height(), (o.x1 - g.x0) / g.width(), (o.y1 - g.y0) / g.height()};
 }
 
-PointSet WindowGeometry::pattern(const torch::Tensor& local, int64_t frozen, const Domain& moving_area) const {
+PointSet WindowGeometry::pattern(const torch::Tensor& local, int64_t frozen, const std::vector<int>& classes,
+                                 const Domain& moving_area) const {
   const auto a = local.accessor<double, 2>();
   const Domain& g = w_.grid;
   // A window's pattern is its grid's part of where points move: a frozen exemplar pad
@@ -114,7 +115,7 @@ PointSet WindowGeometry::pattern(const torch::Tensor& local, int64_t frozen, con
     // where they are, which may be past the grid: those are the window's context, not its
     // pattern, and the filter leaves them out.
     const Vec2 p = i < frozen ? Vec2{g.x0 + g.width() * a[i][0], g.y0 + g.width() * a[i][1]} : to_output(a[i][0], a[i][1]);
-    if (inside(ps.domain(), p)) ps.add(p);
+    if (inside(ps.domain(), p)) ps.add(p, classes[static_cast<size_t>(i)]);
   }
   return ps;
 }

@@ -56,8 +56,10 @@ class StageGeometry {
   // The grid's part inside `output` as fractions {x0, y0, x1, y1} of the grid; empty: all of it.
   virtual std::vector<double> part_inside(const Domain& output) const = 0;
   // The points in play as the stopping rule judges them, from local positions [frozen; moving]
-  // (CPU, float64; the first `frozen` rows frozen); `moving_area`: where points move.
-  virtual PointSet pattern(const torch::Tensor& local, int64_t frozen, const Domain& moving_area) const = 0;
+  // (CPU, float64; the first `frozen` rows frozen) and each row's class; `moving_area`: where
+  // points move.
+  virtual PointSet pattern(const torch::Tensor& local, int64_t frozen, const std::vector<int>& classes,
+                           const Domain& moving_area) const = 0;
   // The group ended: its points that no later group moves get final_points[i] = 1.
   virtual void group_done(const PointSet& out, const std::vector<size_t>& moving, std::vector<uint8_t>& final_points) const = 0;
   // The window's last stage ended.
@@ -78,7 +80,8 @@ class TorusGeometry : public StageGeometry {
   torch::Tensor confine(const torch::Tensor& moving) const override;
   Vec2 to_output(double u, double v) const override { return {u, v}; }
   std::vector<double> part_inside(const Domain&) const override { return {}; }
-  PointSet pattern(const torch::Tensor& local, int64_t frozen, const Domain& moving_area) const override;
+  PointSet pattern(const torch::Tensor& local, int64_t frozen, const std::vector<int>& classes,
+                   const Domain& moving_area) const override;
   void group_done(const PointSet&, const std::vector<size_t>&, std::vector<uint8_t>&) const override {}
   void window_done() const override {}
 };
@@ -100,7 +103,8 @@ class WindowGeometry : public StageGeometry {
   torch::Tensor confine(const torch::Tensor& moving) const override;
   Vec2 to_output(double u, double v) const override;
   std::vector<double> part_inside(const Domain& output) const override;
-  PointSet pattern(const torch::Tensor& local, int64_t frozen, const Domain& moving_area) const override;
+  PointSet pattern(const torch::Tensor& local, int64_t frozen, const std::vector<int>& classes,
+                   const Domain& moving_area) const override;
   void group_done(const PointSet& out, const std::vector<size_t>& moving, std::vector<uint8_t>& final_points) const override;
   void window_done() const override;  // its buffers go back to the kernel
 

@@ -71,7 +71,7 @@ TEST_CASE("The pattern rule stops when the PCF stops improving, not while it imp
   };
   PointSet ex;
   for (auto p : jittered(8, 0.3, 1)) ex.add(p);
-  rule->begin_stage(ex);
+  rule->begin_stage(ex, -1);
   const auto goal = jittered(16, 0.3, 2), start = jittered(16, 2.0, 3);  // start: nearly uniform
   std::vector<double> losses, record;
   int stopped_at = -1;
@@ -113,7 +113,7 @@ TEST_CASE("The pattern rule with end_on best marks each new best check and no ot
       goal.add({(i + 0.4 + 0.2 * u(rng)) / 12, (j + 0.4 + 0.2 * u(rng)) / 12});
       start.add({u(rng), u(rng)});
     }
-  rule->begin_stage(ex);
+  rule->begin_stage(ex, -1);
   std::vector<double> losses, record;
   std::vector<int> marked;
   const int turn = 100;
@@ -156,7 +156,7 @@ TEST_CASE("The pattern rule with end_on best marks each new best check and no ot
 
   // The stage's start (iteration -1) is a candidate too: a stage that only worsens the
   // pattern keeps its start, and no later check is marked.
-  rule->begin_stage(ex);
+  rule->begin_stage(ex, -1);
   std::vector<double> worse_record;
   int marks = 0;
   bool start_marked = false;
@@ -176,7 +176,7 @@ TEST_CASE("The pattern rule with end_on best marks each new best check and no ot
   CHECK(worse_record.size() == 14u);  // the start and six checks, each as optimized and as seen
   // Ending on the last iterate, the start is not measured (the stopping window is unchanged).
   auto last_rule = StoppingRuleRegistry::instance().create(json{{"type", "pattern"}}, "method.convergence");
-  last_rule->begin_stage(ex);
+  last_rule->begin_stage(ex, -1);
   std::vector<double> last_record;
   CHECK_FALSE(last_rule->judge(StageView{losses, -1, [&] { return goal; }, true}, last_record).best);
   CHECK(last_record.empty());
@@ -194,7 +194,7 @@ TEST_CASE("Pattern rule, best_by crops: the best is judged on exemplar-sized cro
   PointSet ex;
   for (int j = 0; j < 8; ++j)
     for (int i = 0; i < 8; ++i) ex.add({(i + 0.3 + 0.4 * u(rng)) / 8, (j + 0.3 + 0.4 * u(rng)) / 8});
-  rule->begin_stage(ex);
+  rule->begin_stage(ex, -1);
   // Iterates on the paper's u = 2 square (zoom 1/2): jittered grids of 256 points, more or
   // less jittered, some with points parked on the border.
   std::vector<PointSet> iterates;
@@ -248,4 +248,48 @@ TEST_CASE("Toroidal wrap as published", "[optim]") {
   auto p = x.clone().set_requires_grad(true);
   wrap_unit(p).sum().backward();
   CHECK(torch::equal(p.grad(), torch::ones_like(x)));
+}
+
+TEST_CASE("Pattern rule, rows: a stage moving one class among others is judged by that class's own and cross PCFs",
+          "[optim]") {
+  // Two classes of jittered grids, shifted against each other; the iterate: the exemplar's
+  // class 0 (frozen) and a class 1 of its own draw, as a stage moving class 1 sees them.
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> u(0, 1);
+  auto grid = [&](PointSet& ps, int cls, double shift, double jitter) {
+    for (int j = 0; j < 10; ++j)
+      for (int i = 0; i < 10; ++i)
+        ps.add({(i + shift + jitter * (u(rng) - 0.5)) / 10, (j + shift + jitter * (u(rng) - 0.5)) / 10}, cls);
+  };
+  PointSet ex, it;
+  grid(ex, 0, 0.25, 0.2);
+  grid(ex, 1, 0.75, 0.2);
+  for (size_t i = 0; i < ex.size(); ++i)
+    if (ex.cls(i) == 0) it.add(ex[i], 0);
+  grid(it, 1, 0.5, 0.9);
+  const PointSet ex0 = ex.subset_class(0), ex1 = ex.subset_class(1), it0 = it.subset_class(0), it1 = it.subset_class(1);
+  const double own = curve_mse(pcf(it1), pcf(ex1)), cross = curve_mse(cross_pcf(it1, it0), cross_pcf(ex1, ex0));
+  const double pooled = curve_mse(pcf(it), pcf(ex));
+  auto first_check = [&](const json& rows, int moving_class, const PointSet& exemplar, const PointSet& iterate) {
+    auto rule = StoppingRuleRegistry::instance().create(
+        json{{"type", "pattern"}, {"check_every", 1}, {"min_iterations", 0}, {"rows", rows}}, "method.convergence");
+    rule->begin_stage(exemplar, moving_class);
+    std::vector<double> losses{1.0}, record;
+    rule->judge(StageView{losses, 0, [&] { return iterate; }, false}, record);
+    REQUIRE(record.size() == 1u);
+    return record[0];
+  };
+  // The default: the moving class's own PCF and its cross PCF with the frozen class, averaged.
+  CHECK(first_check("moving_class", 1, ex, it) == Approx((own + cross) / 2).epsilon(1e-12));
+  CHECK(first_check("all", 1, ex, it) == Approx(pooled).epsilon(1e-12));
+  CHECK(own != Approx(pooled).epsilon(0.01));
+  // One class in play, or no moving class named: the points as one pattern either way.
+  CHECK(first_check("moving_class", 0, ex0, it0) == first_check("all", 0, ex0, it0));
+  CHECK(first_check("moving_class", -1, ex, it) == Approx(pooled).epsilon(1e-12));
+  // A window holding one point of the moving class: its rows cannot be measured, the pooled PCF can.
+  PointSet sparse = it0;
+  sparse.add({0.5, 0.5}, 1);
+  CHECK(first_check("moving_class", 1, ex, sparse) == Approx(curve_mse(pcf(sparse), pcf(ex))).epsilon(1e-12));
+  CHECK_THROWS_WITH(StoppingRuleRegistry::instance().create(json{{"type", "pattern"}, {"rows", "pooled"}}, "method.convergence"),
+                    Catch::Contains("method.convergence.rows"));
 }
