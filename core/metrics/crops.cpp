@@ -25,6 +25,11 @@ double density_zoom(const PointSet& exemplar, const PointSet& output) {
   return std::sqrt(density_ex / density_out);
 }
 
+double density_zoom_spread(const PointSet& exemplar, const PointSet& output) {
+  if (exemplar.empty() || output.empty()) throw InputError("crops: the exemplar and the output need points");
+  return 0.5 * std::sqrt(1.0 / static_cast<double>(exemplar.size()) + 1.0 / static_cast<double>(output.size()));
+}
+
 CropPlan plan_crops(const PointSet& exemplar, const PointSet& output, int count, uint64_t seed, double zoom) {
   if (count < 1) throw InputError("crops: the crop count must be >= 1 (got " + std::to_string(count) + ")");
   if (!(zoom >= 0) || !std::isfinite(zoom)) throw InputError("crops: the zoom must be a number > 0 (0: from the densities)");
@@ -33,8 +38,19 @@ CropPlan plan_crops(const PointSet& exemplar, const PointSet& output, int count,
   p.width = exemplar.domain().width() * p.zoom;
   p.height = exemplar.domain().height() * p.zoom;
   const Domain& d = output.domain();
-  // A crop as large as the output up to rounding fits: it is the whole domain.
+  // A crop as large as the output up to rounding fits: it is the whole domain. A zoom read from
+  // the densities is an estimate, uncertain by about half the counts' relative spread: an
+  // output made at the exemplar's height (a 2.56 x 1 output of a 1.6 x 1 exemplar) holds a
+  // point or two fewer than its area's share and reads a crop taller than itself. Within that
+  // spread the crop is the largest of the exemplar's shape that fits.
   constexpr double kFitTolerance = 1e-9;
+  const double over = std::max(p.width / d.width(), p.height / d.height());
+  if (zoom == 0 && over > 1 + kFitTolerance && over <= 1 + density_zoom_spread(exemplar, output)) {
+    p.zoom /= over;
+    p.width = exemplar.domain().width() * p.zoom;
+    p.height = exemplar.domain().height() * p.zoom;
+    p.zoom_fitted = true;
+  }
   if (p.width > d.width() * (1 + kFitTolerance) || p.height > d.height() * (1 + kFitTolerance)) {
     std::ostringstream s;
     s << "crops: an exemplar-sized crop is " << p.width << " x " << p.height << " output units (the exemplar's "

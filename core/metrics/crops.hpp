@@ -14,7 +14,9 @@
 // Placement: lower-left corners uniform in [x0, x1 - w] x [y0, y1 - h] of the output domain,
 // from a 64-bit Mersenne Twister seeded with `seed` (the top 53 bits of each draw: the same
 // windows on every platform for a seed). Crops may overlap; a crop that does not fit (the
-// output is smaller than the exemplar at that density) is an InputError naming both sizes.
+// output is smaller than the exemplar at that density) is an InputError naming both sizes,
+// unless the zoom came from the densities and the crop passes the output by less than that
+// zoom's spread from the counts (density_zoom_spread): then the crop is shrunk to fit.
 #include <cstdint>
 #include <vector>
 
@@ -24,10 +26,13 @@ namespace ppsynth {
 
 // z above (InputError when either set is empty or a domain has no area).
 double density_zoom(const PointSet& exemplar, const PointSet& output);
+// The relative spread of that z from the point counts alone: 0.5 sqrt(1/N_ex + 1/N_out).
+double density_zoom_spread(const PointSet& exemplar, const PointSet& output);
 
 struct CropPlan {
   double zoom = 1;                 // output units per exemplar unit
   double width = 0, height = 0;    // crop size in output units
+  bool zoom_fitted = false;        // the densities' zoom made a crop past the output by less than its spread: shrunk to fit
   std::vector<Domain> windows;     // `count` windows inside the output domain
 };
 

@@ -127,6 +127,10 @@ ProtocolPlan plan_protocol(const PointSet& exemplar, const PointSet& output, Pat
   p.patch_width = c.width;
   p.patch_height = c.height;
   p.seed = seed;
+  if (c.zoom_fitted) {
+    p.zoom = c.zoom;
+    p.reason += "; the densities' zoom shrunk by its count spread so that a crop fits the output";
+  }
   return p;
 }
 

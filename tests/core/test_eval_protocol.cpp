@@ -244,3 +244,26 @@ TEST_CASE("the border profile tells a pile on the edge from a thin seam behind i
         Approx(r["output"]["border_fraction"].get<double>() / r["output"]["border_fraction_uniform"].get<double>()));
   CHECK(format_evaluation(r).find("  within 0.5 %") != std::string::npos);
 }
+
+TEST_CASE("crops: an output at the exemplar's height with a point or two fewer than its share still fits",
+          "[metrics][protocol]") {
+  // A 2 x 1 output of a 1 x 1 exemplar (64 points) holds 126 points instead of 128: the
+  // densities read a crop 0.8 % taller than the output, well inside the counts' spread (about
+  // 7 %). The crop is then the largest of the exemplar's shape that fits.
+  const PointSet ex = exemplar64();
+  const PointSet out = jittered_grid_points(126, 5, Domain{0, 0, 2, 1});
+  CHECK(density_zoom(ex, out) > 1.0);
+  const CropPlan c = plan_crops(ex, out, 5, 3);
+  CHECK(c.zoom_fitted);
+  CHECK(c.zoom == Approx(1.0));
+  CHECK(c.height == Approx(1.0));
+  for (const Domain& w : c.windows) CHECK(w.y1 <= out.domain().y1);
+  const auto e = evaluate(ex, out, no_curves(PatchProtocol::Crops));
+  CHECK(e["protocol"]["zoom"].get<double>() == Approx(1.0));
+  // Beyond the spread the output is smaller than the exemplar at its density: refused as before.
+  CHECK(density_zoom_spread(ex, out) == Approx(0.5 * std::sqrt(1.0 / 64 + 1.0 / 126)));
+  const PointSet short_out = jittered_grid_points(115, 5, Domain{0, 0, 2, 0.9});
+  CHECK_THROWS_WITH(plan_crops(ex, short_out, 5, 3), Catch::Contains("smaller than the exemplar"));
+  // A zoom the caller gives is taken as given.
+  CHECK_THROWS_WITH(plan_crops(ex, out, 5, 3, 1.01), Catch::Contains("smaller than the exemplar"));
+}
