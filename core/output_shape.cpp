@@ -1,6 +1,7 @@
 #include "core/output_shape.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 
@@ -61,7 +62,14 @@ nlohmann::json output_defaults() {
   return {{"size", nullptr}, {"points", nullptr}, {"border", "clean"}, {"pad", nullptr}};
 }
 
+namespace {
+std::atomic<size_t> g_resolutions{0};
+}  // namespace
+
+size_t output_shape_resolutions() { return g_resolutions.load(); }
+
 OutputShape resolve_output_shape(const nlohmann::json& r, const PointSet& ex) {
+  ++g_resolutions;
   OutputShape o;
   o.upscale = get_int(r, "upscale", "");
   const auto& j = r.at("output");

@@ -74,5 +74,8 @@ nlohmann::json output_defaults();
 // From a resolved run config (its "upscale" and "output"); errors name the key.
 // `exemplar` resolves "points" and the automatic pad.
 OutputShape resolve_output_shape(const nlohmann::json& run_config, const PointSet& exemplar);
+// How many times this process has called resolve_output_shape, so that a test can show that
+// one synthesis resolves its shape once (optim/run/run_spec.hpp).
+size_t output_shape_resolutions();
 
 }  // namespace ppsynth

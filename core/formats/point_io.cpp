@@ -1,6 +1,7 @@
 #include "core/formats/point_io.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -169,12 +170,26 @@ PointSet parse_as(const std::string& text, const std::string& source, const Read
   }
 }
 
-PointSet parse_text(std::string text, const std::string& source, const ReadOptions& opts, bool validate_too) {
+// Sets `read_as` (when given) to the format the text was parsed as.
+PointSet parse_text(std::string text, const std::string& source, const ReadOptions& opts, bool validate_too,
+                    Format* read_as = nullptr) {
   strip_utf8_bom(text);
-  if (opts.format != Format::Auto) return parse_as(text, source, opts, opts.format, nullptr, validate_too);
+  if (opts.format != Format::Auto) {
+    if (read_as) *read_as = opts.format;
+    return parse_as(text, source, opts, opts.format, nullptr, validate_too);
+  }
   const Detection d = detect_format_details(text, source);
   spdlog::debug("{}: detected {} ({})", source, format_name(d.format), d.reason);
+  if (read_as) *read_as = d.format;
   return parse_as(text, source, opts, d.format, &d, validate_too);
+}
+
+std::atomic<size_t> g_point_file_reads{0};
+
+// The text of a point file, counted (point_file_reads).
+std::string read_point_file_text(const std::string& path) {
+  ++g_point_file_reads;
+  return read_file_text(path);
 }
 
 }  // namespace
@@ -249,21 +264,26 @@ Format detect_format_of_text(const std::string& text, const std::string& source)
 // Takes a name as read_points does ("shared:data/...").
 Format detect_format(const std::string& name) {
   const std::string path = resolve_data_path(name);
-  return detect_format_of_text(read_file_text(path), path);
+  return detect_format_of_text(read_point_file_text(path), path);
 }
 
 PointSet parse_points(const std::string& text, const std::string& source, const ReadOptions& opts) {
   return parse_text(text, source, opts, /*validate_too=*/false);
 }
 
-PointSet read_points(const std::string& name, const ReadOptions& opts) {
+PointFile read_point_file(const std::string& name, const ReadOptions& opts) {
   const std::string path = resolve_data_path(name);  // "shared:data/..." wherever a file is read
-  PointSet ps = parse_text(read_file_text(path), path, opts, /*validate_too=*/true);
-  report_coincident(ps, path);
-  spdlog::debug("read {}: {} points, {} classes, {} attributes", path, ps.size(), ps.num_classes(),
-                ps.num_attributes());
-  return ps;
+  PointFile f;
+  f.points = parse_text(read_point_file_text(path), path, opts, /*validate_too=*/true, &f.format);
+  report_coincident(f.points, path);
+  spdlog::debug("read {}: {} points, {} classes, {} attributes", path, f.points.size(), f.points.num_classes(),
+                f.points.num_attributes());
+  return f;
 }
+
+PointSet read_points(const std::string& name, const ReadOptions& opts) { return read_point_file(name, opts).points; }
+
+size_t point_file_reads() { return g_point_file_reads.load(); }
 
 std::string format_points(const PointSet& ps, Format format) {
   switch (format) {

@@ -20,6 +20,17 @@ namespace ppsynth {
 // warning lists coincident points (they are reported, not rejected). Every error names the
 // file (and line) and the format it was read as.
 PointSet read_points(const std::string& path, const ReadOptions& opts = {});
+// read_points with the format the file was read as (opts.format, or the detected one for
+// Format::Auto): a caller that needs both reads the file once (a run keeps the exemplar's
+// format for its outputs, optim/run/run_spec.hpp).
+struct PointFile {
+  PointSet points;
+  Format format = Format::Auto;
+};
+PointFile read_point_file(const std::string& path, const ReadOptions& opts = {});
+// How many point files this process has read (read_points, read_point_file, detect_format),
+// so that a test can show that one synthesis reads its exemplar once.
+size_t point_file_reads();
 
 // Writes atomically (temp file + rename). Format::Auto: ".json" -> Json, else Plain.
 void write_points(const std::string& path, const PointSet& ps, Format format = Format::Auto);

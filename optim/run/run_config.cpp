@@ -80,16 +80,19 @@ json read_resolved_run_config(const std::string& path) {
   return r;
 }
 
-PointSet load_exemplar(const json& r) {
+PointSet load_exemplar(const json& r, Format* read_as) {
   const std::string file = get_string(r, "exemplar", "");
   if (file.empty()) throw config_error("exemplar", "no exemplar file given");
   ReadOptions o;
   o.format = parse_format(get_string(r, "format", ""));
-  const std::string sc = get_string(r, "scaling", "");
-  if (sc == "per-axis") o.scaling = AxisScaling::PerAxisMinMax;
-  else if (sc == "uniform") o.scaling = AxisScaling::Uniform;
-  else throw config_error("scaling", "expected \"per-axis\" or \"uniform\"");
-  PointSet ps = read_points(file, o);
+  try {
+    o.scaling = parse_axis_scaling(get_string(r, "scaling", ""));
+  } catch (const InputError& e) {
+    throw config_error("scaling", e.what());
+  }
+  PointFile f = read_point_file(file, o);  // once: the points and the format they were read as
+  if (read_as) *read_as = f.format;
+  PointSet ps = std::move(f.points);
   if (get_bool(r, "merge_classes", "")) {
     for (size_t i = 0; i < ps.size(); ++i) ps.set_cls(i, 0);
     ps.set_class_labels({});

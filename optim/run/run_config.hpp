@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/formats/format_options.hpp"
 #include "core/point_set.hpp"
 
 namespace ppsynth {
@@ -28,8 +29,9 @@ json resolve_run_config(json config, const std::vector<std::string>& overrides);
 json read_resolved_run_config(const std::string& path);
 
 // Loads the exemplar a resolved config names ("shared:" paths allowed); a config used only
-// in memory (synthesize() with an exemplar at hand) needs none.
-PointSet load_exemplar(const json& resolved);
+// in memory (synthesize() with an exemplar at hand) needs none. `read_as` (when given) gets the
+// format the file was read as (the config's "format", or the detected one for "auto").
+PointSet load_exemplar(const json& resolved, Format* read_as = nullptr);
 // The explicit initialization of "init_file", if any.
 std::optional<PointSet> load_initialization(const json& resolved);
 

@@ -12,7 +12,6 @@
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/log.hpp"
-#include "core/output_shape.hpp"
 #include "core/processor.hpp"
 #include "core/run_directory.hpp"
 #include "core/run_json.hpp"
@@ -20,6 +19,7 @@
 #include "optim/run/checkpoint_store.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/run/run_observers.hpp"
+#include "optim/run/run_spec.hpp"
 #include "optim/run/synthesize.hpp"
 
 namespace fs = std::filesystem;
@@ -45,11 +45,15 @@ class MarkerProgress : public SynthesisObserver {
   RunDirectory& dir_;
 };
 
-// Runs (or continues, with `resume_state`) the synthesis into the open directory `dir`.
-RunOutcome execute(RunOutcome o, RunDirectory& dir, const std::string& name, const RunRequest& req,
+// Runs (or continues, with `resume_state`) the synthesis of `spec` into the open directory `dir`.
+RunOutcome execute(const RunSpec& spec, RunDirectory& dir, const std::string& name, const RunRequest& req,
                    const std::string* resume_state) {
   const auto t0 = std::chrono::steady_clock::now();
-  const nlohmann::json& r = o.config;
+  const nlohmann::json& r = spec.config;
+  RunOutcome o;
+  o.config = r;
+  o.exemplar = spec.exemplar;
+  o.exemplar_format = spec.exemplar_format;
   o.dir = dir.path();
   ProgressLog progress(name, req.quick ? 1 : 10);
   LossRecorder losses;
@@ -67,12 +71,11 @@ RunOutcome execute(RunOutcome o, RunDirectory& dir, const std::string& name, con
   // Something to resume from: the checkpoint this run continues, or one it saved.
   auto checkpointed = [&] { return resume_state != nullptr || checkpoints.saved(); };
   options.stop = req.stop;
-  const OutputShape shape = resolve_output_shape(r, o.exemplar);
   spdlog::info("[{}] {} points, {} classes -> {:.0f} points, {} ({}), seed {}", name, o.exemplar.size(), o.exemplar.num_classes(),
-               shape.expected_points(o.exemplar), shape.describe(), r["method"]["type"].get<std::string>(), r["seed"].get<uint64_t>());
+               spec.shape.expected_points(o.exemplar), spec.shape.describe(), r["method"]["type"].get<std::string>(), spec.seed);
   try {
     fs::create_directories(o.dir + "/snapshots");
-    SynthesisResult res = synthesize(o.exemplar, r, options);
+    SynthesisResult res = synthesize(spec, options);
     o.output = std::move(res.output);
     o.initialization = std::move(res.initialization);
     o.stages = std::move(res.stages);
@@ -96,12 +99,8 @@ RunOutcome execute(RunOutcome o, RunDirectory& dir, const std::string& name, con
 
 }  // namespace
 
-RunOutcome run_synthesis(const nlohmann::json& r, const RunRequest& req) {
-  RunOutcome o;
-  o.config = r;
-  o.exemplar = load_exemplar(r);  // bad input fails here, before anything is created
-  o.exemplar_format = detect_format(r["exemplar"]);
-  check_synthesis_size(r, o.exemplar);
+RunOutcome run_synthesis(const RunSpec& spec, const RunRequest& req) {
+  const nlohmann::json& r = spec.config;
   const std::string name = run_name(r);
   if (req.dir.empty() && !is_safe_name(name))
     throw InputError("the run name '" + name + "' (the exemplar's file name) is not a plain name; give the run directory with -o");
@@ -114,17 +113,21 @@ RunOutcome run_synthesis(const nlohmann::json& r, const RunRequest& req) {
     // exemplar file changed or is gone, continues; the checkpoint's key holds the exemplar's
     // content hash, so an edited copy is refused) and the way it ran.
     write_text_atomic(dir.path() + "/config.json", r.dump(2) + "\n");
-    write_points(dir.path() + "/exemplar.txt", o.exemplar, Format::Plain);
+    write_points(dir.path() + "/exemplar.txt", spec.exemplar, Format::Plain);
     dir.mark_running({{"quick", req.quick},
                       {"threads", at::get_num_threads()},
                       {"processor", processor_kind()},
                       {"seed", r["seed"]},
-                      {"exemplar_format", format_name(o.exemplar_format)}});
+                      {"exemplar_format", format_name(spec.exemplar_format)}});
   } catch (...) {
     dir.discard();
     throw;
   }
-  return execute(std::move(o), dir, name, req, nullptr);
+  return execute(spec, dir, name, req, nullptr);
+}
+
+RunOutcome run_synthesis(const nlohmann::json& resolved, const RunRequest& req) {
+  return run_synthesis(load_run_spec(resolved), req);  // bad input fails here, before anything is created
 }
 
 namespace {
@@ -156,21 +159,20 @@ RunOutcome resume_synthesis(const std::string& path, const RunRequest& req) {
   dir_options.option = "--resume";
   RunDirectory dir = RunDirectory::open(path, dir_options);
   const nlohmann::json marker = run_dir_marker(dir.path());
-  RunOutcome o;
-  o.config = read_resolved_run_config(dir.path() + "/config.json");
+  const nlohmann::json config = read_resolved_run_config(dir.path() + "/config.json");
   const CheckpointStore checkpoints(checkpoint_file_in(dir.path()));
   const std::string& checkpoint = checkpoints.file();
   if (!checkpoints.exists())
     throw InputError("--resume " + dir.path() + ": no checkpoint (the run stopped before its first one, or its method (" +
-                     o.config["method"]["type"].get<std::string>() + ") cannot resume)" + afresh_hint(dir.path()));
-  o.exemplar = run_exemplar(dir.path(), o.config);  // the run's own copy (run_synthesis)
-  o.exemplar_format = marker.contains("exemplar_format") ? parse_format(marker["exemplar_format"])  // checked with the marker
-                                                         : detect_format(o.config["exemplar"]);     // runs made before it
+                     config["method"]["type"].get<std::string>() + ") cannot resume)" + afresh_hint(dir.path()));
+  const Format exemplar_format = marker.contains("exemplar_format") ? parse_format(marker["exemplar_format"])  // checked with the marker
+                                                                    : detect_format(config["exemplar"]);     // runs made before it
+  const RunSpec spec = make_run_spec(config, run_exemplar(dir.path(), config), exemplar_format);  // the run's own copy (run_synthesis)
   const std::string bytes = checkpoints.load();
   RunRequest r = req;
   r.quick = marker.value("quick", false);
   try {  // refused before anything runs or prints
-    check_checkpoint(bytes, checkpoint, checkpoint_key(o.config, o.exemplar, r.quick));
+    check_checkpoint(bytes, checkpoint, checkpoint_key(spec, r.quick));
   } catch (const CheckpointError& e) {
     throw CheckpointError(e.what() + afresh_hint(dir.path()));
   }
@@ -179,9 +181,9 @@ RunOutcome resume_synthesis(const std::string& path, const RunRequest& req) {
     spdlog::warn("--resume {}: the run started with {}: the result may differ from an uninterrupted run's "
                  "(the same thread count is PPSYNTH_THREADS={})",
                  dir.path(), differences, marker.value("threads", nlohmann::json()).dump());
-  const std::string name = run_name(o.config);
+  const std::string name = run_name(config);
   try {
-    return execute(std::move(o), dir, name, r, &bytes);
+    return execute(spec, dir, name, r, &bytes);
   } catch (const CheckpointError& e) {
     throw CheckpointError(e.what() + afresh_hint(dir.path()));
   }

@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "optim/run/run_spec.hpp"
 #include "optim/run/run_store.hpp"
 
 namespace ppsynth {
@@ -41,9 +42,12 @@ class RunInterrupted : public std::runtime_error {
   std::string dir;
 };
 
-// A new run of `resolved` (from resolve_run_config). Methods that can resume write
-// checkpoint.bin into the directory at every stage boundary and every
+// A new run of `spec` (run_spec.hpp: its exemplar read and its shape, seed and method resolved
+// once; the directory's config.json, the checkpoint key and the log read them). Methods that
+// can resume write checkpoint.bin into the directory at every stage boundary and every
 // `checkpoint_seconds`; it is removed when the run completes.
+RunOutcome run_synthesis(const RunSpec& spec, const RunRequest& request);
+// The same for `resolved` (from resolve_run_config): load_run_spec, then the above.
 RunOutcome run_synthesis(const nlohmann::json& resolved, const RunRequest& request);
 
 // Continues the unfinished run in `dir` from its checkpoint (request.dir and quick are taken

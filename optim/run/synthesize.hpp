@@ -8,6 +8,7 @@
 //
 // A spec is a resolved run config (optim/run/run_config.hpp); its "exemplar" key is not used
 // here (the exemplar is given), its "method", "seed", "upscale", "init_file" and "evaluate" are.
+// The run layer resolves it with its exemplar once into a RunSpec (optim/run/run_spec.hpp).
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 
 #include "core/point_set.hpp"
 #include "optim/method/method.hpp"
+#include "optim/run/run_spec.hpp"
 
 namespace ppsynth {
 
@@ -30,24 +32,20 @@ struct SynthesisResult {
   double seconds_before_resume = 0;  // the part of `seconds` spent by the processes before a resume
 };
 
-// Runs the spec's method on `exemplar`. Same spec, seed, exemplar and thread count give the
+// Runs the spec's method on its exemplar. Same spec, seed, exemplar and thread count give the
 // same output, bit for bit, resumed or not. Errors are InputError naming the key.
+SynthesisResult synthesize(const RunSpec& spec, const SynthesisOptions& options = {});
+// The same with the exemplar at hand: make_run_spec(spec, exemplar), then the above (an output
+// that cannot be made is refused before any work, run_spec.hpp).
 SynthesisResult synthesize(const PointSet& exemplar, const nlohmann::json& spec, const SynthesisOptions& options = {});
 
 // True when the spec's method checkpoints (and so honors SynthesisOptions::stop).
 bool can_resume(const nlohmann::json& spec);
 
-// Refuses, before any work, an output that cannot be made: one that would hold no point (a
-// rectangle smaller than one point's share at the exemplar's density), one whose evaluation
-// cannot run (spec "evaluate" on a rectangle narrower or lower than the exemplar: the
-// evaluation measures exemplar-sized crops), one whose points would not fit in memory
-// (core/memory_budget.hpp). Errors name the key (output.size, output.points, evaluate).
-void check_synthesis_size(const nlohmann::json& spec, const PointSet& exemplar);
-
-// What a checkpoint of `spec` run on `exemplar` carries to prove where it belongs
-// (core/checkpoint_file.hpp): the method and its version, the seed, the quick setting, a
-// content hash of the exemplar's points, and the resolved config with its hash.
-nlohmann::json checkpoint_key(const nlohmann::json& spec, const PointSet& exemplar, bool quick);
+// What a checkpoint of `spec` carries to prove where it belongs (core/checkpoint_file.hpp):
+// the method and its version, the seed, the quick setting, a content hash of the exemplar's
+// points, and the resolved config with its hash.
+nlohmann::json checkpoint_key(const RunSpec& spec, bool quick);
 
 // Refuses (CheckpointError naming `source`) a checkpoint that is damaged or of another
 // synthesis than `key`'s, saying what differs. Cheap: the arrays are checked, not restored.

@@ -1,6 +1,6 @@
 // What `ppsynth synthesize` initializes is said before it starts: a log line with the points
 // and the canvas (optim/steps/initializer.hpp), and a canvas beyond the memory is refused
-// first, naming the pad when the pad makes it (optim/run/synthesize.cpp, check_synthesis_size).
+// first, naming the pad when the pad makes it (optim/run/run_spec.cpp, check_synthesis_size).
 #include <catch2/catch.hpp>
 
 #include <filesystem>

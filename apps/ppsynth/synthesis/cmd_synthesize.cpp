@@ -14,9 +14,9 @@
 #include "apps/ppsynth/output_files.hpp"
 #include "apps/ppsynth/stop_signals.hpp"
 #include "optim/run/run_config.hpp"
+#include "optim/run/run_spec.hpp"
 #include "optim/run/run_synthesis.hpp"
 #include "optim/run/runtime.hpp"
-#include "optim/run/synthesize.hpp"
 #include "core/config/config.hpp"
 #include "core/error.hpp"
 #include "core/shell_quote.hpp"
@@ -103,8 +103,10 @@ ppsynth::app::RunFn setup(CLI::App& app) {
                                                             {"exemplar", exemplar.is_string() ? exemplar.get<std::string>() : ""},
                                                             {"--init", o->init}});
       }
-      if (can_resume(resolved)) ppsynth::app::install_stop_handlers();  // others stop at once, as without handlers
-      std::cout << run_synthesis(resolved, req).dir << "\n";
+      // The exemplar read and the shape, seed and method resolved once, for every step of the run.
+      const RunSpec spec = load_run_spec(resolved);
+      if (spec.method->can_resume()) ppsynth::app::install_stop_handlers();  // others stop at once, as without handlers
+      std::cout << run_synthesis(spec, req).dir << "\n";
       return 0;
     } catch (const RunInterrupted& e) {
       if (e.dir.empty())
