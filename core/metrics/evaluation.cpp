@@ -13,6 +13,7 @@
 #include "core/metrics/nearest_neighbor.hpp"
 #include "core/metrics/overlap.hpp"
 #include "core/metrics/patches.hpp"
+#include "core/metrics/periodicity.hpp"
 #include "core/metrics/periodogram.hpp"
 #include "core/metrics/second_order_report.hpp"
 #include "core/metrics/spectrum.hpp"
@@ -44,6 +45,17 @@ void check_domain(const PointSet& ps, const char* which) {
   for (size_t i = 0; i < ps.size(); ++i)
     if (!std::isfinite(ps[i].x) || !std::isfinite(ps[i].y))
       throw InputError(std::string("evaluate: ") + which + " point " + std::to_string(i) + " has a non-finite coordinate");
+}
+
+// The scorecard's border line: the border profiles set_summary measured, output beside
+// exemplar (gather reads them from "output" as border_density_*%).
+json border_line(const json& r) {
+  return {{"measures",
+           "the density within each band of the border (fractions of the shorter side) over what uniform points put "
+           "there: 1 uniform, > 1 points piled on the edge, < 1 a thin seam behind it (border.hpp)"},
+          {"band", r["output"]["border_profile"]["band"]},
+          {"exemplar", r["exemplar"]["border_profile"]["over_uniform"]},
+          {"output", r["output"]["border_profile"]["over_uniform"]}};
 }
 
 json set_summary(const PointSet& ps) {
@@ -157,7 +169,10 @@ void check_eval_options(const EvalOptions& opt) {
     throw InputError("crops (--crops) must be in 1.." + std::to_string(kMaxCrops) + " (got " +
                      std::to_string(opt.crops) + ")");
   if (opt.verdict) check_verdict_options(opt.verdict_options);
-  if (opt.scorecard) check_novelty_options(opt.novelty);
+  if (opt.scorecard) {
+    check_novelty_options(opt.novelty);
+    check_periodicity_options(opt.periodicity);
+  }
   if (opt.spectrum && (opt.spectrum_frequency < 1 || opt.spectrum_frequency > kMaxPeriodogramFrequencies))
     throw InputError("spectrum_frequency must be in 1.." + std::to_string(kMaxPeriodogramFrequencies));
 }
@@ -250,9 +265,11 @@ json evaluate(const PointSet& exemplar, const PointSet& output_as_read, const Ev
     r["second_order"] = second_order_report(exemplar, output, plan.zoom, opt.include_curves);
   }
   if (opt.scorecard) {
-    progress("scorecard: novelty, close pairs");
+    progress("scorecard: novelty, periodicity, close pairs");
     r["scorecard"] = {{"novelty", novelty_report(exemplar, output, plan.zoom, opt.novelty)},
-                      {"close_pairs", close_pairs_report(exemplar, output, plan.zoom)}};
+                      {"periodicity", periodicity_report(exemplar, output, plan.zoom, opt.periodicity)},
+                      {"close_pairs", close_pairs_report(exemplar, output, plan.zoom)},
+                      {"border", border_line(r)}};
   }
   if (opt.verdict) {
     progress("verdict");

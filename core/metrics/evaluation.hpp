@@ -49,7 +49,10 @@
 //   "verdict": the two-sample test per row, "is the output a plausible realization of the
 //              exemplar's process?" (verdict.hpp; unless verdict is false)
 //   "scorecard": { "novelty": is the output a translated copy of the exemplar (novelty.hpp),
-//              "close_pairs": its closest pairs against the exemplar's (close_pairs.hpp) }
+//              "periodicity": does it repeat with the exemplar's period (periodicity.hpp),
+//              "close_pairs": its closest pairs against the exemplar's (close_pairs.hpp),
+//              "border": { "measures", "band", "exemplar", "output" } the border profiles
+//              above, over uniform's }
 //              (unless scorecard is false; docs/explanation/scorecard.md)
 //   "options": the PCF options used (and wasserstein_exact_pairs).
 // Wasserstein per row: "wasserstein_method" "exact" | "subsample". Beyond the exact limit
@@ -71,6 +74,7 @@
 #include "core/metrics/eval_protocol.hpp"
 #include "core/metrics/novelty.hpp"
 #include "core/metrics/pcf.hpp"
+#include "core/metrics/periodicity.hpp"
 #include "core/metrics/verdict.hpp"
 #include "core/metrics/wasserstein.hpp"
 #include "core/point_set.hpp"
@@ -91,16 +95,17 @@ struct EvalOptions {
   bool second_order = true;  // K, L, g, mark correlation (second_order_report.hpp)
   bool verdict = true;       // the two-sample test (verdict.hpp); its zoom is `zoom`'s
   VerdictOptions verdict_options;
-  bool scorecard = true;  // novelty and close pairs (novelty.hpp, close_pairs.hpp), at `zoom`'s scale
+  bool scorecard = true;  // novelty, periodicity, close pairs, border (novelty.hpp, periodicity.hpp, close_pairs.hpp), at `zoom`'s scale
   NoveltyOptions novelty;
+  PeriodicityOptions periodicity;
 };
 
 // Refuses options no evaluation can use (InputError naming the option and the command's
 // flag): bins outside 2..10000, r_max outside [0, 1] (radii reach 2.5 r_max: beyond 1 every
 // pair is within reach and the PCF turns quadratic; NaN too), an exact-Wasserstein limit
 // outside 1..4e8 pairs (a 3.2 GB cost matrix), a crop count outside 1..10000, a protocol
-// that is not one of the enum's, a spectrum frequency outside 1..1024, novelty options
-// outside novelty.hpp's ranges. evaluate() calls it first.
+// that is not one of the enum's, a spectrum frequency outside 1..1024, novelty and periodicity
+// options outside novelty.hpp's and periodicity.hpp's ranges. evaluate() calls it first.
 void check_eval_options(const EvalOptions& opt);
 
 nlohmann::json evaluate(const PointSet& exemplar, const PointSet& output,

@@ -165,11 +165,38 @@ void write_match(std::ostream& os, const char* name, const json& m, const char* 
      << cell(m["copy_share"], "%g") << ")\n";
 }
 
-// The scorecard: novelty (and diversity), then the close pairs per row.
+// The periodicity line (periodicity.hpp): the ratio at the exemplar's period and its flag.
+void write_periodicity(std::ostream& os, const json& p) {
+  os << "  periodicity " << cell(p["ratio"], "%.3g") << ": median periodogram at the exemplar's period ("
+     << cell(p["period"][0], "%.4g") << " x " << cell(p["period"][1], "%.4g") << ") and harmonics up to "
+     << p["harmonics"].get<int>() << " over the median between them: ";
+  if (p["periodic"].is_boolean())
+    os << (p["periodic"].get<bool>() ? "PERIODIC" : "no repeat") << " (periodic from " << cell(p["periodic_ratio"], "%g")
+       << ")\n";
+  else
+    os << "cannot judge (fewer than 2 output points)\n";
+}
+
+// The border line (border.hpp): the output's density near the border over uniform's, per band.
+void write_border(std::ostream& os, const json& b) {
+  os << "  border      over uniform within";
+  const json& bands = b["band"];
+  for (size_t i = 0; i < bands.size(); ++i)
+    os << (i ? ", " : " ") << cell(bands[i].is_number() ? json(100 * bands[i].get<double>()) : json(), "%g");
+  os << " % of the shorter side: output";
+  for (const auto& v : b["output"]) os << " " << cell(v, "%.2f");
+  os << ", exemplar";
+  for (const auto& v : b["exemplar"]) os << " " << cell(v, "%.2f");
+  os << " (> 1 points piled on the edge, < 1 a thin seam)\n";
+}
+
+// The scorecard: novelty (and diversity), periodicity, border, then the close pairs per row.
 void write_scorecard(std::ostream& os, const json& sc) {
   os << "\nscorecard (docs/explanation/scorecard.md: what each line measures, its false-alarm rate)\n";
   if (sc.contains("novelty")) write_match(os, "novelty", sc["novelty"], "the periodic exemplar");
   if (sc.contains("diversity")) write_match(os, "diversity", sc["diversity"], "the other output");
+  if (sc.contains("periodicity")) write_periodicity(os, sc["periodicity"]);
+  if (sc.contains("border")) write_border(os, sc["border"]);
   if (!sc.contains("close_pairs")) return;
   os << "  close pairs (plane, exemplar units): output pairs closer than the exemplar's closest, the share of points in one;\n"
         "  normalized min distance = closest pair / the largest possible at the row's density (paper's Table 1)\n";

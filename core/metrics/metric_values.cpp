@@ -140,6 +140,15 @@ std::vector<std::pair<std::string, double>> metric_values(const nlohmann::json& 
         r.add("all/copy", value, "v", "scorecard.novelty.copy");
       }
     }
+    // The periodogram's ratio at the exemplar's period and its flag (periodicity.hpp), the same way.
+    if (const auto* per = r.object(*sc, "periodicity", "scorecard.periodicity")) {
+      r.add("all/periodicity_ratio", *per, "ratio", "scorecard.periodicity");
+      if (per->contains("periodic") && !(*per)["periodic"].is_null()) {
+        if (!(*per)["periodic"].is_boolean()) r.refuse("scorecard.periodicity.periodic", "expected true, false or null");
+        const nlohmann::json value = {{"v", (*per)["periodic"].get<bool>() ? 1.0 : 0.0}};
+        r.add("all/periodic", value, "v", "scorecard.periodicity.periodic");
+      }
+    }
     rows_of(*sc, "close_pairs", "scorecard.close_pairs", [&](const std::string& scope, const nlohmann::json& row, const std::string& k) {
       r.add(scope + "/close_pair_share", row, "share_below", k);
       r.add(scope + "/min_distance_normalized", row, "output_normalized", k);

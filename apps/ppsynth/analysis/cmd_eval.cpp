@@ -6,9 +6,10 @@
 // disk overlaps, border share; spatstat's K, L, g and mark correlations in exemplar units
 // (core/metrics/second_order_report.hpp) and the verdict, a p-value per row for "is the output
 // a plausible realization of the exemplar's process?" (core/metrics/verdict.hpp, docs/explanation/verdict.md),
-// and the scorecard: novelty (is it a copy of the exemplar?), close pairs, and with
-// --diversity OTHER whether it is a translate of another seed's output
-// (core/metrics/novelty.hpp, close_pairs.hpp, docs/explanation/scorecard.md).
+// and the scorecard: novelty (is it a copy of the exemplar?), periodicity (does it repeat with
+// the exemplar's period?), the border profile, close pairs, and with --diversity OTHER whether
+// it is a translate of another seed's output (core/metrics/novelty.hpp, periodicity.hpp,
+// close_pairs.hpp, docs/explanation/scorecard.md).
 // Human table by default; --json prints the full result (with curves).
 // Sub-quadratic in the point count (k-d tree searches) except the exact Wasserstein, which
 // is exact up to --wasserstein-exact-limit pairs per quadrant and a labeled subsample
@@ -37,6 +38,7 @@ struct Args {
        no_scorecard = false;
   ppsynth::VerdictOptions verdict;
   ppsynth::NoveltyOptions novelty;
+  ppsynth::PeriodicityOptions periodicity;
   int bins = 100;
   double r_max = 0, zoom = 0;
   size_t wasserstein_pairs = ppsynth::kWassersteinExactPairs;
@@ -87,13 +89,20 @@ ppsynth::app::RunFn setup(CLI::App& app) {
       ->capture_default_str()
       ->check(ppsynth::app::seed_number());
   app.add_option("--verdict-alpha", a->verdict.alpha, "verdict: a row passes when p >= alpha")->capture_default_str();
-  app.add_flag("--no-scorecard", a->no_scorecard, "leave out the scorecard (novelty: is the output a copy?; close pairs)");
+  app.add_flag("--no-scorecard", a->no_scorecard, "leave out the scorecard (novelty: is the output a copy?; periodicity; border; close pairs)");
   app.add_option("--novelty-k", a->novelty.k, "scorecard: neighbours per neighbourhood compared, 1..64")->capture_default_str();
   app.add_option("--novelty-tolerance", a->novelty.tolerance,
                  "scorecard: a neighbourhood matches within this many exemplar mean nearest-neighbour distances, (0, 1]")
       ->capture_default_str();
   app.add_option("--novelty-copy-share", a->novelty.copy_share,
                  "scorecard: the output is flagged a copy when this share of its points match, (0, 1]")
+      ->capture_default_str();
+  app.add_option("--periodicity-harmonics", a->periodicity.harmonics,
+                 "scorecard: harmonics of the exemplar's period compared along each axis, 1..64")
+      ->capture_default_str();
+  app.add_option("--periodic-ratio", a->periodicity.periodic_ratio,
+                 "scorecard: the output is flagged periodic from this ratio (its median periodogram at the exemplar's period "
+                 "and harmonics over the median between them), > 1")
       ->capture_default_str();
   app.add_option("--diversity", a->diversity,
                  "scorecard: another output of the same exemplar (another seed): are the two translates of each other?")
@@ -115,6 +124,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     opt.verdict_options = a->verdict;
     opt.scorecard = !a->no_scorecard;
     opt.novelty = a->novelty;
+    opt.periodicity = a->periodicity;
     if (!a->diversity.empty() && a->no_scorecard)
       throw ppsynth::InputError("--diversity is a line of the scorecard: it cannot go with --no-scorecard");
     ppsynth::check_eval_options(opt);  // before reading: a bad option is reported first
