@@ -154,11 +154,12 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
   if (s.measure != GaborOptions::Measure::grid && shape.rectangle)
     throw config_error("method.measure", named + " measures the paper's u x u square; a rectangle output "
                                          "(output.size or output.points) takes output.border instead");
-  if (s.measure != GaborOptions::Measure::grid && !p["map_terms"].empty())
+  const bool map_terms = map_terms_act(p["map_terms"], exemplar.num_classes());
+  if (s.measure != GaborOptions::Measure::grid && map_terms)
     throw config_error("method.measure", named + " does not combine with method.map_terms (their maps are the unrolled grid's)");
   s.rectangle = shape.rectangle;
   s.quick = quick;
-  s.map_terms = !p["map_terms"].empty();
+  s.map_terms = map_terms;
   // Each class-end kind's block as the method's registry merged and checked it; the kind
   // resolves it, and refuses what it cannot run, naming method.<name>.<key>, here.
   for (const std::string& name : StageKindRegistry::instance().names()) s.stage_kinds[name] = p[name];

@@ -23,6 +23,7 @@ class ClassOwnMapTerm : public MapTerm {
   void begin_stage(const Stage& stage) override;
   torch::Tensor evaluate(const torch::Tensor& moving, const torch::Tensor& jitter, const Stage& stage) override;
   bool in_windows() const override { return true; }
+  bool acts_on(int classes) const override { return classes > 1; }  // one class: the joint maps are its own
 
  private:
   // Not for the first class of the order: its joint maps are its own.

@@ -61,6 +61,13 @@ class MapTerm {
   virtual torch::Tensor evaluate(const torch::Tensor& moving, const torch::Tensor& jitter, const Stage& stage) = 0;
   // Whether the term knows a window (frozen context, measured part).
   virtual bool in_windows() const { return false; }
+  // Whether the term acts on an exemplar of `classes` classes at all. One that does not (a
+  // per-class term on one class) leaves the run as if it were not configured: the border
+  // relax and the measures that refuse map terms see none.
+  virtual bool acts_on(int classes) const {
+    (void)classes;
+    return true;
+  }
 };
 
 using MapTermRegistry = Registry<MapTerm>;
@@ -69,6 +76,13 @@ using WeightedMapTerm = WeightedTerm<MapTerm>;
 // The terms `method.map_terms` switches on (weight > 0), in name order.
 inline std::vector<WeightedMapTerm> create_map_terms(const nlohmann::json& terms) {
   return create_weighted_terms<MapTerm>(terms, "method.map_terms");
+}
+
+// Whether any term `method.map_terms` switches on acts on an exemplar of `classes` classes.
+inline bool map_terms_act(const nlohmann::json& terms, int classes) {
+  for (const auto& t : create_map_terms(terms))
+    if (t.term->acts_on(classes)) return true;
+  return false;
 }
 
 // The windows of a rectangle output: every term switched on must know them; config_error

@@ -334,7 +334,9 @@ TEST_CASE("by default (null, \"auto\") the border is relaxed on the u x u square
   }
   json own = plain;
   own["map_terms"] = {{"class_own", {{"weight", 1}}}};
-  CHECK(relax_options(resolve_gabor_settings(method_params(own), ex, square, false)).iterations == 0);
+  CHECK(relax_options(resolve_gabor_settings(method_params(own), test::small_exemplar(2, false), square, false)).iterations == 0);
+  // A per-class term on one class acts on nothing: the run is relaxed as without it.
+  CHECK(relax_options(resolve_gabor_settings(method_params(own), ex, square, false)).iterations == 60);
   // The shipped paper configs keep the published border.
   for (const char* name : {"lines", "lemon_4c_v2", "poisson_n64c2_point", "ps_Tree1"}) {
     INFO(name);
