@@ -455,10 +455,14 @@ torch::Tensor GaborEngine::evaluate(const Stage& stage) {
     l = measure(pts, out_weights_, jitter, stage, false);
   }
   const auto tc = Clock::now();
-  for (auto& t : map_terms_) {  // beside the paper's (optim/gabor/stages/map_term.hpp); their maps and nets count as loss time
-    const auto v = t.term->evaluate(mv, jitter, stage);
-    if (v.defined()) l = l + t.weight * v;
-  }
+  // Beside the paper's (optim/gabor/stages/map_term.hpp); their maps and nets count as loss
+  // time. Their maps are the unrolled grid's: a stage that rolls the grid (the border relax)
+  // leaves them out.
+  if (!stage.kind->rolls_grid())
+    for (auto& t : map_terms_) {
+      const auto v = t.term->evaluate(mv, jitter, stage);
+      if (v.defined()) l = l + t.weight * v;
+    }
   // The paper's loss (+ map terms) at the stage's first evaluation: the unit of the point
   // terms, so one weight serves every scene and sigma (optim/terms/point_term.hpp).
   auto& own_terms = stage.kind->terms();  // the stage kind's, beside the run's

@@ -159,7 +159,6 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
     throw config_error("method.measure", named + " does not combine with method.map_terms (their maps are the unrolled grid's)");
   s.rectangle = shape.rectangle;
   s.quick = quick;
-  s.map_terms = map_terms;
   // Each class-end kind's block as the method's registry merged and checked it; the kind
   // resolves it, and refuses what it cannot run, naming method.<name>.<key>, here.
   for (const std::string& name : StageKindRegistry::instance().names()) s.stage_kinds[name] = p[name];

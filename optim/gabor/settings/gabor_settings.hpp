@@ -39,9 +39,8 @@ struct GaborSettings {
   // every iteration.
   GaborOptions::Measure measure = GaborOptions::Measure::grid;
   bool measure_tiles() const { return measure == GaborOptions::Measure::tiles; }
-  // What the stage kinds see of the run besides the numbers above: a rectangle output, --quick,
-  // a map term that acts on this exemplar (optim/gabor/stages/map_term.hpp, acts_on).
-  bool rectangle = false, quick = false, map_terms = false;
+  // What the stage kinds see of the run besides the numbers above: a rectangle output, --quick.
+  bool rectangle = false, quick = false;
   // Each class-end stage kind's block (method.<name>, its defaults merged and its ranges checked
   // as its StageKindRegistry entry declares them), by the kind's name: the kind reads it
   // (optim/gabor/stages/stage_kind.hpp); the settings do not.

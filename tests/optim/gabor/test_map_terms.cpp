@@ -8,6 +8,7 @@
 
 #include "core/generators/lattices.hpp"
 #include "optim/gabor/stages/map_term.hpp"
+#include "optim/gabor/stages/stage_kind.hpp"
 #include "optim/method/method.hpp"
 
 using namespace ppsynth;
@@ -20,14 +21,14 @@ class CenterMapTerm : public MapTerm {
   explicit CenterMapTerm(const nlohmann::json&) {}
   void begin_run(const MapTermRun& run) override { ++runs, grid = run.settings.res; }
   void begin_group(const MapTermGroup& g) override { ++groups, output_points = g.output.size(); }
-  void begin_stage(const Stage&) override { ++stages; }
-  torch::Tensor evaluate(const torch::Tensor& moving, const torch::Tensor& jitter, const Stage&) override {
-    ++evaluations;
+  void begin_stage(const Stage& s) override { ++stages, rolled_stages += s.kind->rolls_grid(); }
+  torch::Tensor evaluate(const torch::Tensor& moving, const torch::Tensor& jitter, const Stage& s) override {
+    ++evaluations, rolled_evaluations += s.kind->rolls_grid();
     if (jitter.defined()) ++with_jitter;
     return (moving - 0.5).pow(2).sum(-1).mean();
   }
-  static void reset() { runs = groups = stages = evaluations = with_jitter = grid = 0, output_points = 0; }
-  static inline int runs = 0, groups = 0, stages = 0, evaluations = 0, with_jitter = 0, grid = 0;
+  static void reset() { runs = groups = stages = rolled_stages = evaluations = rolled_evaluations = with_jitter = grid = 0, output_points = 0; }
+  static inline int runs = 0, groups = 0, stages = 0, rolled_stages = 0, evaluations = 0, rolled_evaluations = 0, with_jitter = 0, grid = 0;
   static inline size_t output_points = 0;
 };
 
@@ -51,8 +52,8 @@ TEST_CASE("A map term registered in a test file acts in a synthesis", "[optim][m
   SynthesisContext ctx;
   ctx.quick = true;
   ctx.seed = 4;
-  auto run = [&](nlohmann::json terms) {
-    nlohmann::json spec = {{"type", "gabor"}, {"map_terms", terms}};
+  auto run = [&](nlohmann::json terms, nlohmann::json relax = {{"iterations", 0}}) {
+    nlohmann::json spec = {{"type", "gabor"}, {"map_terms", terms}, {"border_relax", relax}};
     return MethodRegistry::instance().create(spec, "method")->synthesize(ex, ctx);
   };
   const auto plain = run(nlohmann::json::object());
@@ -67,6 +68,14 @@ TEST_CASE("A map term registered in a test file acts in a synthesis", "[optim][m
   CHECK(CenterMapTerm::output_points == 64);
   INFO("plain " << mean_distance_to_center(plain) << " pulled " << mean_distance_to_center(pulled));
   CHECK(mean_distance_to_center(pulled) < mean_distance_to_center(plain) - 0.01);
+  // The border relax rolls the grid under the points; a map term's maps are the unrolled
+  // grid's, so its stages run without the term (and the two combine).
+  CenterMapTerm::reset();
+  run({{"test_center", {{"weight", 1000.0}}}}, {{"iterations", 2}, {"parked", 0}, {"after", "class"}});
+  CHECK(CenterMapTerm::rolled_stages == 2);  // one relax stage per class
+  CHECK(CenterMapTerm::stages == 6);
+  CHECK(CenterMapTerm::rolled_evaluations == 0);
+  CHECK(CenterMapTerm::evaluations > 0);
   CenterMapTerm::reset();
   run({{"test_center", {{"weight", 0.0}}}});  // weight 0: not created, not run
   CHECK(CenterMapTerm::runs == 0);

@@ -11,7 +11,6 @@ namespace ppsynth {
 struct BorderRelaxContext {
   bool rectangle = false;       // a rectangle output (it takes output.border instead)
   bool measured_whole = true;   // method.measure "grid" ("tiles" and "rolled" move the edge)
-  bool map_terms = false;       // a map term acts on the exemplar (their maps are the unrolled grid's)
   bool quick = false;           // --quick caps the count at the sigma stages' max_iterations
   int max_iterations = 0;
   double mean_nn_distance = 0;  // the exemplar's: `band`'s unit on the output of upscale u is this / u

@@ -80,7 +80,6 @@ PPSYNTH_REGISTER_STAGE_KIND("border_relax", BorderRelaxOptions::defaults(), Bord
                               BorderRelaxContext where;
                               where.rectangle = s.rectangle;
                               where.measured_whole = s.measure == GaborOptions::Measure::grid;
-                              where.map_terms = s.map_terms;
                               where.quick = s.quick;
                               where.max_iterations = s.max_iterations;
                               where.mean_nn_distance = s.mean_nn_distance;
