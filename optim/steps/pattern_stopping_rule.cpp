@@ -131,8 +131,11 @@ class PatternStoppingRule : public StoppingRule {
   double rows_mse(const PointSet& points, const PcfOptions& o, bool crop) const {
     double sum = 0;
     int measured = 0;
+    int classes = 0;
+    for (const Row& row : rows_) classes = std::max({classes, row.a + 1, row.b + 1});
+    const std::vector<PointSet> parts = split_classes(points, classes);  // each class once, not once per row
     for (const Row& row : rows_) {
-      const PointSet a = points.subset_class(row.a), b = row.a == row.b ? PointSet() : points.subset_class(row.b);
+      const PointSet &a = parts[static_cast<size_t>(row.a)], &b = parts[static_cast<size_t>(row.b)];
       if (!measurable(row, a, b)) continue;
       PcfOptions ro = o;
       if (crop) ro.r_max = row.crop.r_max;
