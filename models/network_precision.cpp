@@ -43,7 +43,49 @@ double measured_bf16_slowdown() {
   return ratio;
 }
 
+namespace {
+
+// On a CUDA device: bf16 where its tensor cores run it (compute capability 8.0 and later).
+NetworkPrecision cuda_precision(const std::string& requested, const std::string& key_path, const DeviceCapabilities& device) {
+  NetworkPrecision p;
+  if (requested == "float32") {
+    p.reason = "float32 as configured";
+  } else if (requested == "bfloat16") {
+    p.dtype = torch::kBFloat16;
+    p.name = "bfloat16";
+    p.reason = "bfloat16 as configured";
+    if (device.known() && !device.bf16())
+      p.reason += "; " + device.describe() + " has no bf16 tensor cores (they start at compute capability 8.0)";
+  } else if (requested == "auto") {
+    if (device.bf16()) {
+      p.dtype = torch::kBFloat16;
+      p.name = "bfloat16";
+      p.reason = "auto: bfloat16, the CUDA device's bf16 tensor cores (" + device.describe() + ")";
+    } else {
+      p.reason = "auto: float32, no bf16 tensor cores known on " + device.describe() +
+                 " (they start at compute capability 8.0)";
+    }
+  } else {
+    throw config_error(key_path, "expected \"float32\", \"bfloat16\" or \"auto\", got \"" + requested + "\"");
+  }
+  return p;
+}
+
+}  // namespace
+
 NetworkPrecision resolve_network_precision(const std::string& requested, const std::string& key_path) {
+  return resolve_network_precision(requested, key_path, synthesis_device().capabilities);
+}
+
+NetworkPrecision resolve_network_precision(const std::string& requested, const std::string& key_path,
+                                           const DeviceCapabilities& device) {
+  if (device.cuda) {
+    NetworkPrecision p = cuda_precision(requested, key_path, device);
+    static bool logged = false;  // once per process: a run draws a network per class
+    if (requested == "auto" && !logged) spdlog::info("{}: {}", key_path, p.reason);
+    logged = logged || requested == "auto";
+    return p;
+  }
   const CpuIsa& cpu = cpu_isa();
   NetworkPrecision p;
   if (requested == "float32") {

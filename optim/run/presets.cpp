@@ -4,6 +4,7 @@
 #include "core/config/defaults_catalog.hpp"
 #include "core/error.hpp"
 #include "core/processor.hpp"
+#include "optim/run/runtime.hpp"
 
 namespace ppsynth {
 
@@ -23,12 +24,13 @@ nlohmann::json presets() {
       //     maps alone a later class fills the holes the earlier ones left, and its own spacing
       //     can end worse than its random start (docs/lab/later_classes/). It acts on nothing
       //     for a one-class exemplar, whose runs it leaves unchanged.
+      // On a CUDA device "auto" is bf16 from compute capability 8.0 (bf16 tensor cores).
       // Where bf16 would be emulated, the network runs float32, and "without_bf16_units" buys
       // back the time bf16 would have saved with fewer filters, where that costs no quality:
       // 64 for a one-class exemplar; a multi-class one keeps the paper's 120 (its classes
       // share the filters; models/feature_net.hpp has the measurement).
       {"fast",
-       {{"description", "the network in bf16 where the CPU has bf16 units, per-sigma grids, and stages that stop when the "
+       {{"description", "the network in bf16 where the device has bf16 units (a CPU's AVX512_BF16 or AMX, a CUDA card's tensor cores), per-sigma grids, and stages that stop when the "
                         "pattern stops improving and keep its best, a later class's loss also on its own maps; without bf16 units, a float32 network of 64 filters for one class (120 for several)"},
         {"config",
          {{"method",
@@ -55,6 +57,13 @@ bool takes_float32_variant(const nlohmann::json& entry, bool bf16_units) {
   return entry.contains("without_bf16_units") && !bf16_units;
 }
 
+// The device a config names (runtime.device, the CPU by default), as this process sees it.
+DeviceCapabilities config_device(const nlohmann::json& config) {
+  if (config.contains("runtime") && config["runtime"].is_object() && config["runtime"].contains("device"))
+    return capabilities_of_device(config["runtime"]["device"]);
+  return cpu_capabilities();
+}
+
 }  // namespace
 
 nlohmann::json preset_fragment(const std::string& name, bool bf16_units) {
@@ -69,7 +78,7 @@ nlohmann::json apply_preset(const nlohmann::json& config) {
   if (!config.is_object() || !config.contains("preset") || config["preset"].is_null()) return config;
   const auto& name = config["preset"];
   preset_entry(presets(), name);  // the name's error first
-  const nlohmann::json fragment = preset_fragment(name.get<std::string>());
+  const nlohmann::json fragment = preset_fragment(name.get<std::string>(), config_device(config).bf16());
   // A preset sets the Gabor method's parameters: another method would refuse them as unknown
   // keys; say why instead.
   if (fragment.contains("method") && config.contains("method") && config["method"].is_object() &&
@@ -83,13 +92,16 @@ nlohmann::json preset_record(const nlohmann::json& resolved) {
   if (!resolved.is_object() || !resolved.contains("preset") || !resolved["preset"].is_string()) return nullptr;
   const nlohmann::json all = presets();
   const nlohmann::json& entry = preset_entry(all, resolved["preset"]);
-  const bool f32 = takes_float32_variant(entry, cpu_isa().native_bf16);
-  const std::string kind = cpu_isa().kind();
-  return {{"name", resolved["preset"]},
-          {"variant", f32 ? "without bf16 units" : "every processor"},
-          {"reason", !entry.contains("without_bf16_units") ? "one variant for every processor"
-                     : f32 ? "no bf16 units in use on this CPU (" + kind + ")"
-                           : "the CPU's bf16 units are in use (" + kind + ")"}};
+  const DeviceCapabilities device = config_device(resolved);
+  const bool f32 = takes_float32_variant(entry, device.bf16());
+  const std::string kind = device.describe();
+  std::string reason = "one variant for every processor";
+  if (entry.contains("without_bf16_units") && !device.cuda)
+    reason = f32 ? "no bf16 units in use on this CPU (" + kind + ")" : "the CPU's bf16 units are in use (" + kind + ")";
+  else if (entry.contains("without_bf16_units"))
+    reason = f32 ? "no bf16 tensor cores known on the CUDA device (" + kind + "; they start at compute capability 8.0)"
+                 : "the CUDA device's bf16 tensor cores (" + kind + ")";
+  return {{"name", resolved["preset"]}, {"variant", f32 ? "without bf16 units" : "every processor"}, {"reason", reason}};
 }
 
 }  // namespace ppsynth

@@ -9,10 +9,12 @@
 // declared once, in presets.cpp, with what it trades (docs/explanation/performance.md,
 // "Which knobs trade what").
 //
-// A preset may differ by processor class: its "config" holds for every processor, and its
-// "without_bf16_units" fragment is merged over it where the network's bf16 would be emulated
-// (core/processor.hpp: no AVX512_BF16 or AMX in use), since there the knobs that make bf16 pay
-// cost time instead. run.json records which variant ran and why (preset_record).
+// A preset may differ by device: its "config" holds for every device, and its
+// "without_bf16_units" fragment is merged over it where the network's bf16 would not run
+// natively: a CPU without AVX512_BF16 or AMX in use (core/processor.hpp), a CUDA device below
+// compute capability 8.0 (models/device_capabilities.hpp), since there the knobs that make
+// bf16 pay cost time instead. The device is the config's runtime.device as this process
+// resolves it. run.json records which variant ran and why (preset_record).
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -21,14 +23,14 @@ namespace ppsynth {
 
 // name -> {"description": ..., "config": fragment[, "without_bf16_units": fragment]}.
 nlohmann::json presets();
-// The fragment a preset contributes on this processor; on a processor with or without bf16
-// units in use (`bf16_units`).
+// The fragment a preset contributes on this CPU; on a device with or without bf16 units in
+// use (`bf16_units`: DeviceCapabilities::bf16()).
 nlohmann::json preset_fragment(const std::string& name);
 nlohmann::json preset_fragment(const std::string& name, bool bf16_units);
 // `config` with the fragment of its "preset" (if any) merged under it; errors name the key.
 nlohmann::json apply_preset(const nlohmann::json& config);
 // For run.json: {"name", "variant": "every processor" | "without bf16 units", "reason"} of a
-// resolved config's preset on this processor; null without a preset.
+// resolved config's preset on its device; null without a preset.
 nlohmann::json preset_record(const nlohmann::json& resolved);
 
 }  // namespace ppsynth

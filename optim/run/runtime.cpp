@@ -78,15 +78,70 @@ DeviceRequest parse_device(const nlohmann::json& v) {
 
 }  // namespace
 
-nlohmann::json runtime_defaults() { return {{"device", "cpu"}, {"tf32", false}, {"deterministic", true}}; }
+nlohmann::json runtime_defaults() { return {{"device", "cpu"}, {"tf32", nullptr}, {"deterministic", true}}; }
 
-void check_runtime(const nlohmann::json& runtime) { parse_device(runtime.at("device")); }
+void check_runtime(const nlohmann::json& runtime) {
+  parse_device(runtime.at("device"));
+  const auto& tf32 = runtime.at("tf32");
+  if (!tf32.is_boolean() && !tf32.is_null() && tf32 != "auto")
+    throw config_error("runtime.tf32", "expected true, false, or null or \"auto\" (the device decides), got " + tf32.dump());
+  if (!runtime.at("deterministic").is_boolean())
+    throw config_error("runtime.deterministic", "expected true or false, got " + runtime["deterministic"].dump());
+}
+
+DeviceCapabilities capabilities_of_device(const nlohmann::json& device) {
+  const DeviceRequest request = parse_device(device);
+  if (request.kind == DeviceRequest::Kind::cpu) return cpu_capabilities();
+  if (!torch::cuda::is_available()) {
+    if (request.kind == DeviceRequest::Kind::automatic) return cpu_capabilities();
+    DeviceCapabilities unseen;
+    unseen.cuda = true;
+    unseen.name = device.get<std::string>() + " (not visible to this process)";
+    return unseen;
+  }
+  return cuda_capabilities(request.index);
+}
+
+DeviceDecision decide_device_settings(const DeviceCapabilities& device, const nlohmann::json& tf32, bool deterministic) {
+  DeviceDecision d;
+  if (!device.cuda) {
+    d.tf32_reason = "the CPU: no TF32";
+    d.autotune_reason = "the CPU: no cuDNN";
+    return d;
+  }
+  if (tf32.is_null() || tf32 == "auto") {
+    d.tf32 = device.tf32();
+    d.tf32_reason = d.tf32 ? "auto: the TF32 tensor cores of " + device.describe()
+                           : "auto: no TF32 tensor cores known on " + device.describe() + " (they start at compute capability 8.0)";
+  } else {
+    d.tf32 = tf32.get<bool>();
+    d.tf32_reason = std::string(d.tf32 ? "on" : "off") + " as configured (runtime.tf32)";
+  }
+  d.autotune = !deterministic;
+  d.autotune_reason = deterministic ? "off: runtime.deterministic asks for the same bits on every run, and autotuning "
+                                      "may pick another algorithm each time"
+                                    : "on: runtime.deterministic is false, so cuDNN times its algorithms and keeps the fastest";
+  return d;
+}
+
+nlohmann::json DeviceDecision::record(const DeviceCapabilities& device) const {
+  nlohmann::json r = {{"device", device.describe()},
+                      {"tf32", tf32},
+                      {"tf32_reason", tf32_reason},
+                      {"cudnn_autotune", autotune},
+                      {"cudnn_autotune_reason", autotune_reason}};
+  if (device.memory_bytes > 0) r["memory_mib"] = static_cast<int64_t>(device.memory_bytes / (1 << 20));
+  return r;
+}
 
 DeviceSettings apply_device_settings(const nlohmann::json& runtime) {
   const DeviceRequest request = parse_device(runtime.at("device"));
   DeviceSettings s;
   const bool cuda = torch::cuda::is_available();
-  if (request.kind == DeviceRequest::Kind::cpu || (request.kind == DeviceRequest::Kind::automatic && !cuda)) return s;
+  if (request.kind == DeviceRequest::Kind::cpu || (request.kind == DeviceRequest::Kind::automatic && !cuda)) {
+    set_synthesis_device({cpu_capabilities(), "{}"});
+    return s;
+  }
   const std::string asked = "\"" + runtime["device"].get<std::string>() + "\"";
   if (!cuda)
     throw config_error("runtime.device", asked + " asks for a CUDA device, and this process sees none (a LibTorch built "
@@ -96,14 +151,18 @@ DeviceSettings apply_device_settings(const nlohmann::json& runtime) {
     throw config_error("runtime.device", asked + ": this process sees " + std::to_string(count) + " CUDA device" +
                                              (count == 1 ? " (cuda:0)" : "s (cuda:0 to cuda:" + std::to_string(count - 1) + ")"));
   s.device = "cuda:" + std::to_string(request.index);
-  s.tf32 = runtime.at("tf32").get<bool>();
+  check_runtime(runtime);
   s.deterministic = runtime.at("deterministic").get<bool>();
+  const DeviceCapabilities caps = cuda_capabilities(request.index);
+  const DeviceDecision decision = decide_device_settings(caps, runtime.at("tf32"), s.deterministic);
+  s.tf32 = decision.tf32;
+  set_synthesis_device({caps, decision.record(caps).dump()});
   auto& context = at::globalContext();
   // The legacy switches exist in every LibTorch from 1.13 on (2.9 and later print a notice
   // that finer ones exist); one family only, as mixing them is refused.
   context.setAllowTF32CuBLAS(s.tf32);
-  context.setAllowTF32CuDNN(s.tf32);  // LibTorch's default is on: IEEE float32 unless asked
-  context.setBenchmarkCuDNN(!s.deterministic);
+  context.setAllowTF32CuDNN(s.tf32);  // set either way: LibTorch's default is on
+  context.setBenchmarkCuDNN(decision.autotune);
   context.setDeterministicCuDNN(s.deterministic);
   // cuBLAS is deterministic with a fixed workspace, read when its first handle is made; a
   // value the user set stays.

@@ -20,14 +20,22 @@
 //                  lives there; the baselines run on the CPU whatever it says.
 //   tf32           CUDA only: float32 convolutions and matrix products on TF32 tensor cores
 //                  (a 10-bit mantissa in the products; false keeps IEEE float32 there too).
+//                  null (the default) or "auto": the device decides: on where it has them
+//                  (compute capability 8.0 and later), as PyTorch's own convolutions default to.
 //   deterministic  CUDA only: cuDNN's deterministic algorithms without autotuning, and
-//                  LibTorch's deterministic scatter/index_add, so the same config and seed
-//                  give the same output (false: the fastest algorithms, which may differ in
-//                  the last bits from run to run). On the CPU every run is deterministic
-//                  given the thread count.
+//                  LibTorch's deterministic algorithms (the Gabor maps' backward then sums
+//                  per point by a gather instead of atomics, models/per_point_sum.hpp), so
+//                  the same config and seed give the same output. false: cuDNN autotuning
+//                  (it times its algorithms and keeps the fastest, which may differ from run
+//                  to run in the last bits). On the CPU every run is deterministic given the
+//                  thread count.
+// What was chosen and why (decide_device_settings, a pure function of the device's
+// capabilities) goes into run.json's method_stats.runtime.choices.
 #include <string>
 
 #include <nlohmann/json.hpp>
+
+#include "models/device_capabilities.hpp"
 
 namespace ppsynth {
 
@@ -54,9 +62,25 @@ struct DeviceSettings {
   bool deterministic = true;   // applied (CUDA only; the CPU always is)
 };
 
-// {"device": "cpu", "tf32": false, "deterministic": true}: the run config's "runtime".
+// The settings a CUDA device gets, and why: TF32 from runtime.tf32 (true, false, or null or
+// "auto") and the device; cuDNN autotuning exactly when runtime.deterministic is false (autotuning
+// may pick another algorithm on each run, and so other bits).
+struct DeviceDecision {
+  bool tf32 = false;
+  bool autotune = false;
+  std::string tf32_reason, autotune_reason;
+  nlohmann::json record(const DeviceCapabilities& device) const;  // run.json's runtime.choices
+};
+DeviceDecision decide_device_settings(const DeviceCapabilities& device, const nlohmann::json& tf32, bool deterministic);
+
+// The capabilities of a runtime.device value as this process resolves it ("auto": the first
+// CUDA device if it sees one): what a preset's variant is chosen by before the run starts. A
+// CUDA device this process cannot see has its capability unknown.
+DeviceCapabilities capabilities_of_device(const nlohmann::json& device);
+
+// {"device": "cpu", "tf32": null, "deterministic": true}: the run config's "runtime".
 nlohmann::json runtime_defaults();
-// Checks a resolved "runtime" object's values (config_error naming runtime.device), without
+// Checks a resolved "runtime" object's values (config_error naming the key), without
 // asking which devices this process has: a config can be resolved on a machine that will not
 // run it.
 void check_runtime(const nlohmann::json& runtime);

@@ -7,7 +7,9 @@
 #include <sstream>
 
 #include "core/checkpoint_file.hpp"
+#include "models/device_capabilities.hpp"
 #include "models/gabor_feature_maps.hpp"
+#include "models/network_precision.hpp"
 #include "models/point_tensor.hpp"
 #include "optim/steps/initializer.hpp"
 #include "optim/gabor/resolution/gabor_resolution.hpp"
@@ -277,11 +279,14 @@ PointSet GaborEngine::synthesized() const {
 
 json GaborEngine::runtime_record() const {
   const bool cuda = device_.is_cuda();
-  const std::string net = s_.feature_net.value("precision", "float32");
+  // "auto" as the device resolves it (models/network_precision.hpp)
+  const std::string net = resolve_network_precision(s_.feature_net.value("precision", "float32"), "method.feature_net.precision").name;
   json r = {{"device", device_.str()},
             // the network's arithmetic: bfloat16 as the net asks, else float32, on TF32 tensor cores where runtime.tf32 applies
             {"precision", net != "float32" ? net : (cuda && ctx_.tf32 ? "tf32" : "float32")},
             {"deterministic", cuda ? ctx_.deterministic : true}};
+  // what the device decided and why (optim/run/runtime.hpp's decide_device_settings)
+  if (cuda) r["choices"] = json::parse(synthesis_device().choices);
   const std::string rasterizer = p_["rasterizer"].value("type", "");
   if (rasterizer == "gabor" || rasterizer == "spatial")
     r["gabor_maps"] = gabor_maps_path_name(gabor_maps_path(GaborMapsPath::automatic, device_));

@@ -107,7 +107,9 @@ TEST_CASE("On CUDA, the same config and seed give the same output, twice", "[opt
 
 TEST_CASE("On CUDA, one evaluation's loss and gradient equal the CPU's within float32 rounding", "[optim][device][cuda]") {
   if (!cuda_here()) return;
-  apply_device_settings(runtime("cuda"));  // IEEE float32 (no TF32), deterministic
+  json ieee = runtime("cuda");
+  ieee["tf32"] = false;  // IEEE float32: on a card with TF32 the device would take it
+  apply_device_settings(ieee);  // deterministic
   const PointSet ex = test::small_exemplar(1, false);
   json p = test::method_params(json{{"type", "gabor"}, {"jitter", false}});
   p["grid"]["res"] = 32;
@@ -147,7 +149,8 @@ TEST_CASE("A two-class rectangle output with separation and class_own runs on ea
       INFO(device << ", " << precision);
       // A window budget below the canvas's grid positions: several windows (one grid would hold it).
       const std::vector<std::string> sets = {"output.size=[3,1]", "method.window.pixels=40", "method.window.margin=0.3", "method.terms.separation.weight=1",
-                                             "method.map_terms.class_own.weight=1", "method.feature_net.precision=" + precision};
+                                             "method.map_terms.class_own.weight=1", "method.feature_net.precision=" + precision,
+                                             "runtime.tf32=false"};  // float32 as named, not TF32 where the card has it
       const auto a = quick_run(device, sets, ex), b = quick_run(device, sets, ex);
       CHECK(a.stats.at("runtime").at("device") == (device == "cuda" ? "cuda:0" : "cpu"));
       CHECK(a.stats.at("runtime").at("precision") == precision);
