@@ -20,7 +20,7 @@
 // Two implementations of the same sum and backward (GaborMapsPath): a CPU kernel (threads
 // over grid positions, nanoflann's k-NN), and LibTorch operations that run where the tensors
 // are, a CUDA device included (gather the k neighbors, exp and cos on res^2 x k values per
-// channel, the backward scattered with index_add; the k-NN by brute force on that device,
+// channel, the backward summed per point, models/per_point_sum.hpp; the k-NN by brute force on that device,
 // res^2 x N distances in chunks). tests/models/test_gabor_maps_paths.cpp holds them equal on
 // the CPU. PPSYNTH_GABOR_MAPS=tensor_ops makes CPU tensors take the operations too, so the
 // whole test suite can run the arithmetic a CUDA run takes on a machine without one. Sigma is given in exemplar units and divided by u (the output is the

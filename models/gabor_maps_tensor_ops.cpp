@@ -3,15 +3,16 @@
 // analytic backward as the CPU kernel in gabor_feature_maps.cpp, organized for a device
 // instead of a thread: the k neighbors of every grid position are gathered once into
 // res^2 x k offsets, each channel is a few element-wise operations over them, and the
-// backward scatters the per-neighbor gradients into the points with one index_add (whose
-// CUDA implementation is deterministic when deterministic algorithms are on, as a CUDA run
-// sets them: optim/run/runtime.hpp). Memory: a few res^2 x k tensors at a time, not
+// backward sums the per-neighbor gradients into the points (models/per_point_sum.hpp: one
+// index_add, or, on CUDA in a deterministic run, a gather over the inverse neighbor list,
+// which is deterministic without LibTorch's slow deterministic index_add). Memory: a few res^2 x k tensors at a time, not
 // res^2 x k x C; nothing but the inputs is kept for the backward, which gathers again.
 #include <algorithm>
 #include <vector>
 
 #include "models/gabor_feature_maps.hpp"
 #include "models/gabor_maps_params.hpp"
+#include "models/per_point_sum.hpp"
 
 namespace ppsynth {
 
@@ -104,7 +105,7 @@ class GaborMapsTensorOpsFunction : public torch::autograd::Function<GaborMapsTen
     }
     const double inv_s2 = 1.0 / (mp.sigma * mp.sigma);
     const auto gx = -(radial * n.dx * inv_s2 + along_x * w2pi), gy = -(radial * n.dy * inv_s2 + along_y * w2pi);
-    auto gpts = torch::zeros_like(P).index_add_(0, idx.reshape({-1}), torch::stack({gx, gy}, 2).view({-1, 2}));
+    auto gpts = sum_per_point(torch::stack({gx, gy}, 2).view({-1, 2}), idx.reshape({-1}), P.size(0));
     return {gpts, torch::Tensor(), torch::Tensor(), torch::Tensor(), torch::Tensor()};
   }
 };

@@ -31,6 +31,7 @@
 #include "core/config/config.hpp"
 #include "core/processor.hpp"
 #include "models/gabor_feature_maps.hpp"
+#include "models/per_point_sum.hpp"
 #include "models/network_precision.hpp"
 #include "models/point_tensor.hpp"
 #include "optim/gabor/pipeline/gabor_pipeline.hpp"
@@ -233,6 +234,13 @@ PhaseTimes time_phases(Subject& b, int reps, std::mt19937_64& rng) {
                         for (auto& x : feats) f.push_back(x.detach().clone().set_requires_grad(true));
                         term.loss->forward(f).backward();
                       })});
+  }
+  {  // the maps' backward's last step both ways (models/per_point_sum.hpp): a deterministic CUDA run gathers
+    const auto idx = (b.device.is_cpu() ? grid_knn(pts, grid, b.s.k) : grid_knn_tensor_ops(pts, grid, b.s.k)).reshape({-1});
+    const auto values = torch::rand({idx.size(0), 2}, pts.options());
+    for (const auto& [name, method] : {std::pair{"maps backward's per-point sum, index_add", PointSumMethod::scatter},
+                                       std::pair{"maps backward's per-point sum, gather", PointSumMethod::gather}})
+      phases.push_back({name, time_it(reps, [&, method = method] { sum_per_point(values, idx, pts.size(0), method); })});
   }
   t.full = time_it(reps, [&] {
     if (b.moving.grad().defined()) b.moving.grad().zero_();
