@@ -11,11 +11,15 @@
 #include <cctype>
 #include <cerrno>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <deque>
 #include <filesystem>
 #include <map>
 #include <thread>
+
+#include <torch/cuda.h>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
@@ -23,6 +27,7 @@
 #include "core/run_directory.hpp"
 #include "core/shell_quote.hpp"
 #include "optim/run/checkpoint_store.hpp"
+#include "models/device_capabilities.hpp"
 #include "optim/run/runtime.hpp"
 #include "experiments/execute/sweep_runs.hpp"
 
@@ -34,22 +39,52 @@ namespace ppsynth {
 
 namespace {
 
-// The environment of this process with PPSYNTH_THREADS set to `threads`.
-std::vector<std::string> task_environment(int threads) {
+// The environment of this process with PPSYNTH_THREADS set to `threads`, and the one card a
+// task sees (card >= 0: CUDA_VISIBLE_DEVICES as this process numbers them).
+std::vector<std::string> task_environment(int threads, int card) {
   std::vector<std::string> env;
+  const char* visible = std::getenv("CUDA_VISIBLE_DEVICES");
   for (char** e = environ; *e; ++e)
-    if (std::strncmp(*e, "PPSYNTH_THREADS=", 16) != 0) env.emplace_back(*e);
+    if (std::strncmp(*e, "PPSYNTH_THREADS=", 16) != 0 && (card < 0 || std::strncmp(*e, "CUDA_VISIBLE_DEVICES=", 21) != 0))
+      env.emplace_back(*e);
   env.push_back("PPSYNTH_THREADS=" + std::to_string(threads));
+  if (card >= 0) {
+    // The card as the user's own list names it, when they set one.
+    std::vector<std::string> listed;
+    for (std::string v = visible ? visible : ""; !v.empty();) {
+      const size_t comma = v.find(',');
+      listed.push_back(v.substr(0, comma));
+      v = comma == std::string::npos ? "" : v.substr(comma + 1);
+    }
+    env.push_back("CUDA_VISIBLE_DEVICES=" + (card < static_cast<int>(listed.size()) ? listed[card] : std::to_string(card)));
+  }
   return env;
 }
 
-// Threads per task: --threads, else the user's PPSYNTH_THREADS, else the cores split between
-// the tasks.
-int task_threads(const LocalExecution& how) {
-  if (how.threads > 0) return how.threads;
-  if (const int user = threads_from_environment(); user > 0) return user;
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  return std::max(1, cores / how.jobs);
+// Whether a row's runtime.device is a CUDA device here, and whether it may be any card.
+void note_device(const SweepRow& row, bool cuda_here, LocalWork& work) {
+  const nlohmann::json rt = row.config.value("runtime", nlohmann::json::object());
+  const std::string device = rt.is_object() && rt.contains("device") && rt["device"].is_string() ? rt["device"].get<std::string>() : "cpu";
+  const bool cuda = device.rfind("cuda", 0) == 0 || (device == "auto" && cuda_here);
+  if (!cuda) return;
+  work.on_cuda = true;
+  if (device != "cuda" && device != "cuda:0" && device != "auto") work.any_card = false;
+}
+
+LocalMachine this_machine() {
+  LocalMachine m;
+  m.cores = usable_cores();
+  m.env_threads = threads_from_environment();
+  if (torch::cuda::is_available())
+    for (int i = 0, n = static_cast<int>(torch::cuda::device_count()); i < n; ++i)
+      m.card_memory_bytes.push_back(cuda_capabilities(i).memory_bytes);
+  return m;
+}
+
+std::string gib(double bytes) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f GiB", bytes / (1024.0 * 1024 * 1024));
+  return buf;
 }
 
 // A value as an error message shows it: on one line, control characters escaped.
@@ -98,23 +133,78 @@ pid_t spawn_task(const LocalExecution& how, const std::string& sweep_dir, const 
 
 }  // namespace
 
+LocalSlots plan_local_slots(const LocalExecution& how, const LocalMachine& machine, const LocalWork& work) {
+  LocalSlots s;
+  const int cores = std::max(1, machine.cores);
+  const int cards = static_cast<int>(machine.card_memory_bytes.size());
+  if (!work.on_cuda || cards == 0) {
+    s.jobs = how.jobs > 0 ? how.jobs : 1;
+    s.reason = how.jobs > 0 ? "-j " + std::to_string(how.jobs) : "one at a time (-j sets more)";
+  } else {
+    // Every card takes the same count: the smallest card's room, at most its share of the
+    // cores (each run keeps a core busy launching its kernels).
+    const double smallest = *std::min_element(machine.card_memory_bytes.begin(), machine.card_memory_bytes.end());
+    const int core_share = std::max(1, cores / cards);
+    if (how.runs_per_device > 0) {
+      s.runs_per_device = how.runs_per_device;
+      s.reason = std::to_string(s.runs_per_device) + " per card as asked";
+    } else if (smallest > 0 && work.run_memory_bytes > 0) {
+      // A tenth of the card kept free: LibTorch's allocator and cuDNN's workspaces.
+      const int fit = static_cast<int>(0.9 * smallest / work.run_memory_bytes);
+      s.runs_per_device = std::clamp(fit, 1, core_share);
+      s.reason = std::to_string(s.runs_per_device) + " per card: " + std::to_string(fit) + " runs of " + gib(work.run_memory_bytes) +
+                 " (the spec's resources.memory_mb) fit in 90 % of " + gib(smallest) + ", and " + std::to_string(cores) +
+                 " cores give each card " + std::to_string(core_share);
+    } else {
+      s.runs_per_device = 1;
+      s.reason = "1 per card: its memory is unknown";
+    }
+    s.jobs = how.jobs > 0 ? how.jobs : std::max<int>(1, static_cast<int>(std::min<size_t>(
+                                                            static_cast<size_t>(cards) * s.runs_per_device, std::max<size_t>(1, work.rows))));
+    s.reason += "; " + std::to_string(s.jobs) + " at once on " + std::to_string(cards) + " card" + (cards == 1 ? "" : "s");
+    if (cards > 1 && work.any_card)
+      for (int slot = 0; slot < s.jobs; ++slot) s.card_of_slot.push_back(slot % cards);
+  }
+  s.card_of_slot.resize(static_cast<size_t>(s.jobs), -1);
+  s.threads = how.threads > 0 ? how.threads : machine.env_threads > 0 ? machine.env_threads : std::max(1, cores / s.jobs);
+  return s;
+}
+
 ExecutionSummary execute_local(const std::string& sweep_dir, const LocalExecution& how, const std::atomic<bool>* stop) {
-  if (how.jobs < 1 || how.jobs > 1024) throw InputError("-j " + std::to_string(how.jobs) + ": expected 1 to 1024 tasks at once");
+  if (how.jobs < 0 || how.jobs > 1024) throw InputError("-j " + std::to_string(how.jobs) + ": expected 1 to 1024 tasks at once");
+  if (how.runs_per_device < 0 || how.runs_per_device > 1024)
+    throw InputError("--runs-per-device " + std::to_string(how.runs_per_device) + ": expected 1 to 1024");
   const SweepManifest m = load_sweep(sweep_dir);
   const SweepLock lock(sweep_dir, "run it");
   const std::string manifest = sweep_manifest_hash(m);
-  const int threads = task_threads(how);
-  const auto env = task_environment(threads);
   ExecutionSummary sum;
   std::deque<size_t> queue;
+  LocalWork work;
+  work.run_memory_bytes = m.resources.memory_mb * 1024.0 * 1024.0;
+  const LocalMachine machine = this_machine();
   for (const auto& s : sweep_status(sweep_dir, m)) {
     const size_t i = static_cast<size_t>(s.row - m.rows.data());
-    if (s.state == RowState::Done || s.state == RowState::Running) ++sum.skipped;
-    else queue.push_back(i);
+    if (s.state == RowState::Done || s.state == RowState::Running) {
+      ++sum.skipped;
+    } else {
+      queue.push_back(i);
+      note_device(m.rows[i], !machine.card_memory_bytes.empty(), work);
+    }
   }
-  spdlog::info("sweep {}: {} runs to do, {} done or running; {} at once, {} thread{} each", m.name, queue.size(),
-               sum.skipped, how.jobs, threads, threads == 1 ? "" : "s");
-  std::map<pid_t, std::pair<size_t, std::chrono::steady_clock::time_point>> running;
+  work.rows = queue.size();
+  const LocalSlots slots = plan_local_slots(how, machine, work);
+  const int threads = slots.threads;
+  spdlog::info("sweep {}: {} runs to do, {} done or running; {} at once ({}), {} thread{} each", m.name, queue.size(),
+               sum.skipped, slots.jobs, slots.reason, threads, threads == 1 ? "" : "s");
+  std::vector<std::vector<std::string>> env_of_slot;
+  for (int card : slots.card_of_slot) env_of_slot.push_back(task_environment(threads, card));
+  std::vector<bool> slot_busy(static_cast<size_t>(slots.jobs), false);
+  struct Running {
+    size_t row;
+    std::chrono::steady_clock::time_point started;
+    size_t slot;
+  };
+  std::map<pid_t, Running> running;
   bool stopping = false;
   auto stop_all = [&] {
     if (stopping) return;
@@ -124,11 +214,13 @@ ExecutionSummary execute_local(const std::string& sweep_dir, const LocalExecutio
   };
   while (!running.empty() || (!queue.empty() && !stopping)) {
     if (stop && stop->load()) stop_all();
-    while (!stopping && !queue.empty() && static_cast<int>(running.size()) < how.jobs) {
+    while (!stopping && !queue.empty() && static_cast<int>(running.size()) < slots.jobs) {
       const size_t i = queue.front();
       queue.pop_front();
+      const size_t slot = static_cast<size_t>(std::find(slot_busy.begin(), slot_busy.end(), false) - slot_busy.begin());
+      slot_busy[slot] = true;
       const std::string log = (fs::path(sweep_dir) / "logs" / (m.rows[i].id + ".log")).string();
-      running[spawn_task(how, sweep_dir, m.rows[i].id, manifest, log, env)] = {i, std::chrono::steady_clock::now()};
+      running[spawn_task(how, sweep_dir, m.rows[i].id, manifest, log, env_of_slot[slot])] = {i, std::chrono::steady_clock::now(), slot};
     }
     if (running.empty()) break;
     int status = 0;
@@ -139,7 +231,8 @@ ExecutionSummary execute_local(const std::string& sweep_dir, const LocalExecutio
     }
     auto it = running.find(pid);
     if (it == running.end()) continue;
-    const auto [i, started] = it->second;
+    const auto [i, started, slot] = it->second;
+    slot_busy[slot] = false;
     running.erase(it);
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);

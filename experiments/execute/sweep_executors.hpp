@@ -7,7 +7,11 @@
 //          second executor or a re-plan is refused meanwhile), the cores split between them
 //          (PPSYNTH_THREADS per task, unless the user set it), each in its own process group
 //          so that Ctrl-C reaches only the executor, which stops every task with SIGTERM (each
-//          checkpoints).
+//          checkpoints). Rows that run on a CUDA device share the cards: several runs per
+//          card at once (a small synthesis leaves most of a card idle), as many as the card's
+//          memory holds at the spec's per-task memory (resources.memory_mb), at most its
+//          share of the cores; with several cards each task gets one (CUDA_VISIBLE_DEVICES).
+//          plan_local_slots decides, from what the machine has (a pure function).
 //   slurm  an sbatch job-array script written into the sweep directory and submitted: the
 //          array index picks the row's id from a list in the script; --requeue and a SIGTERM
 //          ahead of the time limit let a preempted or timed-out task checkpoint and resume
@@ -23,9 +27,30 @@ namespace ppsynth {
 
 struct LocalExecution {
   std::string binary;   // the ppsynth executable that runs `sweep task`
-  int jobs = 1;         // tasks at once
+  int jobs = 0;         // tasks at once; 0: 1 on the CPU, the cards' room (plan_local_slots) for CUDA rows
   int threads = 0;      // per task; 0 = PPSYNTH_THREADS when set, else the machine's cores / jobs (at least 1)
+  int runs_per_device = 0;  // CUDA rows: runs at once on each card; 0: as many as its memory holds
 };
+
+// What the executor sees of the machine and the rows left to run.
+struct LocalMachine {
+  int cores = 1;
+  int env_threads = 0;                     // PPSYNTH_THREADS as the user set it; 0 unset
+  std::vector<double> card_memory_bytes;   // one per CUDA card this process sees (0: unknown)
+};
+struct LocalWork {
+  size_t rows = 0;             // rows to run
+  bool on_cuda = false;        // some row runs on a CUDA device (runtime.device cuda, cuda:N, or auto here)
+  bool any_card = true;        // every CUDA row names "cuda", "cuda:0" or "auto": a task may be given any card
+  double run_memory_bytes = 0; // a run's memory (the spec's resources.memory_mb)
+};
+struct LocalSlots {
+  int jobs = 1, threads = 1;
+  int runs_per_device = 0;        // CUDA rows: runs at once per card; 0 on the CPU
+  std::vector<int> card_of_slot;  // per slot, the card its tasks see alone (CUDA_VISIBLE_DEVICES); -1: no change
+  std::string reason;             // what the log says
+};
+LocalSlots plan_local_slots(const LocalExecution& how, const LocalMachine& machine, const LocalWork& work);
 
 struct ExecutionSummary {
   size_t done = 0, failed = 0, interrupted = 0, skipped = 0;  // skipped: done or running already

@@ -25,7 +25,7 @@ struct Opts {
   std::string spec, dir, partition, account, row, manifest;
   std::vector<std::string> sbatch_options;
   bool local = false, slurm = false, dry_run = false, json = false;
-  int jobs = 1, threads = 0, cpus = 0, memory_mb = 0, time_minutes = 0, max_parallel = 0;
+  int jobs = 0, runs_per_device = 0, threads = 0, cpus = 0, memory_mb = 0, time_minutes = 0, max_parallel = 0;
 };
 
 std::string self_binary() { return fs::read_symlink("/proc/self/exe").string(); }
@@ -74,6 +74,7 @@ int run(const Opts& o) {
     how.binary = self_binary();
     how.jobs = o.jobs;
     how.threads = o.threads;
+    how.runs_per_device = o.runs_per_device;
     const ExecutionSummary s = execute_local(o.dir, how, app::stop_flag());
     std::printf("sweep %s: %zu done now, %zu failed, %zu interrupted, %zu done or running before\n", o.dir.c_str(), s.done,
                 s.failed, s.interrupted, s.skipped);
@@ -130,7 +131,12 @@ app::RunFn setup(CLI::App& cmd) {
   auto* r = cmd.add_subcommand("run", "run the sweep's runs that are not done");
   r->add_option("dir", o->dir, "sweep directory")->required()->check(app::path_text());
   r->add_flag("--local", o->local, "run here, -j tasks at once");
-  r->add_option("-j,--jobs", o->jobs, "tasks at once (--local)")->check(app::whole_number(1, 1024));
+  r->add_option("-j,--jobs", o->jobs, "tasks at once (--local; default: 1, or for rows on CUDA the cards' room)")
+      ->check(app::whole_number(1, 1024));
+  r->add_option("--runs-per-device", o->runs_per_device,
+                "rows on CUDA: runs at once per card (--local; default: as many as its memory holds at resources.memory_mb, "
+                "at most its share of the cores)")
+      ->check(app::whole_number(1, 1024));
   r->add_option("--threads", o->threads, "threads per task (--local; default: PPSYNTH_THREADS, else cores / jobs)")
       ->check(app::whole_number(1, 1024));
   r->add_flag("--slurm", o->slurm, "submit a SLURM job array, one task per run");
