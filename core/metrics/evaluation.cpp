@@ -144,6 +144,20 @@ class Progress {
   std::chrono::steady_clock::time_point t0_;
 };
 
+// The permutation verdict's p and outcome beside each fidelity row of the same scope: two
+// readings of one question, the test's and the calibrated distance's.
+void verdict_beside_fidelity(const json& verdict, json& fidelity) {
+  for (auto& row : fidelity["rows"])
+    for (const auto& v : verdict["rows"]) {
+      const std::string kind = row["row"].get<std::string>();
+      if (v["row"] != kind) continue;
+      if ((kind == "class" && v["class"] != row["class"]) || (kind == "pair" && (v["ci"] != row["ci"] || v["cj"] != row["cj"])))
+        continue;
+      row["verdict_p"] = v["p"];
+      row["verdict_outcome"] = v["outcome"];
+    }
+}
+
 json overlap_json(const PointSet& ps, bool periodic) {
   json a = json::array();
   for (const auto& o : disk_overlaps(ps, periodic))
@@ -171,6 +185,7 @@ void check_eval_options(const EvalOptions& opt) {
   if (opt.verdict) check_verdict_options(opt.verdict_options);
   if (opt.scorecard) {
     check_novelty_options(opt.novelty);
+    check_fidelity_options(opt.fidelity);
     check_periodicity_options(opt.periodicity);
   }
   if (opt.spectrum && (opt.spectrum_frequency < 1 || opt.spectrum_frequency > kMaxPeriodogramFrequencies))
@@ -265,8 +280,9 @@ json evaluate(const PointSet& exemplar, const PointSet& output_as_read, const Ev
     r["second_order"] = second_order_report(exemplar, output, plan.zoom, opt.include_curves);
   }
   if (opt.scorecard) {
-    progress("scorecard: novelty, periodicity, close pairs");
+    progress("scorecard: novelty, fidelity, periodicity, close pairs");
     r["scorecard"] = {{"novelty", novelty_report(exemplar, output, plan.zoom, opt.novelty)},
+                      {"fidelity", fidelity_report(exemplar, output, plan.zoom, opt.fidelity)},
                       {"periodicity", periodicity_report(exemplar, output, plan.zoom, opt.periodicity)},
                       {"close_pairs", close_pairs_report(exemplar, output, plan.zoom)},
                       {"border", border_line(r)}};
@@ -276,6 +292,7 @@ json evaluate(const PointSet& exemplar, const PointSet& output_as_read, const Ev
     VerdictOptions v = opt.verdict_options;
     v.zoom = plan.zoom;
     r["verdict"] = verdict(exemplar, output, v);
+    if (r.contains("scorecard")) verdict_beside_fidelity(r["verdict"], r["scorecard"]["fidelity"]);
   }
   r["options"] = {{"bins", opt.pcf.bins},
                   {"r_max_factor", opt.pcf.r_max_factor},

@@ -49,6 +49,9 @@
 //   "verdict": the two-sample test per row, "is the output a plausible realization of the
 //              exemplar's process?" (verdict.hpp; unless verdict is false)
 //   "scorecard": { "novelty": is the output a translated copy of the exemplar (novelty.hpp),
+//              "fidelity": per row its L and g distances in spreads of independent
+//              realizations, within the band or not (fidelity.hpp; each row with the
+//              verdict's "verdict_p" and "verdict_outcome" beside it when the verdict ran),
 //              "periodicity": does it repeat with the exemplar's period (periodicity.hpp),
 //              "close_pairs": its closest pairs against the exemplar's (close_pairs.hpp),
 //              "border": { "measures", "band", "exemplar", "output" } the border profiles
@@ -72,6 +75,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/metrics/eval_protocol.hpp"
+#include "core/metrics/fidelity.hpp"
 #include "core/metrics/novelty.hpp"
 #include "core/metrics/pcf.hpp"
 #include "core/metrics/periodicity.hpp"
@@ -95,8 +99,9 @@ struct EvalOptions {
   bool second_order = true;  // K, L, g, mark correlation (second_order_report.hpp)
   bool verdict = true;       // the two-sample test (verdict.hpp); its zoom is `zoom`'s
   VerdictOptions verdict_options;
-  bool scorecard = true;  // novelty, periodicity, close pairs, border (novelty.hpp, periodicity.hpp, close_pairs.hpp), at `zoom`'s scale
+  bool scorecard = true;  // novelty, fidelity, periodicity, close pairs, border (novelty.hpp, fidelity.hpp, periodicity.hpp, close_pairs.hpp), at `zoom`'s scale
   NoveltyOptions novelty;
+  FidelityOptions fidelity;
   PeriodicityOptions periodicity;
 };
 
@@ -104,8 +109,8 @@ struct EvalOptions {
 // flag): bins outside 2..10000, r_max outside [0, 1] (radii reach 2.5 r_max: beyond 1 every
 // pair is within reach and the PCF turns quadratic; NaN too), an exact-Wasserstein limit
 // outside 1..4e8 pairs (a 3.2 GB cost matrix), a crop count outside 1..10000, a protocol
-// that is not one of the enum's, a spectrum frequency outside 1..1024, novelty and periodicity
-// options outside novelty.hpp's and periodicity.hpp's ranges. evaluate() calls it first.
+// that is not one of the enum's, a spectrum frequency outside 1..1024, novelty, fidelity and
+// periodicity options outside novelty.hpp's, fidelity.hpp's and periodicity.hpp's ranges. evaluate() calls it first.
 void check_eval_options(const EvalOptions& opt);
 
 nlohmann::json evaluate(const PointSet& exemplar, const PointSet& output,

@@ -190,11 +190,50 @@ void write_border(std::ostream& os, const json& b) {
   os << " (> 1 points piled on the edge, < 1 a thin seam)\n";
 }
 
-// The scorecard: novelty (and diversity), periodicity, border, then the close pairs per row.
+// The fidelity rows (fidelity.hpp): each distance in spreads against its band, the
+// permutation verdict's p beside it.
+void write_fidelity(std::ostream& os, const json& f) {
+  os << "  fidelity: L (sup, mean spacings) and g (rms) distances in spreads, the median distance independent\n"
+        "  realizations of the output's size show (from "
+     << f["windows"].get<int>() << " random exemplar sub-windows of " << cell(f["side"], "%g")
+     << " its sides); within band: up to " << cell(f["band"], "%g") << " spreads";
+  if (f.contains("nominal_rate") && f["nominal_rate"].is_number())
+    os << ", which " << cell(json(100 * f["nominal_rate"].get<double>()), "%g")
+       << " % of independent realizations exceed per distance";
+  os << "\n";
+  os << "                     L distance  spreads   band   g distance  spreads   band  reading       verdict p\n";
+  for (const auto& row : f["rows"]) {
+    const std::string name = row.value("name", std::string("?"));
+    const std::string reading = row["within"].is_null() ? "cannot judge" : row["within"].get<bool>() ? "within band" : "OUT OF BAND";
+    std::string p = "-";
+    if (row.contains("verdict_p") && row["verdict_p"].is_number())
+      p = cell(row["verdict_p"], "%.4f") + " " + (row.value("verdict_outcome", std::string()) == "pass" ? "pass" : "FAIL");
+    else if (row.contains("verdict_outcome"))
+      p = row["verdict_outcome"].get<std::string>();
+    auto part = [&](const char* key) {
+      if (!row.contains(key)) return line("%11s %8s %6s", "-", "-", "-");
+      const json& m = row[key];
+      return line("%11s %8s %6s", cell(m["distance"], "%.4f").c_str(), cell(m["spreads"], "%.2f").c_str(), cell(m["band"], "%.2f").c_str());
+    };
+    const char* first = row["row"] == "mark" ? "kmm" : "l";
+    os << line("  %-18s %s %s  %-12s  %s\n", name.c_str(), part(first).c_str(), part("g").c_str(), reading.c_str(), p.c_str());
+    if (row.contains("reason")) os << "      " << row["reason"].get<std::string>() << "\n";
+  }
+  const size_t n = f["rows"].size();
+  if (f["within"].is_null())
+    os << "  fidelity: cannot judge (" << f.value("cannot_judge", size_t(0)) << " of " << n << " rows; none out of band)\n";
+  else if (f["within"].get<bool>())
+    os << "  fidelity: within band (every row)\n";
+  else
+    os << "  fidelity: OUT OF BAND (" << f.value("out_of_band", size_t(0)) << " of " << n << " rows)\n";
+}
+
+// The scorecard: novelty (and diversity), fidelity, periodicity, border, then the close pairs per row.
 void write_scorecard(std::ostream& os, const json& sc) {
   os << "\nscorecard (docs/explanation/scorecard.md: what each line measures, its false-alarm rate)\n";
   if (sc.contains("novelty")) write_match(os, "novelty", sc["novelty"], "the periodic exemplar");
   if (sc.contains("diversity")) write_match(os, "diversity", sc["diversity"], "the other output");
+  if (sc.contains("fidelity")) write_fidelity(os, sc["fidelity"]);
   if (sc.contains("periodicity")) write_periodicity(os, sc["periodicity"]);
   if (sc.contains("border")) write_border(os, sc["border"]);
   if (!sc.contains("close_pairs")) return;

@@ -149,6 +149,21 @@ std::vector<std::pair<std::string, double>> metric_values(const nlohmann::json& 
         r.add("all/periodic", value, "v", "scorecard.periodicity.periodic");
       }
     }
+    // Fidelity (fidelity.hpp): per row each distance in spreads, and within band (1/0: the
+    // mean over seeds is the share of seeds within); mark rows in scope "all" by attribute.
+    rows_of(*sc, "fidelity", "scorecard.fidelity", [&](const std::string& scope, const nlohmann::json& row, const std::string& k) {
+      const bool mark = row.contains("row") && row["row"] == "mark";
+      const std::string at = mark && row.contains("attribute") && row["attribute"].is_string()
+                                 ? "_" + row["attribute"].get<std::string>()
+                                 : std::string();
+      for (const char* d : {"l", "g", "kmm"})
+        if (const auto* m = r.object(row, d, k + "." + d)) r.add(scope + "/fidelity_" + d + at + "_spreads", *m, "spreads", k + "." + d);
+      if (row.contains("within") && !row["within"].is_null()) {
+        if (!row["within"].is_boolean()) r.refuse(k + ".within", "expected true, false or null");
+        const nlohmann::json value = {{"v", row["within"].get<bool>() ? 1.0 : 0.0}};
+        r.add(scope + "/fidelity_within" + at, value, "v", k + ".within");
+      }
+    });
     rows_of(*sc, "close_pairs", "scorecard.close_pairs", [&](const std::string& scope, const nlohmann::json& row, const std::string& k) {
       r.add(scope + "/close_pair_share", row, "share_below", k);
       r.add(scope + "/min_distance_normalized", row, "output_normalized", k);

@@ -6,7 +6,8 @@
 // disk overlaps, border share; spatstat's K, L, g and mark correlations in exemplar units
 // (core/metrics/second_order_report.hpp) and the verdict, a p-value per row for "is the output
 // a plausible realization of the exemplar's process?" (core/metrics/verdict.hpp, docs/explanation/verdict.md),
-// and the scorecard: novelty (is it a copy of the exemplar?), periodicity (does it repeat with
+// and the scorecard: novelty (is it a copy of the exemplar?), fidelity (its L and g distances in
+// spreads of independent realizations, core/metrics/fidelity.hpp), periodicity (does it repeat with
 // the exemplar's period?), the border profile, close pairs, and with --diversity OTHER whether
 // it is a translate of another seed's output (core/metrics/novelty.hpp, periodicity.hpp,
 // close_pairs.hpp, docs/explanation/scorecard.md).
@@ -39,6 +40,7 @@ struct Args {
   ppsynth::VerdictOptions verdict;
   ppsynth::NoveltyOptions novelty;
   ppsynth::PeriodicityOptions periodicity;
+  ppsynth::FidelityOptions fidelity;
   int bins = 100;
   double r_max = 0, zoom = 0;
   size_t wasserstein_pairs = ppsynth::kWassersteinExactPairs;
@@ -89,13 +91,23 @@ ppsynth::app::RunFn setup(CLI::App& app) {
       ->capture_default_str()
       ->check(ppsynth::app::seed_number());
   app.add_option("--verdict-alpha", a->verdict.alpha, "verdict: a row passes when p >= alpha")->capture_default_str();
-  app.add_flag("--no-scorecard", a->no_scorecard, "leave out the scorecard (novelty: is the output a copy?; periodicity; border; close pairs)");
+  app.add_flag("--no-scorecard", a->no_scorecard, "leave out the scorecard (novelty: is the output a copy?; fidelity; periodicity; border; close pairs)");
   app.add_option("--novelty-k", a->novelty.k, "scorecard: neighbours per neighbourhood compared, 1..64")->capture_default_str();
   app.add_option("--novelty-tolerance", a->novelty.tolerance,
                  "scorecard: a neighbourhood matches within this many exemplar mean nearest-neighbour distances, (0, 1]")
       ->capture_default_str();
   app.add_option("--novelty-copy-share", a->novelty.copy_share,
                  "scorecard: the output is flagged a copy when this share of its points match, (0, 1]")
+      ->capture_default_str();
+  app.add_option("--fidelity-band", a->fidelity.band,
+                 "scorecard: fidelity's band, in spreads (the median distance independent realizations show; the default "
+                 "leaves out 5 % of them per distance, as measured), [1, 100]")
+      ->capture_default_str();
+  app.add_option("--fidelity-windows", a->fidelity.windows,
+                 "scorecard: random exemplar sub-windows that estimate fidelity's spread, 16..4096")
+      ->capture_default_str();
+  app.add_option("--fidelity-side", a->fidelity.side,
+                 "scorecard: those sub-windows' sides, as a fraction of the exemplar's, [0.2, 0.8]")
       ->capture_default_str();
   app.add_option("--periodicity-harmonics", a->periodicity.harmonics,
                  "scorecard: harmonics of the exemplar's period compared along each axis, 1..64")
@@ -125,6 +137,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     opt.scorecard = !a->no_scorecard;
     opt.novelty = a->novelty;
     opt.periodicity = a->periodicity;
+    opt.fidelity = a->fidelity;
     if (!a->diversity.empty() && a->no_scorecard)
       throw ppsynth::InputError("--diversity is a line of the scorecard: it cannot go with --no-scorecard");
     ppsynth::check_eval_options(opt);  // before reading: a bad option is reported first
