@@ -9,8 +9,12 @@ Without --runs, it synthesizes each base config of configs/runs (one per shipped
 configs whose parent, if any, is a method fragment) into a scratch directory, `--quick` unless
 --preset is given (quick settings show the pipeline, not the method's quality). Each card shows
 the exemplar beside the output (the run's exemplar_vs_output.png), the point counts, PCF MSE,
-Wasserstein and Chamfer distance, spatstat-style verdict where the evaluation has one, and the
-settings it ran with. Pictures are embedded, so the page is one file to open or send.
+Wasserstein and Chamfer distance, the scorecard (novelty: is it a copy of the exemplar?;
+fidelity: its L and g distances in spreads of independent realizations, within the band or
+not; periodicity; close pairs; docs/explanation/scorecard.md) and the spatstat-style verdict
+where the evaluation has them, and the settings it ran with. A multi-class exemplar and its
+output are drawn once more class by class, each class on its own beside all together. Pictures
+are embedded, so the page is one file to open or send.
 
 The page is written whole or not at all; an existing file is replaced only with --force.
 """
@@ -84,6 +88,102 @@ def measure(a, key):
     return "n/a"
 
 
+# Class colours of the per-class panels, in class order as the run's own picture (matplotlib's
+# tab10; later classes cycle).
+COLOURS = ("#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf")
+
+
+def read_points(path):
+    """A plain point file as ppsynth writes it ("# domain x0 y0 x1 y1", "# class_labels ...",
+    then "x y [class ...]" rows, the class an index into the labels): (domain, [(x, y, class)],
+    labels); None when the file is not in that form (the card then shows no per-class panels)."""
+    domain, points, labels = None, [], []
+    try:
+        with open(path) as f:
+            for line in f:
+                t = line.split()
+                if not t:
+                    continue
+                if t[0] == "#":
+                    if len(t) == 6 and t[1] == "domain":
+                        domain = tuple(float(v) for v in t[2:])
+                    if len(t) > 2 and t[1] == "class_labels":
+                        labels = t[2:]
+                    continue
+                points.append((float(t[0]), float(t[1]), int(float(t[2])) if len(t) > 2 else 0))
+    except (OSError, ValueError):
+        return None
+    return (domain, points, labels) if domain and domain[2] > domain[0] and domain[3] > domain[1] else None
+
+
+def panel(domain, points, classes, title, height=150):
+    """One SVG panel: `points` of `classes` (all of them: coloured by class) in `domain`."""
+    x0, y0, x1, y1 = domain
+    w = height * (x1 - x0) / (y1 - y0)
+    shown = [p for p in points if p[2] in classes]
+    r = max(0.8, min(3.0, 0.35 * height / max(1.0, len(shown)) ** 0.5))
+    dots = "".join(f'<circle cx="{(x - x0) / (x1 - x0) * w:.1f}" cy="{(1 - (y - y0) / (y1 - y0)) * height:.1f}" r="{r:.2f}" '
+                   f'fill="{COLOURS[c % len(COLOURS)]}"/>' for x, y, c in shown)
+    return (f'<div class="panel"><svg width="{w:.0f}" height="{height}" viewBox="0 0 {w:.1f} {height}">'
+            f'<rect width="100%" height="100%" fill="#fff" stroke="#999"/>{dots}</svg>'
+            f'<div class="ptitle">{html.escape(title)} ({len(shown)})</div></div>')
+
+
+def class_panels(run_dir):
+    """Exemplar and output, all classes and each class on its own, for a multi-class run; ""
+    for one class or files not in the plain form."""
+    ex, out = read_points(os.path.join(run_dir, "exemplar.txt")), read_points(os.path.join(run_dir, "output.txt"))
+    if not ex or not out:
+        return ""
+    classes = sorted({p[2] for p in ex[1]} | {p[2] for p in out[1]})
+    if len(classes) < 2:
+        return ""
+    labels = ex[2] or out[2]
+    rows = []
+    for name, (domain, points, _) in (("exemplar", ex), ("output", out)):
+        cells = [panel(domain, points, set(classes), f"{name}, all classes")]
+        cells += [panel(domain, points, {c}, f"class {labels[c] if c < len(labels) else c}") for c in classes]
+        rows.append(f'<div class="classes">{"".join(cells)}</div>')
+    return "".join(rows)
+
+
+def scorecard_rows(m):
+    """The scorecard's lines as the card shows them (docs/explanation/scorecard.md)."""
+    sc = m.get("scorecard") or {}
+    rows = []
+    nov = sc.get("novelty") or {}
+    if isinstance(nov.get("share"), (int, float)):
+        word = "<b>COPY</b> of the exemplar" if nov.get("copy") else "new"
+        rows.append(("novelty", f"{word}: {nov['share']:.3f} of the neighbourhoods copied (a copy from {nov.get('copy_share', '?')})"))
+    fid = sc.get("fidelity") or {}
+    band = fid.get("band")
+    for r in fid.get("rows", []):
+        parts = []
+        for key, label in (("l", "L"), ("g", "g"), ("kmm", "k_mm")):
+            d = r.get(key)
+            if isinstance(d, dict) and isinstance(d.get("spreads"), (int, float)):
+                parts.append(f"{label} {d['spreads']:.2f}")
+        if r.get("within") is None:
+            word = "cannot judge"
+        else:
+            word = "within band" if r["within"] else "<b>out of band</b>"
+        spreads = f"{', '.join(parts)} spreads (band {band:g}); " if parts and isinstance(band, (int, float)) else ""
+        reason = f" ({html.escape(r['reason'])})" if r.get("reason") and not parts else ""
+        rows.append((f"fidelity, {r.get('name', r.get('row'))}", f"{spreads}{word}{reason}"))  # the table escapes names
+    per = sc.get("periodicity") or {}
+    if isinstance(per.get("ratio"), (int, float)):
+        word = "<b>PERIODIC</b>" if per.get("periodic") else "no repeat"
+        rows.append(("periodicity", f"{word} (ratio {per['ratio']:.3g}, periodic from {per.get('periodic_ratio', '?')})"))
+    for r in (sc.get("close_pairs") or {}).get("rows", []):
+        if r.get("row") != "all":
+            continue
+        if isinstance(r.get("share_below"), (int, float)):
+            rows.append(("close pairs", f"{r.get('pairs_below', '?')} pairs closer than the exemplar's closest "
+                                        f"({r['share_below']:.3f} of the points); normalized min distance "
+                                        f"{r.get('output_normalized') or 0:.3f} (exemplar {r.get('exemplar_normalized') or 0:.3f})"))
+    return rows
+
+
 def card(run_dir):
     for need in ("run.json", "exemplar_vs_output.png"):
         if not os.path.exists(os.path.join(run_dir, need)):
@@ -107,6 +207,7 @@ def card(run_dir):
         for key, label in (("pcf_mse", "PCF MSE"), ("wasserstein", "Wasserstein"), ("chamfer", "Chamfer")):
             if key in a:
                 rows.append((label, measure(a, key)))
+    rows += scorecard_rows(m)
     # The verdict per row: all points, each class, each pair of classes (a multi-class pattern
     # can pass on all points and fail on a class: the segregation unmarked K cannot see).
     for r in m.get("verdict", {}).get("rows", []):
@@ -126,7 +227,7 @@ def card(run_dir):
     table = "".join(f"<tr><th>{html.escape(k)}</th><td>{v}</td></tr>" for k, v in rows)
     return (f'<figure><figcaption>{html.escape(name)}</figcaption>'
             f'<img alt="{html.escape(name)}: exemplar and output" src="data:image/png;base64,{picture}">'
-            f"<table>{table}</table></figure>")
+            f"{class_panels(run_dir)}<table>{table}</table></figure>")
 
 
 PAGE = """<!doctype html>
@@ -140,7 +241,9 @@ figure {{ margin: 0; background: #fff; border: 1px solid #ddd; border-radius: 6p
 figcaption {{ font-weight: 600; font-size: 1.1em; margin-bottom: 0.5em; }}
 img {{ width: 100%; height: auto; image-rendering: auto; }}
 table {{ border-collapse: collapse; margin-top: 0.5em; font-size: 0.92em; }}
-th {{ text-align: left; color: #666; font-weight: normal; padding-right: 1em; }}
+th {{ text-align: left; color: #666; font-weight: normal; padding-right: 1em; vertical-align: top; }}
+.classes {{ display: flex; flex-wrap: wrap; gap: 0.5em; margin-top: 0.5em; }}
+.ptitle {{ font-size: 0.8em; color: #555; text-align: center; }}
 </style></head>
 <body>
 <h1>ppsynth gallery</h1>
