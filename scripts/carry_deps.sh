@@ -5,7 +5,11 @@
 #                  (apt-get download: nanoflann, nlohmann-json, CLI11, Catch2, spdlog, fmt)
 #   .deps/root/    their headers, unpacked (usr/include): cmake -DPPSYNTH_DEPS_DIR=$PWD/.deps/root
 #   .deps/shared/  the exemplars scripts/gpu_check.sh synthesizes (PPSYNTH_SHARED there)
-# (.deps/real_data/, docs/lab/verdict/gpu_real_data.sh's exemplars and runs, is left as it is.)
+#   .deps/real_data/amacrine.txt  spatstat's amacrine, scripts/gpu_check.sh's --preset fast
+#                  target, when not there already: copied from CARRY_REAL_DATA/amacrine.txt
+#                  when set, else exported by scripts/spatstat_export.R (R with spatstat)
+# (the rest of .deps/real_data/, docs/lab/verdict/gpu_real_data.sh's exemplars and runs, is
+# left as it is.)
 # .deps/ is ignored by git; the device tool takes it along when its `carry` names it.
 # Usage: scripts/carry_deps.sh   (on a Debian machine with ../shared beside the checkout)
 set -euo pipefail
@@ -29,5 +33,15 @@ for e in "${exemplars[@]}"; do
   mkdir -p "$out/shared/$(dirname "$e")"
   cp "$shared/$e" "$out/shared/$e"
 done
+if [ ! -f "$out/real_data/amacrine.txt" ]; then
+  mkdir -p "$out/real_data"
+  if [ -n "${CARRY_REAL_DATA:-}" ]; then
+    cp "$CARRY_REAL_DATA/amacrine.txt" "$out/real_data/amacrine.txt"
+  elif command -v Rscript > /dev/null; then
+    Rscript "$here/scripts/spatstat_export.R" "$out/real_data" amacrine
+  else
+    echo "carry_deps: no amacrine for scripts/gpu_check.sh: set CARRY_REAL_DATA to a folder with amacrine.txt, or install R with spatstat" >&2
+  fi
+fi
 echo "carry_deps: $(ls "$out/debs" | wc -l) packages unpacked into $out/root ($(du -sh "$out" | cut -f1) in all):"
 (cd "$out/debs" && ls -1)
