@@ -228,7 +228,8 @@ json fidelity_report(const PointSet& exemplar, const PointSet& output_in, double
     if (!all_within)
       finish(false, "");
     else if (any_unknown)
-      finish(nullptr, "a distance has no finite value or no spread (every sub-window's curve equals the exemplar's)");
+      finish(nullptr, "no spread: at least half the sub-windows' curves equal the exemplar's (no pair of the row within r_max in "
+                      "either), or a distance is undefined");
     else
       finish(true, "");
   }
