@@ -1,5 +1,6 @@
 #include "models/random_filter_net.hpp"
 
+#include "core/config/param_docs.hpp"
 #include "models/network_precision.hpp"
 
 namespace ppsynth {
@@ -117,29 +118,31 @@ Features RandomFilterNet::forward(const torch::Tensor& maps) {
   return out;
 }
 
+const ParamTable<RandomFilterNetOptions>& RandomFilterNetOptions::params() {
+  using O = RandomFilterNetOptions;
+  static const ParamTable<O> t("method.feature_net", {
+      param("channels", &O::channels, "int [1, 4096]", "filters per layer"),
+      param("kernel_size", &O::kernel_size, "int [1, 63]", "the filters' width (odd)"),
+      param("depth", &O::depth, "int [1, 16]", "blocks, each a feature layer (3: the paper's)"),
+      param("instance_norm", &O::instance_norm, "", "instance normalization after each convolution"),
+      param("relu", &O::relu, "", "ReLU after each convolution"),
+      param("precision", &O::precision, "", "the network's arithmetic: \"float32\", \"bfloat16\" or \"auto\" (models/network_precision.hpp)"),
+  });
+  return t;
+}
+
 }  // namespace ppsynth
 
-// The defaults are RandomFilterNetOptions' own (random_filter_net.hpp), declared there once.
-PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "random",
-                 (ppsynth::json{{"channels", ppsynth::RandomFilterNetOptions{}.channels},
-                                {"kernel_size", ppsynth::RandomFilterNetOptions{}.kernel_size},
-                                {"depth", ppsynth::RandomFilterNetOptions{}.depth},
-                                {"instance_norm", ppsynth::RandomFilterNetOptions{}.instance_norm},
-                                {"relu", ppsynth::RandomFilterNetOptions{}.relu},
-                                {"precision", "float32"}}),
-                 (ppsynth::json{{"channels", "int [1, 4096]"}, {"kernel_size", "int [1, 63]"}, {"depth", "int [1, 16]"}}),
+PPSYNTH_PARAM_DOCS("feature_net", "random", [] { return ppsynth::RandomFilterNetOptions::params().docs(); })
+
+PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "random", ppsynth::RandomFilterNetOptions::params().defaults(),
+                 ppsynth::RandomFilterNetOptions::params().bounds(),
                  "the paper's random-filter network (Glorot-uniform, frozen)",
                  [](const ppsynth::json& p, const std::string& key, int in_channels, uint64_t seed) -> std::unique_ptr<ppsynth::FeatureNet> {
-                   ppsynth::RandomFilterNetOptions o;
+                   ppsynth::RandomFilterNetOptions o = ppsynth::RandomFilterNetOptions::params().read(p, key);
                    o.in_channels = in_channels;
-                   o.channels = p["channels"].get<int>();
-                   o.kernel_size = p["kernel_size"].get<int>();
-                   o.depth = p["depth"].get<int>();
-                   o.instance_norm = p["instance_norm"];
-                   o.relu = p["relu"];
                    o.seed = seed;
-                   const ppsynth::NetworkPrecision prec =
-                       ppsynth::resolve_network_precision(p["precision"].get<std::string>(), key + ".precision");
+                   const ppsynth::NetworkPrecision prec = ppsynth::resolve_network_precision(o.precision, key + ".precision");
                    o.dtype = prec.dtype;
                    o.precision_reason = prec.reason;
                    if (o.kernel_size % 2 == 0) throw ppsynth::config_error(key + ".kernel_size", "must be odd");

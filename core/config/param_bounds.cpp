@@ -89,7 +89,8 @@ std::vector<Interval> parse_bound(const std::string& bound) {
 }
 
 void check_value(const nlohmann::json& v, const std::string& bound, const std::string& kp) {
-  if (v.is_null()) return;  // a null default ("none") is not a number to bound
+  // null or "auto" (an optional parameter's "none", core/config/params.hpp) is not a number to bound
+  if (v.is_null() || (v.is_string() && v.get<std::string>() == "auto")) return;
   const std::vector<Interval> intervals = parse_bound(bound);
   if (!v.is_number()) throw config_error(kp, "expected a number in " + bound);
   const double x = v.get<double>();

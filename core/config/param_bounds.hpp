@@ -15,7 +15,8 @@ namespace ppsynth {
 
 // Throws config_error naming `key_path` + the key when a value in `params` lies outside its
 // bound, is not a whole number where the bound says "int", or is not a number at all. Keys
-// of `bounds` missing from `params` are skipped; a malformed bound is a std::logic_error (a
+// of `bounds` missing from `params`, and null or "auto" values (an optional parameter's none,
+// core/config/params.hpp), are skipped; a malformed bound is a std::logic_error (a
 // programming error, caught by the registry test).
 void check_bounds(const nlohmann::json& params, const nlohmann::json& bounds, const std::string& key_path);
 

@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "core/config/param_docs.hpp"
+
 namespace ppsynth {
 
 namespace {
@@ -15,17 +17,29 @@ std::string cell(const nlohmann::json& v) {
 }
 
 // One row per leaf key, dotted; a component spec ({"type": ...}) is one value, since its keys
-// belong to the part its "type" names (documented under that kind).
-void rows(const nlohmann::json& defaults, const nlohmann::json& bounds, const std::string& prefix, std::ostringstream& out) {
+// belong to the part its "type" names (documented under that kind). `docs` (nested like the
+// defaults) gives a fourth column, when the part declares its keys' lines
+// (core/config/param_docs.hpp).
+void rows(const nlohmann::json& defaults, const nlohmann::json& bounds, const nlohmann::json* docs, const std::string& prefix,
+          std::ostringstream& out) {
   for (auto it = defaults.begin(); it != defaults.end(); ++it) {
     const std::string key = prefix.empty() ? it.key() : prefix + "." + it.key();
     const nlohmann::json* b = bounds.is_object() && bounds.contains(it.key()) ? &bounds[it.key()] : nullptr;
+    const nlohmann::json* d = docs && docs->is_object() && docs->contains(it.key()) ? &(*docs)[it.key()] : nullptr;
     if (it->is_object() && !it->empty() && !it->contains("type")) {
-      rows(*it, b ? *b : nlohmann::json::object(), key, out);
+      const nlohmann::json none = nlohmann::json::object();
+      rows(*it, b ? *b : nlohmann::json::object(), docs ? (d ? d : &none) : nullptr, key, out);
       continue;
     }
     out << "| `" << key << "` | " << cell(*it) << " | " << (b && b->is_string() ? "`" + b->get<std::string>() + "`" : "")
-        << " |\n";
+        << " |";
+    if (docs) {
+      const std::string line = d && d->is_string() ? d->get<std::string>() : "";
+      std::string escaped;
+      for (char c : line) escaped += c == '|' ? std::string("\\|") : std::string(1, c);
+      out << " " << escaped << " |";
+    }
+    out << "\n";
   }
 }
 
@@ -45,8 +59,10 @@ std::string config_reference_markdown(const nlohmann::json& catalog) {
           out << "No parameters.\n\n";
           continue;
         }
-        out << "| key | default | bound |\n| --- | --- | --- |\n";
-        rows(p["defaults"], p.value("bounds", nlohmann::json::object()), "", out);
+        const nlohmann::json docs = param_docs(kind.key(), part.key());
+        out << (docs.empty() ? "| key | default | bound |\n| --- | --- | --- |\n"
+                             : "| key | default | bound | what |\n| --- | --- | --- | --- |\n");
+        rows(p["defaults"], p.value("bounds", nlohmann::json::object()), docs.empty() ? nullptr : &docs, "", out);
         out << "\n";
       } else {  // a config fragment (a preset): shown as it is merged
         nlohmann::json shown = p;

@@ -22,6 +22,7 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "optim/baselines/pcf2017/local_pcf.hpp"
+#include "optim/baselines/pcf2017/pcf2017_options.hpp"
 #include "optim/baselines/pcf2017/pcf_synthesizer.hpp"
 #include "optim/method/method.hpp"
 
@@ -31,21 +32,12 @@ namespace {
 
 class Pcf2017Method : public SynthesisMethod {
  public:
-  // p: the registered defaults merged with the user's, every range checked by the registry's
-  // bounds (below); what is left here are the checks between two parameters.
+  // p: the registered defaults merged with the user's (Pcf2017Options' table's).
   Pcf2017Method(const nlohmann::json& p, const std::string& key) {
-    pcf_.bins = p["bins"].get<int>();
-    pcf_.r_a = p["r_a"].get<double>();
-    pcf_.r_b = p["r_b"].get<double>();
-    pcf_.sigma_factor = p["sigma_factor"].get<double>();
-    descent_.iterations = p["iterations"].get<int>();
-    descent_.step = p["step"].get<double>();
-    descent_.max_step = p["max_step"].get<double>();
-    descent_.grow = p["grow"].get<double>();
-    descent_.line_search_halvings = p["line_search_halvings"].get<int>();
-    quick_iterations_ = p["quick_iterations"].get<int>();
-    if (!(pcf_.r_b > pcf_.r_a)) throw config_error(key + ".r_a", "need r_a < r_b");
-    if (!(descent_.max_step >= descent_.step)) throw config_error(key + ".max_step", "must be >= step");
+    const Pcf2017Options o = Pcf2017Options::read(p, key);
+    pcf_ = o.pcf;
+    descent_ = o.descent;
+    quick_iterations_ = o.quick_iterations;
   }
 
   PointSet synthesize(const PointSet& exemplar, const SynthesisContext& ctx) override {
@@ -243,34 +235,15 @@ class Pcf2017Method : public SynthesisMethod {
 
   PcfParams pcf_;
   DescentOptions descent_;
-  int quick_iterations_ = 30;
+  int quick_iterations_ = 0;
 };
 
 }  // namespace
 
 }  // namespace ppsynth::pcf2017
 
-PPSYNTH_REGISTER(ppsynth::MethodRegistry, "pcf2017",
-                 (nlohmann::json{{"iterations", 300},
-                                 {"quick_iterations", 30},
-                                 {"step", 0.1},
-                                 {"max_step", 0.5},
-                                 {"grow", 1.2},
-                                 {"line_search_halvings", 12},
-                                 {"bins", 100},
-                                 {"r_a", 0.01},
-                                 {"r_b", 2.5},
-                                 {"sigma_factor", 0.25}}),
-                 (nlohmann::json{{"iterations", "int [0, inf)"},
-                                 {"quick_iterations", "int [0, inf)"},
-                                 {"step", "(0, inf)"},
-                                 {"max_step", "(0, inf)"},
-                                 {"grow", "[1, inf)"},
-                                 {"line_search_halvings", "int [0, 64]"},
-                                 {"bins", "int [2, 100000]"},
-                                 {"r_a", "(0, inf)"},
-                                 {"r_b", "(0, inf)"},
-                                 {"sigma_factor", "(0, inf)"}}),
+PPSYNTH_REGISTER(ppsynth::MethodRegistry, "pcf2017", ppsynth::pcf2017::Pcf2017Options::params().defaults(),
+                 ppsynth::pcf2017::Pcf2017Options::params().bounds(),
                  "Roveri et al. 2017 (thesis Ch. 4): gradient descent on the PCF energy (Eq. 4.3), stationary, torus",
                  [](const nlohmann::json& p, const std::string& key) -> std::unique_ptr<ppsynth::SynthesisMethod> {
                    return std::make_unique<ppsynth::pcf2017::Pcf2017Method>(p, key);

@@ -1,8 +1,8 @@
 #pragma once
 // Parameters of Roveri et al. 2015 (thesis Chapter 3, "Example Based Repetitive Structure
 // Synthesis"), all lengths given relative to the exemplar so one set of defaults fits every
-// exemplar. The method's registration (roveri2015_method.cpp) holds the default VALUES; this
-// struct only names and documents them.
+// exemplar. The members' initializers are the defaults; the method's config keys are declared
+// once, in roveri2015_options.cpp's table.
 //
 // Units: every length below is in units of d_nn, the exemplar's mean nearest-neighbor
 // distance (plane, exemplar units). Section 3.6.1: "sigma is set to the average spacing

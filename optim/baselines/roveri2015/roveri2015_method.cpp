@@ -23,6 +23,7 @@
 #include "core/metrics/nearest_neighbor.hpp"
 #include "optim/baselines/roveri2015/functional.hpp"
 #include "optim/baselines/roveri2015/params.hpp"
+#include "optim/baselines/roveri2015/roveri2015_options.hpp"
 #include "optim/baselines/roveri2015/patch_init.hpp"
 #include "optim/baselines/roveri2015/solver.hpp"
 #include "optim/baselines/roveri2015/synthesis_state.hpp"
@@ -34,40 +35,11 @@ namespace {
 
 class Roveri2015Method : public SynthesisMethod {
  public:
-  // p: the registered defaults merged with the user's, every range checked by the registry's
-  // bounds (below); what is left here is the one choice the bounds cannot hold.
+  // p: the registered defaults merged with the user's (Roveri2015Options' table's).
   Roveri2015Method(const nlohmann::json& p, const std::string& key) {
-    auto number = [&](const char* k) { return p[k].get<double>(); };
-    auto whole = [&](const char* k) { return p[k].get<int>(); };
-    p_.sigma_factor = number("sigma_factor");
-    p_.window_factor = number("window_factor");
-    const std::string w = p["window"].get<std::string>();
-    if (w == "box") p_.window = WindowKind::Box;
-    else if (w == "gaussian") p_.window = WindowKind::Gaussian;
-    else throw config_error(key + ".window", "expected \"box\" or \"gaussian\", got \"" + w + "\"");
-    p_.window_cutoff = number("window_cutoff");
-    p_.pair_cutoff = number("pair_cutoff");
-    p_.attribute_weight = number("attribute_weight");
-    p_.quad_spacing = number("quad_spacing");
-    p_.match_restarts = whole("match_restarts");
-    p_.match_iterations = whole("match_iterations");
-    p_.aligned_starts = whole("aligned_starts");
-    p_.match_step = number("match_step");
-    p_.match_margin = number("match_margin");
-    p_.merge_iterations = whole("merge_iterations");
-    p_.merge_step = number("merge_step");
-    p_.merge_tolerance = number("merge_tolerance");
-    p_.attribute_iterations = whole("attribute_iterations");
-    p_.local_global_iterations = whole("local_global_iterations");
-    p_.sampling_control_iterations = whole("sampling_control_iterations");
-    p_.scale_factor = number("scale_factor");
-    p_.min_window_ratio = number("min_window_ratio");
-    p_.sampling_epsilon = number("sampling_epsilon");
-    p_.candidate_iterations = whole("candidate_iterations");
-    p_.max_candidate_fraction = number("max_candidate_fraction");
-    p_.patch_size = number("patch_size");
-    p_.periodic_output = p["periodic_output"].get<bool>();
-    quick_scales_ = whole("quick_scales");
+    const Roveri2015Options o = Roveri2015Options::params().read(p, key);
+    p_ = o.roveri;
+    quick_scales_ = o.quick_scales;
   }
 
   PointSet synthesize(const PointSet& exemplar, const SynthesisContext& ctx) override {
@@ -196,64 +168,15 @@ class Roveri2015Method : public SynthesisMethod {
   }
 
   RoveriParams p_;
-  int quick_scales_ = 2;
+  int quick_scales_ = 0;
 };
 
 }  // namespace
 
 }  // namespace ppsynth::roveri2015
 
-PPSYNTH_REGISTER(ppsynth::MethodRegistry, "roveri2015",
-                 (nlohmann::json{{"sigma_factor", 1.0},
-                                 {"window_factor", 2.0},
-                                 {"window", "gaussian"},
-                                 {"window_cutoff", 2.5},
-                                 {"pair_cutoff", 4.5},
-                                 {"attribute_weight", 0.5},
-                                 {"quad_spacing", 1.0},
-                                 {"match_restarts", 5},
-                                 {"match_iterations", 20},
-                                 {"aligned_starts", 2},
-                                 {"match_step", 0.5},
-                                 {"match_margin", 1.0},
-                                 {"merge_iterations", 30},
-                                 {"merge_step", 0.1},
-                                 {"merge_tolerance", 1e-6},
-                                 {"attribute_iterations", 10},
-                                 {"local_global_iterations", 3},
-                                 {"sampling_control_iterations", 2},
-                                 {"scale_factor", 0.9},
-                                 {"min_window_ratio", 0.5},
-                                 {"sampling_epsilon", 1e-6},
-                                 {"candidate_iterations", 5},
-                                 {"max_candidate_fraction", 0.5},
-                                 {"patch_size", 0.5},
-                                 {"periodic_output", false},
-                                 {"quick_scales", 2}}),
-                 (nlohmann::json{{"sigma_factor", "(0, inf)"},
-                                 {"window_factor", "(0, inf)"},
-                                 {"window_cutoff", "(0, inf)"},
-                                 {"pair_cutoff", "(0, inf)"},
-                                 {"attribute_weight", "[0, inf)"},
-                                 {"quad_spacing", "(0, inf)"},
-                                 {"match_restarts", "int [1, 10000]"},
-                                 {"match_iterations", "int [0, inf)"},
-                                 {"aligned_starts", "int [0, 10000]"},
-                                 {"match_step", "(0, inf)"},
-                                 {"match_margin", "[0, inf)"},
-                                 {"merge_iterations", "int [0, inf)"},
-                                 {"merge_step", "(0, inf)"},
-                                 {"merge_tolerance", "[0, inf)"},
-                                 {"attribute_iterations", "int [0, inf)"},
-                                 {"local_global_iterations", "int [1, inf)"},
-                                 {"sampling_control_iterations", "int [1, inf)"},
-                                 {"scale_factor", "(0, 1)"},
-                                 {"min_window_ratio", "(0, 1]"},
-                                 {"sampling_epsilon", "[0, inf)"},
-                                 {"candidate_iterations", "int [0, inf)"},
-                                 {"max_candidate_fraction", "[0, 1]"},
-                                 {"patch_size", "(0, 1]"},
-                                 {"quick_scales", "int [1, 64]"}}),
+PPSYNTH_REGISTER(ppsynth::MethodRegistry, "roveri2015", ppsynth::roveri2015::Roveri2015Options::params().defaults(),
+                 ppsynth::roveri2015::Roveri2015Options::params().bounds(),
                  "Roveri et al. 2015 (thesis Ch. 3): functional neighborhood matching, multi-scale local-global "
                  "solver with sampling control, random-patch-copy init",
                  [](const nlohmann::json& p, const std::string& key) -> std::unique_ptr<ppsynth::SynthesisMethod> {

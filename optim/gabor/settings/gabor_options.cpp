@@ -1,69 +1,51 @@
 #include "optim/gabor/settings/gabor_options.hpp"
 
-#include "core/config/config.hpp"
-#include "core/error.hpp"
 #include "models/gabor_feature_maps.hpp"
 
 namespace ppsynth {
 
-namespace {
-constexpr const char* k_key = "method";
-}  // namespace
+int gabor_maps_default_k() { return GaborMapsOptions{}.k; }
 
-nlohmann::json GaborOptions::defaults() {
-  return {
-      {"c1", 1.0},
-      {"c2", 2.6},
-      {"num_sigmas", 4},
-      {"k", GaborMapsOptions{}.k},  // neighbors: min(M, k)
-      // M = the exemplar points of the classes in play at a class stage (the published disk
-      // and multi-attribute optimizers); false: M = all exemplar points (its point optimizer).
-      {"k_per_stage", true},
-      {"jitter", true},
-      {"max_iterations", 500},
-      {"class_order", nlohmann::json::array()},  // empty = file order
-      {"fresh_net_per_class", false},
-      // Where the losses measure the output of the paper's u x u square: "grid" (its whole
-      // grid, as published: points park on its border), "tiles" (u x u tiles of the
-      // exemplar's size cut at a random offset every iteration, each rasterized and measured
-      // as the exemplar is) or "rolled" (the whole grid of the torus rolled by a random offset
-      // every iteration: the grid's edge never stays where a point could park on it;
-      // optim/gabor/stages/random_tiles.hpp).
-      {"measure", "grid"},
-  };
-}
-
-nlohmann::json GaborOptions::bounds() {
-  return {{"c1", "(0, inf)"},
-          {"c2", "(0, inf)"},
-          {"num_sigmas", "int [1, 64]"},
-          {"k", "int [1, 1000000]"},
-          {"max_iterations", "int [1, 1000000000]"},
-          {"class_order", "int [0, 1000000]"}};
-}
-
-GaborOptions GaborOptions::resolve(const nlohmann::json& p) {
-  GaborOptions o;
-  o.c1 = get_number(p, "c1", k_key);
-  o.c2 = get_number(p, "c2", k_key);
-  o.num_sigmas = get_int(p, "num_sigmas", k_key);
-  o.k = get_int(p, "k", k_key);
-  if (o.k < 1) throw config_error("method.k", "must be >= 1");
-  o.k_per_stage = get_bool(p, "k_per_stage", k_key);
-  o.jitter = get_bool(p, "jitter", k_key);
-  o.max_iterations = get_int(p, "max_iterations", k_key);
-  if (o.max_iterations < 1) throw config_error("method.max_iterations", "must be >= 1");
-  for (const auto& c : p["class_order"]) {
-    if (!c.is_number_integer() || c.get<int64_t>() < 0 || c.get<int64_t>() > 1000000)
-      throw config_error("method.class_order", "expected class ids (whole numbers >= 0)");
-    o.class_order.push_back(c.get<int>());
-  }
-  o.fresh_net_per_class = get_bool(p, "fresh_net_per_class", k_key);
-  const nlohmann::json& measure = p["measure"];
-  if (!measure.is_string() || (measure != "grid" && measure != "tiles" && measure != "rolled"))
-    throw config_error("method.measure", "expected \"grid\", \"tiles\" or \"rolled\", got " + measure.dump());
-  o.measure = measure == "tiles" ? Measure::tiles : measure == "rolled" ? Measure::rolled : Measure::grid;
-  return o;
+// The published code's settings (method.md §2-5), and what the paper does not have (measure,
+// map_terms, terms, the windows) set so that it is the paper's.
+const ParamTable<GaborOptions>& GaborOptions::params() {
+  using G = GaborOptions;
+  using M = G::Measure;
+  static const ParamTable<G> t("method", {
+      param("c1", &G::c1, "(0, inf)", "the coarsest sigma is d / c1 (d: the exemplar's mean nearest-neighbor distance)"),
+      param("c2", &G::c2, "(0, inf)", "the finest sigma is d / c2"),
+      param("num_sigmas", &G::num_sigmas, "int [1, 64]", "sigma stages, evenly spaced from the coarsest to the finest"),
+      param("k", &G::k, "int [1, 1000000]", "neighbors per grid position: min(M, k)"),
+      // M = the exemplar points of the classes in play at a class stage (the published disk and
+      // multi-attribute optimizers); false: M = all exemplar points (its point optimizer).
+      param("k_per_stage", &G::k_per_stage, "", "M = the exemplar points of the stage's classes (false: all)"),
+      param("jitter", &G::jitter, "", "grid positions jittered every iteration"),
+      param("max_iterations", &G::max_iterations, "int [1, 1000000000]", "iterations per sigma stage at most"),
+      param("class_order", &G::class_order, "int [0, 1000000]", "the order the classes are synthesized in; [] = file order"),
+      param("fresh_net_per_class", &G::fresh_net_per_class, "", "a new random network per class group"),
+      // "grid" (its whole grid, as published: points park on its border), "tiles" (u x u tiles
+      // of the exemplar's size cut at a random offset every iteration, each rasterized and
+      // measured as the exemplar is) or "rolled" (the whole grid of the torus rolled by a random
+      // offset every iteration: the grid's edge never stays where a point could park on it).
+      choice("measure", &G::measure, {{"grid", M::grid}, {"tiles", M::tiles}, {"rolled", M::rolled}},
+             "where the losses measure the u x u output: its grid, random tiles, or the grid rolled"),
+      param("map_attributes", &G::map_attributes, "", "null or \"auto\": every non-constant attribute; or a list of names ([] = none)"),
+      block("grid", &G::grid),
+      block("window", &G::window),
+      block("quick", &G::quick),
+      param("rasterizer", &G::rasterizer, "", "points -> maps (a rasterizer spec)"),
+      param("feature_net", &G::feature_net, "", "maps -> features (a feature_net spec)"),
+      param("losses", &G::losses, "", "the feature losses and their weights (loss specs)"),
+      param("optimizer", &G::optimizer, "", "moves the points (an optimizer spec)"),
+      // "loss" (the paper's) or "pattern" (the PCF stops improving): optim/steps/stopping_rule.hpp.
+      param("convergence", &G::convergence, "", "when a sigma stage stops before max_iterations (a convergence spec)"),
+      param("init", &G::init, "", "the output's first points (an initializer spec)"),
+      // Not in the paper (optim/gabor/stages/map_term.hpp): {"class_own": {"weight": 1}}.
+      param("map_terms", &G::map_terms, "", "losses on maps of their own, by registered name; {} = the paper"),
+      // Not in the paper (optim/terms/point_term.hpp): {"separation": {"weight": 1}, "pcf_match": {"weight": 10}}.
+      param("terms", &G::terms, "", "losses on the positions themselves, by registered name; {} = the paper"),
+  });
+  return t;
 }
 
 const char* measure_name(GaborOptions::Measure m) {

@@ -1,22 +1,18 @@
 #pragma once
 // method.quick, typed: what --quick shrinks (tests and smoke runs: every knob that sets the
-// cost), each declared once, here, with its default and its range (gabor_defaults() and
-// gabor_bounds() list its block from defaults() and bounds()). Each is a cap: a setting
+// cost), each key declared once in its table (quick_options.cpp). Each is a cap: a setting
 // already below it stays.
-#include <nlohmann/json.hpp>
+#include "core/config/params.hpp"
 
 namespace ppsynth {
 
 struct QuickOptions {
-  int res = 0;             // method.grid's resolved res
-  int channels = 0;        // the filters of a network that has a count of them (`channels`)
-  int max_iterations = 0;  // per sigma stage
-  int num_sigmas = 0;
+  int res = 24;            // method.grid's resolved res
+  int channels = 8;        // the filters of a network that has a count of them (`channels`)
+  int max_iterations = 4;  // per sigma stage
+  int num_sigmas = 2;
 
-  static nlohmann::json defaults();
-  static nlohmann::json bounds();
-  // From the method's quick block (defaults merged, bounds checked by the method's registry).
-  static QuickOptions resolve(const nlohmann::json& block);
+  static const ParamTable<QuickOptions>& params();
 };
 
 }  // namespace ppsynth

@@ -6,9 +6,6 @@ namespace ppsynth {
 
 std::vector<double> sigma_schedule(double d, double c1, double c2, int count) {
   if (!(d > 0)) throw InputError("sigma schedule: the exemplar's mean nearest-neighbor distance is not positive");
-  if (!(c1 > 0)) throw config_error("method.c1", "must be > 0");
-  if (!(c2 > 0)) throw config_error("method.c2", "must be > 0");
-  if (count < 1) throw config_error("method.num_sigmas", "must be >= 1");
   const double s1 = d / c1, s2 = d / c2;
   std::vector<double> s;
   for (int i = 0; i < count; ++i) s.push_back(count == 1 ? s1 : s1 + (s2 - s1) * i / (count - 1));

@@ -32,7 +32,7 @@ namespace {
 
 // The relax's options as its kind resolved them from the settings' block (none asked: 0
 // iterations).
-BorderRelaxOptions relax_options(const GaborSettings& s) {
+BorderRelaxSettings relax_options(const GaborSettings& s) {
   for (const auto& kind : class_end_kinds(s))
     if (const auto* relax = dynamic_cast<const BorderRelaxStage*>(kind.get())) return relax->options();
   return {};

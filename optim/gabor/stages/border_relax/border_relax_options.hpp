@@ -1,10 +1,25 @@
 #pragma once
-// method.border_relax, typed: each parameter declared once, here, with its default, its range
-// and what --quick does to it. The relax stage (border_relax_stage.hpp) registers with
-// defaults() and bounds() as its block method.border_relax, and resolves it.
-#include <nlohmann/json.hpp>
+// method.border_relax, typed: the block as the user writes it (BorderRelaxOptions, each key
+// declared once in its table, border_relax_options.cpp), and what the relax stage runs with
+// (BorderRelaxSettings: "auto" decided, the band in output units, --quick's cap). The relax
+// stage (border_relax_stage.hpp) registers with the table's defaults and bounds as its block
+// method.border_relax, and resolves it.
+#include <optional>
+
+#include "core/config/params.hpp"
 
 namespace ppsynth {
+
+struct BorderRelaxOptions {
+  std::optional<int> iterations;  // none ("auto"): 60 where there is a fixed grid edge, else 0
+  double band = 1.0;              // mean nearest-neighbor spacings of the output from the grid's edge
+  std::optional<double> lr;       // Adam's rate; none: the finest sigma's
+  double separation = 1.0;        // the separation term's weight in the relax stages (0: off)
+  double parked = 1.5;            // relax a class whose edge share exceeds parked x uniform's (0: always)
+  bool after_all = true;          // "all": after every class's sigma stages; "class": after its own
+
+  static const ParamTable<BorderRelaxOptions>& params();
+};
 
 // What the rest of the settings say about where a relax can run: "auto" relaxes where there is
 // a fixed grid edge to park on, and a count is refused where there is none.
@@ -17,19 +32,17 @@ struct BorderRelaxContext {
   int upscale = 1;
 };
 
-struct BorderRelaxOptions {
-  int iterations = 0;       // 0: no relax stage (the paper's border); "auto" resolves to 60 or 0
-  double band = 0;          // output units (the block's `band` is in mean nn distances)
-  double lr = 0;            // Adam's rate; 0 (null): the finest sigma's
-  double parked = 0;        // relax a class whose edge share exceeds parked x uniform's (0: always)
-  double separation = 0;    // the separation term's weight in the relax stages
-  bool after_all = false;   // "all": after every class's sigma stages; "class": after its own
+// The relax as it runs; zeros: no relax.
+struct BorderRelaxSettings {
+  int iterations = 0;       // 0: no relax stage (the paper's border)
+  double band = 0;          // output units
+  double lr = 0;            // Adam's rate; 0: the finest sigma's
+  double parked = 0;
+  double separation = 0;
+  bool after_all = false;
 
-  static nlohmann::json defaults();
-  static nlohmann::json bounds();
-  // From the method's border_relax block (defaults merged, bounds checked by the method's
-  // registry); errors name method.border_relax.<key>.
-  static BorderRelaxOptions resolve(const nlohmann::json& block, const BorderRelaxContext& where);
+  // From the method's border_relax block (defaults merged); errors name method.border_relax.<key>.
+  static BorderRelaxSettings resolve(const nlohmann::json& block, const BorderRelaxContext& where);
 };
 
 }  // namespace ppsynth

@@ -33,7 +33,7 @@ torch::Tensor border_band(const PointSet& output, const std::vector<size_t>& mov
 
 }  // namespace
 
-BorderRelaxStage::BorderRelaxStage(const BorderRelaxOptions& o) : o_(o) {
+BorderRelaxStage::BorderRelaxStage(const BorderRelaxSettings& o) : o_(o) {
   terms_ = create_weighted_terms<PointTerm>(json{{"separation", {{"weight", o_.separation}}}}, "method.border_relax");
 }
 
@@ -73,7 +73,7 @@ std::string BorderRelaxStage::record_problem(const nlohmann::json& d) const {
   return "";
 }
 
-PPSYNTH_REGISTER_STAGE_KIND("border_relax", BorderRelaxOptions::defaults(), BorderRelaxOptions::bounds(),
+PPSYNTH_REGISTER_STAGE_KIND("border_relax", BorderRelaxOptions::params().defaults(), BorderRelaxOptions::params().bounds(),
                             "method.border_relax: after each class's sigma stages, its points near the torus's grid edge move",
                             [](const json& block, const std::string&, const GaborSettings& s) -> std::unique_ptr<StageKind> {
                               // What the rest of the settings say about where a relax can run.
@@ -84,7 +84,7 @@ PPSYNTH_REGISTER_STAGE_KIND("border_relax", BorderRelaxOptions::defaults(), Bord
                               where.max_iterations = s.max_iterations;
                               where.mean_nn_distance = s.mean_nn_distance;
                               where.upscale = s.upscale;
-                              const BorderRelaxOptions o = BorderRelaxOptions::resolve(block, where);
+                              const BorderRelaxSettings o = BorderRelaxSettings::resolve(block, where);
                               if (o.iterations <= 0) return nullptr;
                               return std::make_unique<BorderRelaxStage>(o);
                             })

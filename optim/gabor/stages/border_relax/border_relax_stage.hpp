@@ -6,9 +6,9 @@
 // (the pattern is the finished stage's, judged already), at its own rate, with a separation
 // term. A class is relaxed when its share of points within 1 % of the edge exceeds `parked` x
 // uniform points' share, or when an earlier class was relaxed (its pairs with the relaxed
-// classes across the seam were never measured). Its options, declared once with their
-// defaults and ranges: its block method.border_relax (border_relax_options.hpp), resolved where
-// it registers; its record: parked_over_uniform and relaxed.
+// classes across the seam were never measured). Its options, each declared once: its block
+// method.border_relax (border_relax_options.hpp), resolved where it registers; its record:
+// parked_over_uniform and relaxed.
 #include "optim/gabor/stages/border_relax/border_relax_options.hpp"
 #include "optim/gabor/stages/stage_kind.hpp"
 
@@ -16,7 +16,7 @@ namespace ppsynth {
 
 class BorderRelaxStage : public StageKind {
  public:
-  explicit BorderRelaxStage(const BorderRelaxOptions& options);
+  explicit BorderRelaxStage(const BorderRelaxSettings& settings);
   std::string label() const override { return "border relax"; }
   int iteration_cap(const GaborSettings& settings) const override;
   bool judged() const override { return false; }
@@ -28,10 +28,10 @@ class BorderRelaxStage : public StageKind {
   StageStart start(const StageStartView& view) const override;
   void describe(nlohmann::json& stats) const override;
   std::string record_problem(const nlohmann::json& details) const override;
-  const BorderRelaxOptions& options() const { return o_; }
+  const BorderRelaxSettings& options() const { return o_; }
 
  private:
-  BorderRelaxOptions o_;
+  BorderRelaxSettings o_;
 };
 
 }  // namespace ppsynth
