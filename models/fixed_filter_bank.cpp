@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "core/config/param_docs.hpp"
+#include "core/config/params.hpp"
+
 namespace ppsynth {
 
 namespace {
@@ -62,6 +65,25 @@ class FixedBankNet : public FeatureNet {
   torch::Tensor bank_;
 };
 
+struct FixedBankOptions {
+  std::string bank = "all";
+  int kernel_size = 7;
+  int depth = 3;
+  bool instance_norm = true;
+  bool relu = true;
+  static const ParamTable<FixedBankOptions>& params() {
+    using O = FixedBankOptions;
+    static const ParamTable<O> t("method.feature_net", {
+        param("bank", &O::bank, "", "the filters: \"gaussian\", \"sobel\", \"derivative\" or \"all\""),
+        param("kernel_size", &O::kernel_size, "int [1, 63]", "the filters' width (odd, >= 3)"),
+        param("depth", &O::depth, "int [1, 16]", "blocks, each a feature layer"),
+        param("instance_norm", &O::instance_norm, "", "instance normalization after each convolution"),
+        param("relu", &O::relu, "", "ReLU after each convolution"),
+    });
+    return t;
+  }
+};
+
 }  // namespace
 
 torch::Tensor filter_bank(const std::string& name, int K, const std::string& key_path) {
@@ -77,12 +99,11 @@ torch::Tensor filter_bank(const std::string& name, int K, const std::string& key
 
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "fixed_bank",
-                 (ppsynth::json{{"bank", "all"}, {"kernel_size", 7}, {"depth", 3}, {"instance_norm", true}, {"relu", true}}),
-                 (ppsynth::json{{"kernel_size", "int [1, 63]"}, {"depth", "int [1, 16]"}}),
-                 "fixed filter banks (Fig. 10): gaussian | sobel | derivative | all",
+PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "fixed_bank", ppsynth::FixedBankOptions::params().defaults(),
+                 ppsynth::FixedBankOptions::params().bounds(), "fixed filter banks (Fig. 10): gaussian | sobel | derivative | all",
                  [](const ppsynth::json& p, const std::string& key, int in_channels, uint64_t) -> std::unique_ptr<ppsynth::FeatureNet> {
-                   auto bank = ppsynth::filter_bank(p["bank"].get<std::string>(), p["kernel_size"].get<int>(), key);
-                   return std::make_unique<ppsynth::FixedBankNet>(bank, in_channels, p["depth"].get<int>(),
-                                                                 p["instance_norm"], p["relu"]);
+                   const ppsynth::FixedBankOptions o = ppsynth::FixedBankOptions::params().read(p, key);
+                   auto bank = ppsynth::filter_bank(o.bank, o.kernel_size, key);
+                   return std::make_unique<ppsynth::FixedBankNet>(bank, in_channels, o.depth, o.instance_norm, o.relu);
                  })
+PPSYNTH_PARAM_DOCS("feature_net", "fixed_bank", [] { return ppsynth::FixedBankOptions::params().docs(); })

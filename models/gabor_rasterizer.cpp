@@ -1,5 +1,7 @@
 // "gabor" and "spatial" rasterizers: GaborFeatureMaps behind the Rasterizer interface.
 #include "core/config/defaults_catalog.hpp"
+#include "core/config/param_docs.hpp"
+#include "core/config/params.hpp"
 #include "models/gabor_feature_maps.hpp"
 #include "models/rasterizer.hpp"
 
@@ -18,35 +20,51 @@ class GaborRasterizer : public Rasterizer {
   GaborFeatureMaps maps_;
 };
 
+// Both rasterizers' parameters, each declared once (the frequency's default is the maps' own).
+struct GaborRasterizerOptions {
+  double base_frequency = GaborMapsOptions{}.base_frequency;
+  // Each raster chooses on its own: periodic output maps alone remove border parking but ask
+  // the torus to copy the exemplar's border fade (clumps); periodic exemplar maps too treat the
+  // exemplar as a tile, so both sides have no border (docs/lab/method_measurements.md "Border parking").
+  bool periodic_output = false;
+  bool periodic_exemplar = false;
+
+  static const ParamTable<GaborRasterizerOptions>& params() {
+    using O = GaborRasterizerOptions;
+    static const ParamTable<O> t("method.rasterizer", {
+        param("base_frequency", &O::base_frequency, "(0, inf)", "the Gabor frequency f before the upscale (f = base u)"),
+        param("periodic_output", &O::periodic_output, "", "the output's maps wrap around (a torus)"),
+        param("periodic_exemplar", &O::periodic_exemplar, "", "the exemplar's maps wrap around (a tile)"),
+    });
+    return t;
+  }
+};
+
 std::unique_ptr<Rasterizer> make(const json& p, const std::string& key, const RasterizerArgs& a, bool spatial_only) {
+  const GaborRasterizerOptions r = GaborRasterizerOptions::params().read(p, key);
   GaborMapsOptions o;
   o.res = a.res;
   o.rows = a.rows;
   o.upscale = a.upscale;
   o.k = a.k;
   o.divisor = a.divisor;
-  o.base_frequency = get_number(p, "base_frequency", key);
+  o.base_frequency = r.base_frequency;
   o.spatial_only = spatial_only;
-  // Each raster chooses on its own: periodic output maps alone remove border parking but
-  // ask the torus to copy the exemplar's border fade (clumps); periodic exemplar maps too
-  // treat the exemplar as a tile, so both sides have no border (docs/lab/method_measurements.md "Border parking").
-  o.periodic = get_bool(p, a.output ? "periodic_output" : "periodic_exemplar", key);
+  o.periodic = a.output ? r.periodic_output : r.periodic_exemplar;
   return std::make_unique<GaborRasterizer>(o);
 }
-
-// Both rasterizers' parameters, declared once (the frequency's default is the maps' own).
-json gabor_rasterizer_defaults() {
-  return json{{"base_frequency", GaborMapsOptions{}.base_frequency}, {"periodic_output", false}, {"periodic_exemplar", false}};
-}
-json gabor_rasterizer_bounds() { return json{{"base_frequency", "(0, inf)"}}; }
 
 }  // namespace
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::RasterizerRegistry, "gabor", ppsynth::gabor_rasterizer_defaults(), ppsynth::gabor_rasterizer_bounds(),
+PPSYNTH_REGISTER(ppsynth::RasterizerRegistry, "gabor", ppsynth::GaborRasterizerOptions::params().defaults(),
+                 ppsynth::GaborRasterizerOptions::params().bounds(),
                  "Gabor maps: 1 spatial + 9 frequency maps per attribute (paper Eq. 5)",
                  [](const ppsynth::json& p, const std::string& key, ppsynth::RasterizerArgs a) { return ppsynth::make(p, key, a, false); })
-PPSYNTH_REGISTER(ppsynth::RasterizerRegistry, "spatial", ppsynth::gabor_rasterizer_defaults(), ppsynth::gabor_rasterizer_bounds(),
+PPSYNTH_REGISTER(ppsynth::RasterizerRegistry, "spatial", ppsynth::GaborRasterizerOptions::params().defaults(),
+                 ppsynth::GaborRasterizerOptions::params().bounds(),
                  "spatial maps only (gamma = 0; Fig. 11, irregular-convolution features)",
                  [](const ppsynth::json& p, const std::string& key, ppsynth::RasterizerArgs a) { return ppsynth::make(p, key, a, true); })
 PPSYNTH_DEFAULTS_KIND("rasterizer", ppsynth::RasterizerRegistry)
+PPSYNTH_PARAM_DOCS("rasterizer", "gabor", [] { return ppsynth::GaborRasterizerOptions::params().docs(); })
+PPSYNTH_PARAM_DOCS("rasterizer", "spatial", [] { return ppsynth::GaborRasterizerOptions::params().docs(); })

@@ -1,5 +1,7 @@
 // "identity": no filter network (Fig. 12b, "Gabor only"): every block's features are the
 // maps themselves, so the losses act on the Gabor maps directly (published encode2).
+#include "core/config/param_docs.hpp"
+#include "core/config/params.hpp"
 #include "models/feature_net.hpp"
 
 namespace ppsynth {
@@ -12,12 +14,22 @@ class IdentityNet : public FeatureNet {
  private:
   int depth_;
 };
+
+struct IdentityOptions {
+  int depth = 3;
+  static const ParamTable<IdentityOptions>& params() {
+    static const ParamTable<IdentityOptions> t("method.feature_net", {
+        param("depth", &IdentityOptions::depth, "int [1, 16]", "feature layers, each the maps themselves"),
+    });
+    return t;
+  }
+};
 }  // namespace
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "identity", (ppsynth::json{{"depth", 3}}),
-                 (ppsynth::json{{"depth", "int [1, 16]"}}),
-                 "no filters: the maps themselves at every layer (Fig. 12b)",
+PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "identity", ppsynth::IdentityOptions::params().defaults(),
+                 ppsynth::IdentityOptions::params().bounds(), "no filters: the maps themselves at every layer (Fig. 12b)",
                  [](const ppsynth::json& p, const std::string& key, int, uint64_t) -> std::unique_ptr<ppsynth::FeatureNet> {
-                   return std::make_unique<ppsynth::IdentityNet>(p["depth"].get<int>());
+                   return std::make_unique<ppsynth::IdentityNet>(ppsynth::IdentityOptions::params().read(p, key).depth);
                  })
+PPSYNTH_PARAM_DOCS("feature_net", "identity", [] { return ppsynth::IdentityOptions::params().docs(); })
