@@ -1,15 +1,35 @@
 #!/usr/bin/env bash
-# Reproduces every figure, table and ablation of the paper (configs/paper/*.json) at full
-# settings, one report per config in OUT_DIR/NAME/index.html, and prints the wall time of each
-# and the total. Full settings take hours on a CPU; pass --quick for a smoke run (~minutes).
-# Usage: scripts/reproduce_all.sh [OUT_DIR] [PPSYNTH_BINARY] [--quick] [--set key=value ...]
-# Stops at the first failing config (its previous report is kept; see docs/howto/reproduce_a_figure.md).
+# Reproduces every figure, table and ablation of the paper (configs/paper/*.json), one report
+# per config in OUT_DIR/NAME/index.html, then the page over all of them: OUT_DIR/index.html
+# (and index.md): each paper claim beside our numbers, its verdict by the config's rule, and
+# the pictures (`ppsynth reproduce --page`). Prints the wall time of each config and the total.
+#
+# Usage: scripts/reproduce_all.sh [OUT_DIR] [PPSYNTH_BINARY] [--quick] [--seeds 95-99] [-j N]
+#                                 [--only "fig04 table1"] [--set key=value ...]
+#   --seeds S   every synthesized column over the seeds S, as one sweep per config in
+#               OUT_DIR/sweeps/NAME; a run any earlier config's sweep holds already (the same
+#               resolved config and seed: lines' default run feeds a dozen items) is copied,
+#               not run again, and a rerun of this script resumes where it stopped.
+#   -j N        runs at once per sweep (default 1)
+#   --only L    only these configs (names, space-separated)
+# Full settings take hours on a CPU; --quick is a smoke run. A config that fails is reported
+# and the others still run; the page shows what exists; the exit status is 1 when any failed.
+# A report already in OUT_DIR/NAME is replaced (--force): this script made it.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 out="${1:-reports}"
 bin="${2:-$root/build/ppsynth}"
 shift $(( $# >= 2 ? 2 : $# ))
-extra=("$@")
+extra=()
+seeds=""
+only=""
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --seeds) seeds="${2:?--seeds needs a value, e.g. 95-99}"; shift 2 ;;
+    --only) only="${2:?--only needs config names}"; shift 2 ;;
+    *) extra+=("$1"); shift ;;
+  esac
+done
 if [[ ! -x "$bin" ]]; then
   echo "reproduce_all: no ppsynth binary at $bin (build it, or pass its path as the 2nd argument)" >&2
   exit 2
@@ -17,18 +37,34 @@ fi
 mkdir -p "$out"
 start=$(date +%s)
 summary=()
+failed=()
 for cfg in "$root"/configs/paper/*.json; do
   name="$(basename "$cfg" .json)"
+  if [[ -n "$only" && " $only " != *" $name "* ]]; then continue; fi
+  args=(reproduce "$cfg" -o "$out/$name" "${extra[@]}")
+  [[ -f "$out/$name/report.json" ]] && args+=(--force)
+  if [[ -n "$seeds" ]]; then
+    args+=(--seeds "$seeds" --sweep "$out/sweeps/$name")
+    for runs in "$out"/sweeps/*/runs; do
+      [[ -d "$runs" && "$runs" != "$out/sweeps/$name/runs" ]] && args+=(--reuse "$runs")
+    done
+  fi
   t0=$(date +%s)
   echo "=== $name"
-  "$bin" reproduce "$cfg" -o "$out/$name" "${extra[@]}"
+  status=ok
+  "$bin" "${args[@]}" || { status=FAILED; failed+=("$name"); }
   t1=$(date +%s)
-  summary+=("$(printf '%-26s %6d s' "$name" $((t1 - t0)))")
+  summary+=("$(printf '%-26s %6d s  %s' "$name" $((t1 - t0)) "$status")")
 done
 end=$(date +%s)
+"$bin" reproduce --page "$out" || failed+=("(the page)")
 echo
 echo "wall time per config:"
 printf '  %s\n' "${summary[@]}"
 total=$((end - start))
-printf 'TOTAL wall time: %d s (%d min %d s) for %d configs; reports in %s\n' \
-  "$total" $((total / 60)) $((total % 60)) "${#summary[@]}" "$out"
+printf 'TOTAL wall time: %d s (%d min %d s) for %d configs; reports in %s, the page %s/index.html\n' \
+  "$total" $((total / 60)) $((total % 60)) "${#summary[@]}" "$out" "$out"
+if [[ ${#failed[@]} -gt 0 ]]; then
+  echo "FAILED: ${failed[*]}" >&2
+  exit 1
+fi

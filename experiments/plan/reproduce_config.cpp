@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <set>
 
 #include "optim/run/run_config.hpp"
@@ -24,7 +25,7 @@ json figure_defaults() {
   return json{{"name", ""},           {"title", ""},        {"claim", ""},         {"paper_ref", ""},
               {"description", ""},    {"kind", "figure"},   {"methods", {"ours"}}, {"method_params", nullptr},
               {"pending_methods", json::array()},           {"panels", json::array()},
-              {"tables", json::array()}};
+              {"tables", json::array()},                     {"rule", nullptr}};
 }
 
 json panel_defaults() {
@@ -177,6 +178,21 @@ void check_panel_runs(const ReproduceConfig& c, const PanelSpec& p, size_t i, co
   }
 }
 
+// What a rule's groups may name, per synthesis panel: its synthesized columns, "init" with
+// "ours" (each seed's ours run holds its initialization), "reference" with a published output.
+std::map<std::string, std::vector<std::string>> rule_columns(const ReproduceConfig& c) {
+  std::map<std::string, std::vector<std::string>> m;
+  for (const PanelSpec& p : c.panels) {
+    if (p.kind != "synthesis") continue;
+    auto& cols = m[p.name];
+    for (auto& col : p.methods)
+      if (col != "init" && col != "reference") cols.push_back(col);
+    if (std::count(p.methods.begin(), p.methods.end(), "ours")) cols.push_back("init");
+    if (!p.reference.empty()) cols.push_back("reference");
+  }
+  return m;
+}
+
 }  // namespace
 
 void check_reproduce_runs(const ReproduceConfig& c, const std::vector<std::string>& overrides) {
@@ -242,6 +258,7 @@ ReproduceConfig parse_reproduce_config(const json& config, const std::string& so
       ts.paper = t["paper"];
       c.tables.push_back(ts);
     }
+    if (!f["rule"].is_null()) c.rule = parse_reproduce_rule(f["rule"], rule_columns(c));
     return c;
   } catch (const InputError& e) {
     if (source.empty()) throw;

@@ -23,6 +23,7 @@
 //         "paper": {...} published numbers for this panel, shown beside ours } ],
 //     "tables": [ {"type": "comparison" | "relative_radius" | "runtime", "name", "caption",
 //                  "methods", "paper": {...}} ] }   each also written as CSV and Markdown.
+//     "rule": {...}   how the gathered numbers decide the verdict (reproduce_rule.hpp)
 //
 // Method columns: "ours" = the panel's run as configured; "init" = the initialization ours
 // started from; "reference" = the panel's "reference" file (the published code's output);
@@ -33,6 +34,8 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "experiments/plan/reproduce_rule.hpp"
 
 namespace ppsynth {
 
@@ -64,6 +67,7 @@ struct ReproduceConfig {
   std::vector<std::string> pending_methods;
   std::vector<PanelSpec> panels;
   std::vector<TableSpec> tables;
+  ReproduceRule rule;  // kind "" when the config states none
   json raw;  // the config after "parent" resolution (written into the report)
 };
 

@@ -9,6 +9,7 @@
 
 #include "core/revision.hpp"
 #include "experiments/report/report_tables.hpp"
+#include "experiments/report/verdict_html.hpp"
 #include "core/atomic_file.hpp"
 #include "core/render/plot_points.hpp"
 #include "core/report/html_report.hpp"
@@ -115,7 +116,9 @@ json add_panel_section(HtmlReport& rep, const ReproduceConfig& c, const Reproduc
   if (!s.paper.empty()) rep.add_code_block(s.paper.dump(2), "published numbers for this panel");
 
   json pj = {{"name", s.name}, {"title", s.title}, {"note", s.note}, {"exemplar", p.exemplar_source},
-             {"exemplar_points", p.exemplar.size()}, {"seconds", p.seconds}, {"columns", json::array()}};
+             {"exemplar_points", p.exemplar.size()}, {"seconds", p.seconds}, {"paper", s.paper}, {"images", json::array()},
+             {"columns", json::array()}};
+  for (auto& [img, caption] : p.images) pj["images"].push_back({{"file", img}, {"caption", caption}});
   for (auto& col : p.columns) {
     json cj = {{"column", col.column}, {"status", col.status}, {"source", col.source}, {"run_dir", col.run_dir},
                {"points", col.output.size()}, {"seconds", col.seconds}, {"synthesis_seconds", col.synthesis_seconds},
@@ -227,6 +230,13 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
                       {"total wall time", seconds_text(r.seconds)},
                       {"written", date}});
 
+  const json verdict = verdict_json(judge_item(c.rule, r.numbers));
+  const json numbers = numbers_json(r.numbers);
+  add_verdict_section(rep, verdict);
+  add_numbers_table(rep, numbers, shown_metrics(c.rule),
+                    "Our numbers per group: median [min - max] (seeds)" + std::string(r.sweep_dir.empty() ? ", one seed" : " over the seeds") +
+                        "; 'init' is the initialization each seed's 'ours' started from, 'reference' the published code's output");
+
   // Which of our exemplars stands in for the paper's.
   std::vector<std::vector<std::string>> subst;
   for (auto& p : r.panels) {
@@ -256,9 +266,12 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
   add_wide_table(rep, mt, "  [metrics.csv, metrics.md]");
   add_seed_section(rep, r);
 
-  json report = {{"name", c.name}, {"title", c.title}, {"claim", c.claim}, {"paper_ref", c.paper_ref},
+  json report = {{"name", c.name}, {"title", c.title}, {"claim", c.claim}, {"paper_ref", c.paper_ref}, {"kind", c.kind},
                  {"config", c.source}, {"quick", r.quick}, {"revision", revision()}, {"seconds", r.seconds},
-                 {"overrides", o.overrides}, {"panels", json::array()}, {"tables", json::array()}};
+                 {"overrides", o.overrides}, {"seeds", o.seeds}, {"sweep", r.sweep_dir},
+                 {"figure", fs::exists(dir + "/figure.png") ? "figure.png" : ""},
+                 {"rule", c.raw.contains("rule") ? c.raw["rule"] : json(nullptr)}, {"verdict", verdict}, {"numbers", numbers},
+                 {"panels", json::array()}, {"tables", json::array()}};
   for (auto& t : c.tables) report["tables"].push_back(t.name);
 
   for (auto& p : r.panels) report["panels"].push_back(add_panel_section(rep, c, r, p));

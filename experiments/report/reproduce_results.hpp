@@ -3,6 +3,7 @@
 // made (ReproduceResult: per panel, per column, the points, metrics and times; the statistics
 // over seeds). The runner (experiments/reproduce) fills them; the report writers read them,
 // so the writers depend on these types and not on the runner.
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "core/point_set.hpp"
 #include "optim/method/stage_record.hpp"
 #include "experiments/gather/gather.hpp"
+#include "experiments/report/reproduce_verdict.hpp"
 
 namespace ppsynth {
 
@@ -33,6 +35,8 @@ struct ReproduceOptions {
   int jobs = 1;             // its tasks at once, here
   std::string task_binary;  // the ppsynth executable that runs its tasks (`ppsynth sweep task`)
   bool plan_only = false;   // plan the sweep and return (run it elsewhere: `ppsynth sweep run DIR --slurm`)
+  // Set by the runner over seeds: panel -> the generated exemplar file its sweep's runs read.
+  std::map<std::string, std::string> generated_exemplars;
 };
 
 struct ColumnResult {
@@ -63,6 +67,7 @@ struct ReproduceResult {
   std::string dir;        // the final report directory ("" after plan_only)
   std::string sweep_dir;  // the sweep over seeds ("" without --seeds)
   GatherResult seeds;     // its statistics (gathered into <dir>/seeds)
+  ItemNumbers numbers;    // what the rule's verdict reads (experiments/reproduce/reproduce_numbers.hpp)
   std::vector<PanelResult> panels;
   double seconds = 0;
   bool quick = false;

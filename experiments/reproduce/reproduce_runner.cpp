@@ -10,6 +10,11 @@
 #include "experiments/execute/sweep_executors.hpp"
 #include "experiments/execute/sweep_runs.hpp"
 #include "experiments/reproduce/reproduce_gabor_maps.hpp"
+#include "experiments/reproduce/reproduce_numbers.hpp"
+#include "experiments/plan/sweep_plan.hpp"
+#include "core/content_hash.hpp"
+#include "core/formats/text_table.hpp"
+#include "optim/run/run_store.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/run/run_synthesis.hpp"
 #include "core/atomic_file.hpp"
@@ -33,16 +38,27 @@ using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// The exemplar of a panel with "exemplar_generator": generated, written into the panel folder.
-std::string generate_exemplar(const PanelSpec& p, bool quick, const std::string& panel_dir, std::string& description) {
+// The exemplar of a panel with "exemplar_generator", and its description.
+PointSet generated_points(const PanelSpec& p, bool quick, std::string& description) {
   json spec = p.generator["generator"];
   if (quick && !p.generator["quick"].is_null()) spec = merge(spec, p.generator["quick"]);
   const size_t n = p.generator["n"].get<size_t>();
   const uint64_t seed = p.generator["seed"].get<uint64_t>();
-  PointSet ps = generate_points(spec, n, seed, Domain{}, "panels." + p.name + ".exemplar_generator.generator");
+  description = spec.dump() + ", n = " + std::to_string(n) + ", seed " + std::to_string(seed);
+  return generate_points(spec, n, seed, Domain{}, "panels." + p.name + ".exemplar_generator.generator");
+}
+
+// Generated, written into the panel folder; or, over seeds, the file the sweep's runs use
+// (`shared`: written before the sweep, so the panel's run is the sweep's seed run).
+std::string generate_exemplar(const PanelSpec& p, const ReproduceOptions& o, const std::string& panel_dir, std::string& description) {
+  const PointSet ps = generated_points(p, o.quick, description);
+  if (auto it = o.generated_exemplars.find(p.name); it != o.generated_exemplars.end()) {
+    description += " (" + it->second + ")";
+    return it->second;
+  }
   const std::string path = panel_dir + "/exemplar.txt";
   write_points(path, ps, Format::Plain);
-  description = spec.dump() + ", n = " + std::to_string(n) + ", seed " + std::to_string(seed) + " (panels/" + p.name + "/exemplar.txt)";
+  description += " (panels/" + p.name + "/exemplar.txt)";
   return fs::absolute(path).string();
 }
 
@@ -130,7 +146,7 @@ void run_panel(const ReproduceConfig& c, const PanelSpec& p, const ReproduceOpti
   std::string generated;
   if (!p.generator.is_null()) {
     const auto tg = Clock::now();
-    generated = generate_exemplar(p, o.quick, panel_dir, pr.exemplar_source);
+    generated = generate_exemplar(p, o, panel_dir, pr.exemplar_source);
     spdlog::info("[{}/{}] generated exemplar in {:.1f} s", c.name, p.name, since(tg));
   }
 
@@ -209,24 +225,6 @@ void run_panel(const ReproduceConfig& c, const PanelSpec& p, const ReproduceOpti
   pr.seconds = since(t0);
 }
 
-}  // namespace
-
-int total_iterations(const std::vector<StageRecord>& stages, const json& stats) {
-  if (!stages.empty()) {
-    int n = 0;
-    for (const StageRecord& s : stages) n += s.iterations;
-    return n;
-  }
-  if (!stats.is_object()) return 0;
-  if (stats.contains("scales") && stats["scales"].is_array()) {  // roveri2015: merging steps per scale
-    int n = 0;
-    for (auto& s : stats["scales"]) n += s.value("merge_iterations", 0);
-    return n;
-  }
-  return stats.value("iterations", 0);
-}
-
-namespace {
 
 // The config restricted to the panels named in `names` (all when empty); an unknown name is
 // an error listing the panels there are.
@@ -248,17 +246,76 @@ ReproduceConfig select_panels(const ReproduceConfig& c, const std::vector<std::s
   return r;
 }
 
+std::string sweep_dir_of(const ReproduceConfig& c, const ReproduceOptions& o) {
+  return o.sweep_dir.empty() ? "sweeps/" + c.name + (o.quick ? "-quick" : "") : o.sweep_dir;
+}
+
+// Over seeds, a panel's generated exemplar is one file that every seed's runs and the report's
+// panel share, in generated-exemplars/ beside the sweep directory, named by its content: the
+// sweeps there that generate the same exemplar (Table 1 and Fig. 5's CCVT) name the same file,
+// so --reuse matches their runs, and a changed generator makes a new file, so new runs, never a
+// stale match. The sweep plans from a copy of the figure config (there too) whose generated
+// panels read that file. Returns the config file to plan.
+std::string write_sweep_inputs(const ReproduceConfig& c, ReproduceOptions& o, const std::string& sweep_dir) {
+  if (std::none_of(c.panels.begin(), c.panels.end(), [](const PanelSpec& p) { return !p.generator.is_null(); })) return c.source;
+  const fs::path dir = fs::absolute(sweep_dir).lexically_normal().parent_path() / "generated-exemplars";
+  fs::create_directories(dir);
+  json figure = c.raw;
+  figure["name"] = c.name;
+  figure.erase("rule");  // it may name panels left out below; planning needs the runs only
+  json panels = json::array();
+  for (json pj : figure["panels"]) {
+    const auto p = std::find_if(c.panels.begin(), c.panels.end(), [&](const PanelSpec& s) { return s.name == pj.value("name", ""); });
+    if (p == c.panels.end()) continue;  // left out by --panels
+    pj["run"] = p->run;                 // its "parent" merged already: the copy lives elsewhere
+    panels.push_back(pj);
+    if (p->generator.is_null()) continue;
+    std::string description;
+    const PointSet ps = generated_points(*p, o.quick, description);
+    const std::string tmp = (dir / (c.name + "-" + p->name + ".partial")).string();
+    write_points(tmp, ps, Format::Plain);
+    const fs::path file = dir / ("exemplar-" + content_hash(read_file_text(tmp)).substr(0, 12) + ".txt");
+    fs::rename(tmp, file);
+    o.generated_exemplars[p->name] = file.string();
+    panels.back().erase("exemplar_generator");
+    panels.back()["run"]["exemplar"] = file.string();
+    panels.back()["run"]["format"] = "plain";
+  }
+  figure["panels"] = panels;
+  const std::string text = figure.dump(2) + "\n";
+  const std::string path = (dir / (c.name + "-" + content_hash(text).substr(0, 12) + ".json")).string();
+  write_text_atomic(path, text);
+  return path;
+}
+
+// Runs of the sweep not made yet whose resolved config a finished run under --reuse has: copied
+// in, seed by seed, so they are not run again.
+void reuse_into_sweep(const std::string& sweep_dir, const std::vector<std::string>& reuse) {
+  if (reuse.empty()) return;
+  for (const SweepRow& row : load_sweep(sweep_dir).rows) {
+    const fs::path d = fs::path(sweep_dir) / row.dir;
+    if (fs::exists(d)) continue;
+    const std::string found = find_matching_run(row.config, row.quick, reuse);
+    if (found.empty()) continue;
+    spdlog::info("[{}] {}: reusing the finished run {}", row.id, row.label, found);
+    fs::create_directories(d.parent_path());
+    fs::copy(found, d, fs::copy_options::recursive);
+  }
+}
+
 // Every synthesized column of the selected panels over the seeds, as a sweep planned and run
 // here (or only planned). Returns the sweep's directory once every run of it is done.
-std::string run_seed_sweep(const ReproduceConfig& c, const ReproduceOptions& o) {
+std::string run_seed_sweep(const ReproduceConfig& c, ReproduceOptions& o) {
   if (c.source.empty()) throw InputError("--seeds: the figure config must be a file (a sweep names it)");
-  json spec = {{"name", c.name + "-seeds"}, {"figures", {c.source}}, {"seeds", o.seeds}, {"quick", o.quick}, {"set", o.overrides}};
+  const std::string dir = sweep_dir_of(c, o);
+  const std::string figure = write_sweep_inputs(c, o, dir);
+  json spec = {{"name", c.name + "-seeds"}, {"figures", {figure}}, {"seeds", o.seeds}, {"quick", o.quick}, {"set", o.overrides}};
   std::vector<std::string> panels;
   for (const auto& p : c.panels) panels.push_back(p.name);
   if (!o.panels.empty()) spec["panels"] = panels;
-  const std::string dir = o.sweep_dir.empty() ? "sweeps/" + c.name + (o.quick ? "-quick" : "") : o.sweep_dir;
   const PlanSummary plan = plan_sweep(expand_sweep_spec(spec, c.source, fs::path(c.source).parent_path().string()), dir);
   spdlog::info("[{}] over seeds {}: {} runs in the sweep {}", c.name, o.seeds, plan.rows, plan.dir);
+  reuse_into_sweep(plan.dir, o.reuse);
   if (o.plan_only) return plan.dir;
   if (o.task_binary.empty()) throw InputError("--seeds: no executable to run the sweep's tasks with");
   LocalExecution how;
@@ -308,6 +365,7 @@ ReproduceResult run_reproduction(const ReproduceConfig& config, const ReproduceO
       res.seeds = gather_runs({res.sweep_dir}, GatherOptions{});
       write_gather(res.seeds, res.dir + "/seeds", false);
     }
+    res.numbers = collect_item_numbers(c, res);
     res.seconds = since(t0);
     write_reproduce_report(c, res, o);
     dir.mark_complete();

@@ -22,14 +22,11 @@
 #include "core/point_set.hpp"
 #include "experiments/plan/reproduce_config.hpp"
 #include "experiments/report/reproduce_results.hpp"
+#include "experiments/reproduce/reproduce_numbers.hpp"  // total_iterations
 
 namespace ppsynth {
 
 // Runs every panel and writes the report (with --seeds, after the sweep over seeds finished).
 ReproduceResult run_reproduction(const ReproduceConfig& config, const ReproduceOptions& options);
-
-// Sum of the optimization iterations a method reported: over its stages (Gabor), else from its
-// stats (roveri2015: merging steps per scale; pcf2017: its iterations).
-int total_iterations(const std::vector<StageRecord>& stages, const nlohmann::json& stats);
 
 }  // namespace ppsynth

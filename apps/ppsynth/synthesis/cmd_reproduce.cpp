@@ -1,5 +1,5 @@
 // `ppsynth reproduce NAME [--quick] [--out DIR] [--set key=value ...] [--seeds 95-99 [-j N] [--plan-only]]`
-// `ppsynth reproduce --list` | `ppsynth reproduce --check [NAME...]`
+// `ppsynth reproduce --list` | `--check [NAME...]` | `--rules` | `--page DIR`
 // Re-runs a published experiment (a figure, table or ablation of Huang et al. 2022) from its
 // config in configs/paper/ and writes a self-contained report (reports/NAME/index.html, plus
 // CSV/Markdown tables). Schema: experiments/plan/reproduce_config.hpp, docs/howto/reproduce_a_figure.md.
@@ -10,6 +10,8 @@
 #include "apps/ppsynth/option_checks.hpp"
 #include "apps/ppsynth/output_files.hpp"
 #include "experiments/plan/reproduce_config.hpp"
+#include "experiments/report/reproduce_page.hpp"
+#include "experiments/report/verdict_html.hpp"
 #include "experiments/reproduce/reproduce_runner.hpp"
 #include "core/error.hpp"
 #include "optim/run/runtime.hpp"
@@ -18,8 +20,8 @@ namespace {
 
 struct Opts {
   std::vector<std::string> names, sets, reuse, panels;
-  std::string out, seeds, sweep;
-  bool quick = false, list = false, check = false, force = false, plan_only = false;
+  std::string out, seeds, sweep, page;
+  bool quick = false, list = false, check = false, force = false, plan_only = false, rules = false;
   int jobs = 1;
 };
 
@@ -27,7 +29,11 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   auto o = std::make_shared<Opts>();
   app.add_option("name", o->names, "config name in configs/paper (e.g. fig05, table1) or a path to a .json config");
   app.add_flag("--list", o->list, "list the configs in configs/paper");
+  app.add_flag("--rules", o->rules, "print every config's rule (how its verdict is decided) as a Markdown table");
   app.add_flag("--check", o->check, "validate the named configs (all of configs/paper if none) without running");
+  app.add_option("--page", o->page, "write DIR/index.html and DIR/index.md: every report in DIR/NAME with its verdict by rule, "
+                                    "our numbers beside the paper's claim, and its pictures (scripts/reproduce_all.sh)")
+      ->check(ppsynth::app::path_text());
   app.add_flag("--quick", o->quick, "small grids, few iterations, few filters (smoke test)");
   app.add_option("-o,--out", o->out, "report directory (default reports/NAME); must be new or empty")
       ->check(ppsynth::app::path_text());
@@ -54,6 +60,16 @@ ppsynth::app::RunFn setup(CLI::App& app) {
           std::printf("%-24s INVALID: %s\n", fs::path(f).stem().c_str(), e.what());
         }
       }
+      return 0;
+    }
+    if (o->rules) {
+      std::cout << rules_markdown(list_reproduce_configs(paper_config_dir()));
+      return 0;
+    }
+    if (!o->page.empty()) {
+      if (!o->names.empty()) throw InputError("--page reads the reports in DIR: give no config name");
+      const size_t n = write_reproduce_page(o->page);
+      std::cout << o->page << "/index.html (" << n << " reports)\n";
       return 0;
     }
     if (o->check) {

@@ -1,0 +1,18 @@
+#pragma once
+// The numbers a paper item's verdict reads (experiments/report/reproduce_verdict.hpp), per
+// group "panel/column", metric and seed: with --seeds from every run of the sweep (each run's
+// metrics.json as gather pooled it, its overlapping disk pairs and iterations, and its
+// initialization evaluated as the group "panel/init"); without, from the report's own
+// columns (one seed). A panel's published output ("reference" file) is a group drawn once.
+#include "experiments/plan/reproduce_config.hpp"
+#include "experiments/report/reproduce_results.hpp"
+
+namespace ppsynth {
+
+ItemNumbers collect_item_numbers(const ReproduceConfig& config, const ReproduceResult& result);
+
+// Sum of the optimization iterations a method reported: over its stages (Gabor), else from its
+// stats (roveri2015: merging steps per scale; pcf2017: its iterations).
+int total_iterations(const std::vector<StageRecord>& stages, const nlohmann::json& stats);
+
+}  // namespace ppsynth
