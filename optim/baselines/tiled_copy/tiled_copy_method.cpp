@@ -15,6 +15,8 @@
 #include <random>
 
 #include "core/config/config.hpp"
+#include "core/config/param_docs.hpp"
+#include "core/config/params.hpp"
 #include "core/error.hpp"
 #include "optim/method/method.hpp"
 
@@ -22,10 +24,22 @@ namespace ppsynth {
 
 namespace {
 
+// Its one key, declared once: the offset, null (seeded random) or [x, y] (each in its bound).
+struct TiledCopyOptions {
+  nlohmann::json offset;
+  static const ParamTable<TiledCopyOptions>& params() {
+    static const ParamTable<TiledCopyOptions> t("method", {
+        param("offset", &TiledCopyOptions::offset, "[-1e6, 1e6]",
+              "null: a seeded random shift; or [x, y] (output units: the unit square, or exemplar units on a rectangle)"),
+    });
+    return t;
+  }
+};
+
 class TiledCopyMethod : public SynthesisMethod {
  public:
   TiledCopyMethod(const nlohmann::json& p, const std::string& key) {
-    const auto& o = p.at("offset");
+    const nlohmann::json o = TiledCopyOptions::params().read(p, key).offset;
     if (o.is_null()) return;
     if (!o.is_array() || o.size() != 2 || !o[0].is_number() || !o[1].is_number())
       throw config_error(key + ".offset",
@@ -86,9 +100,10 @@ class TiledCopyMethod : public SynthesisMethod {
 
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::MethodRegistry, "tiled_copy", (nlohmann::json{{"offset", nullptr}}),
-                 (nlohmann::json{{"offset", "[-1e6, 1e6]"}}),
+PPSYNTH_REGISTER(ppsynth::MethodRegistry, "tiled_copy", ppsynth::TiledCopyOptions::params().defaults(),
+                 ppsynth::TiledCopyOptions::params().bounds(),
                  "the exemplar tiled u x u (or over an output rectangle), shifted (offset null = seeded random, or [x, y]): the copy baseline",
                  [](const nlohmann::json& p, const std::string& key) -> std::unique_ptr<ppsynth::SynthesisMethod> {
                    return std::make_unique<ppsynth::TiledCopyMethod>(p, key);
                  })
+PPSYNTH_PARAM_DOCS("method", "tiled_copy", [] { return ppsynth::TiledCopyOptions::params().docs(); })
