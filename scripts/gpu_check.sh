@@ -131,7 +131,7 @@ if ppsynth sweep plan "$work/lines_seeds.json" -o "$work/sweep" > "$out/sweep.lo
   s0=$(date +%s.%N)
   timeout "$(left)" "$bin/ppsynth" sweep run "$work/sweep" --local >> "$out/sweep.log" 2>&1 || say "the sweep did not finish (rc $?)"
   python3 -c "import sys; print(float(sys.argv[2]) - float(sys.argv[1]))" "$s0" "$(date +%s.%N)" > "$work/sweep_seconds"
-  grep -E "at once|done \(" "$out/sweep.log" | sed 's/^/  /' | tee -a "$summary"
+  grep -E "at once|rows on CUDA|done \(" "$out/sweep.log" | sed 's/^/  /' | tee -a "$summary"
 else
   say "sweep plan FAILED (sweep.log)"
 fi

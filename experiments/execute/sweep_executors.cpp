@@ -194,8 +194,9 @@ ExecutionSummary execute_local(const std::string& sweep_dir, const LocalExecutio
   work.rows = queue.size();
   const LocalSlots slots = plan_local_slots(how, machine, work);
   const int threads = slots.threads;
-  spdlog::info("sweep {}: {} runs to do, {} done or running; {} at once ({}), {} thread{} each", m.name, queue.size(),
-               sum.skipped, slots.jobs, slots.reason, threads, threads == 1 ? "" : "s");
+  spdlog::info("sweep {}: {} runs to do, {} done or running; {} at once, {} thread{} each", m.name, queue.size(),
+               sum.skipped, slots.jobs, threads, threads == 1 ? "" : "s");
+  if (slots.runs_per_device > 0) spdlog::info("sweep {}: rows on CUDA: {}", m.name, slots.reason);
   std::vector<std::vector<std::string>> env_of_slot;
   for (int card : slots.card_of_slot) env_of_slot.push_back(task_environment(threads, card));
   std::vector<bool> slot_busy(static_cast<size_t>(slots.jobs), false);
