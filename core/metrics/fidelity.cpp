@@ -164,12 +164,12 @@ json fidelity_report(const PointSet& exemplar, const PointSet& output_in, double
     }
     j["name"] = name_of(exemplar, row);
     // The row's intensity (its second class, as spatstat's cross functions) sets its spacing
-    // and spatstat's cap on r.
+    // and the cap on r.
     const PointSet& second = row.kind == "pair" ? ex_split.cls[static_cast<size_t>(row.cj)]
                              : row.kind == "class" ? ex_split.cls[static_cast<size_t>(row.ci)]
                                                    : ex;
     const double lambda = static_cast<double>(second.size()) / A;
-    const double r_max = std::min(quarter, lambda > 0 ? std::sqrt(1000 / (M_PI * lambda)) : quarter);
+    const double r_max = std::min(quarter, lambda > 0 ? kFidelityMaxSpacings / std::sqrt(lambda) : quarter);
     Curve r(static_cast<size_t>(opt.r_values));
     for (size_t k = 0; k < r.size(); ++k) r[k] = r_max * static_cast<double>(k + 1) / opt.r_values;
     j["r_max"] = r_max;

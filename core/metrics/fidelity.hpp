@@ -5,8 +5,8 @@
 // Per row (all points, each class, each class pair up to kMaxFidelityPairClasses classes, the
 // mark correlation of every attribute both sets carry), both patterns in exemplar units (the
 // output's coordinates over the zoom), on one r grid of r_values radii up to r_max = the
-// sub-windows' quarter side (spatstat's rule on the windows the spread comes from), capped by
-// spatstat's sqrt(1000 / (pi lambda)):
+// sub-windows' quarter side (spatstat's rule on the windows the spread comes from), capped at
+// kFidelityMaxSpacings mean spacings of the row:
 //   "l": sup_r |L_out - L_ex| in the row's mean spacings 1 / sqrt(lambda) (lambda: the
 //        exemplar's intensity of the row's second class, as spatstat's cross functions);
 //   "g": the root mean square of g_out - g_ex over the radii from the kernel's half-width h up
@@ -39,6 +39,11 @@ namespace ppsynth {
 
 // Class pairs have rows up to this many classes (28 pairs), each costing `windows` K and g.
 inline constexpr int kMaxFidelityPairClasses = 8;
+// r stops at this many of the row's mean spacings 1 / sqrt(lambda) (about 113 neighbours a
+// point): structure beyond a few spacings is the density's, and the pairs, the cost, grow as
+// r^2 (spatstat's cap is 17.8 spacings). An exemplar of up to about 2300 points per square of
+// its shorter side reaches the quarter first: every calibrated one does.
+inline constexpr double kFidelityMaxSpacings = 6;
 // A row with fewer sub-windows holding its points cannot judge: a band needs draws.
 inline constexpr size_t kMinFidelityDraws = 16;
 // The share of independent realizations the default band leaves out, per distance, as measured.
