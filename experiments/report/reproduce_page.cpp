@@ -23,8 +23,11 @@ using json = nlohmann::json;
 
 const char* kMarker = "<!-- ppsynth: reproduction page -->";
 
-int kind_rank(const std::string& kind) {
-  return kind == "figure" ? 0 : kind == "table" ? 1 : kind == "supplement" ? 2 : 3;
+// The paper's order: its figures (ablations among them), tables, the supplement, then the rest.
+int item_rank(const std::string& name) {
+  for (auto [prefix, rank] : {std::pair<const char*, int>{"fig", 0}, {"table", 1}, {"suppl", 2}})
+    if (name.rfind(prefix, 0) == 0) return rank;
+  return 3;
 }
 
 // "fig03" before "fig10": the digits compared as numbers.
@@ -54,8 +57,8 @@ std::vector<Item> read_reports(const std::string& dir) {
     items.push_back({e.path().filename().string(), j});
   }
   std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) {
-    const auto ka = std::make_tuple(kind_rank(a.report.value("kind", "")), natural(a.dir));
-    const auto kb = std::make_tuple(kind_rank(b.report.value("kind", "")), natural(b.dir));
+    const auto ka = std::make_tuple(item_rank(a.dir), natural(a.dir));
+    const auto kb = std::make_tuple(item_rank(b.dir), natural(b.dir));
     return ka < kb;
   });
   return items;

@@ -344,7 +344,13 @@ ReproduceResult run_reproduction(const ReproduceConfig& config, const ReproduceO
   }
   ReproduceResult res;
   res.quick = o.quick;
-  if (!o.seeds.empty()) {
+  // Fig. 3 draws maps only: over seeds there is nothing to run, and its report is the one seed's.
+  const bool synthesizes = std::any_of(c.panels.begin(), c.panels.end(), [](const PanelSpec& p) {
+    return p.kind == "synthesis" && std::any_of(p.methods.begin(), p.methods.end(), [](const std::string& m) {
+             return m != "init" && m != "reference" && method_available(m);
+           });
+  });
+  if (!o.seeds.empty() && synthesizes) {
     res.sweep_dir = run_seed_sweep(c, o);
     if (o.plan_only) return res;
     o.reuse.push_back(res.sweep_dir + "/runs");  // the panels show the config seed's runs
