@@ -20,10 +20,6 @@ nlohmann::json presets() {
       //   - the "pattern" stopping rule: a sigma stage ends when the PCF of its points stops
       //     improving, checked every 5 iterations, and ends on its best checked iterate (a
       //     stage whose pattern got worse while its loss still fell gives back what it lost);
-      //   - the class_own map term: a later class's loss also on its own maps. On the joint
-      //     maps alone a later class fills the holes the earlier ones left, and its own spacing
-      //     can end worse than its random start (docs/lab/later_classes/). It acts on nothing
-      //     for a one-class exemplar, whose runs it leaves unchanged.
       // On a CUDA device "auto" is bf16 from compute capability 8.0 (bf16 tensor cores).
       // Where bf16 would be emulated, the network runs float32, and "without_bf16_units" buys
       // back the time bf16 would have saved with fewer filters, where that costs no quality:
@@ -31,13 +27,12 @@ nlohmann::json presets() {
       // share the filters; models/feature_net.hpp has the measurement).
       {"fast",
        {{"description", "the network in bf16 where the device has bf16 units (a CPU's AVX512_BF16 or AMX, a CUDA card's tensor cores), per-sigma grids, and stages that stop when the "
-                        "pattern stops improving and keep its best, a later class's loss also on its own maps; without bf16 units, a float32 network of 64 filters for one class (120 for several)"},
+                        "pattern stops improving and keep its best; without bf16 units, a float32 network of 64 filters for one class (120 for several)"},
         {"config",
          {{"method",
            {{"feature_net", {{"precision", "auto"}}},
             {"grid", {{"per_sigma", true}}},
-            {"convergence", {{"type", "pattern"}, {"end_on", "best"}, {"check_every", 5}}},
-            {"map_terms", {{"class_own", {{"weight", 1.0}}}}}}}}},
+            {"convergence", {{"type", "pattern"}, {"end_on", "best"}, {"check_every", 5}}}}}}},
         {"without_bf16_units",
          {{"method", {{"feature_net", {{"channels", {{"one_class", 64}, {"several_classes", 120}}}}}}}}}}},
   };

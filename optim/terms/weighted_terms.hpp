@@ -2,8 +2,9 @@
 // The config shape shared by the optional loss terms beside the paper's (point terms,
 // optim/terms/point_term.hpp; map terms, optim/gabor/stages/map_term.hpp):
 //   "<key>": {"<registered name>": {"weight": w, ...params}, ...}
-// A term is on when its weight is > 0; unknown names, unknown keys and a missing or negative
-// weight are refused, naming the key path (method.<key>.<name>...).
+// A term is on when its weight is > 0; a term registered with a weight > 0 is on unless the
+// config sets its weight to 0. Unknown names, unknown keys and a missing or negative weight are
+// refused, naming the key path (method.<key>.<name>...).
 #include <cmath>
 #include <memory>
 #include <string>
@@ -27,9 +28,15 @@ struct WeightedTerm {
 template <class Term>
 std::vector<WeightedTerm<Term>> create_weighted_terms(const nlohmann::json& terms, const std::string& key) {
   std::vector<WeightedTerm<Term>> out;
-  if (terms.is_null()) return out;
-  if (!terms.is_object()) throw config_error(key, "expected an object {\"name\": {\"weight\": w, ...}}");
-  for (auto it = terms.begin(); it != terms.end(); ++it) {
+  if (!terms.is_null() && !terms.is_object()) throw config_error(key, "expected an object {\"name\": {\"weight\": w, ...}}");
+  nlohmann::json named = terms.is_null() ? nlohmann::json::object() : terms;
+  const auto& registry = Registry<Term>::instance();
+  for (const auto& n : registry.names()) {  // the terms on by default
+    const nlohmann::json& d = registry.entry(n).defaults;
+    if (!named.contains(n) && d.contains("weight") && d["weight"].is_number() && d["weight"].get<double>() > 0)
+      named[n] = nlohmann::json::object();
+  }
+  for (auto it = named.begin(); it != named.end(); ++it) {
     const std::string kp = key + "." + it.key();
     nlohmann::json spec = it.value().is_null() ? nlohmann::json::object() : it.value();
     if (!spec.is_object()) throw config_error(kp, "expected an object {\"weight\": w, ...}");

@@ -109,6 +109,7 @@ TEST_CASE("the paper's choices where the defaults differ are pinned once, in con
   // A default that changes (the border relax became one) is then one edit, not one per config.
   const json published = ppsynth::load_config((kConfigs / "methods" / "gabor_published.json").string());
   CHECK(published["method"]["border_relax"]["iterations"] == 0);
+  CHECK(published["method"]["map_terms"]["class_own"]["weight"] == 0);  // a later class on the joint maps alone
   for (auto& f : json_files(kConfigs / "runs")) {
     INFO(f.string());
     std::ifstream in(f);
@@ -119,6 +120,8 @@ TEST_CASE("the paper's choices where the defaults differ are pinned once, in con
   }
   const json lines = ppsynth::resolve_run_config(ppsynth::load_config((kConfigs / "runs" / "lines.json").string()), {});
   CHECK(lines["method"]["border_relax"]["iterations"] == 0);  // through the parent
+  const json two = ppsynth::resolve_run_config(ppsynth::load_config((kConfigs / "runs" / "poisson_n64c2_point.json").string()), {});
+  CHECK(two["method"]["map_terms"]["class_own"]["weight"] == 0);
 }
 
 TEST_CASE("every paper config (configs/paper) reproduces with --quick", "[apps][configs][reproduce]") {

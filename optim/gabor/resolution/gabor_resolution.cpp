@@ -196,7 +196,8 @@ GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, co
                                          "(output.size or output.points) takes output.border instead");
   const bool map_terms = map_terms_act(o.map_terms, exemplar.num_classes());
   if (s.measure != GaborOptions::Measure::grid && map_terms)
-    throw config_error("method.measure", named + " does not combine with method.map_terms (their maps are the unrolled grid's)");
+    throw config_error("method.measure", named + " does not combine with method.map_terms (their maps are the unrolled grid's); "
+                                         "on several classes set method.map_terms.class_own.weight=0, which is on by default");
   s.rectangle = shape.rectangle;
   s.quick = quick;
   class_end_kinds(s);  // each kind refuses here a block it cannot run

@@ -40,8 +40,10 @@ const ParamTable<GaborOptions>& GaborOptions::params() {
       // "loss" (the paper's) or "pattern" (the PCF stops improving): optim/steps/stopping_rule.hpp.
       param("convergence", &G::convergence, "", "when a sigma stage stops before max_iterations (a convergence spec)"),
       param("init", &G::init, "", "the output's first points (an initializer spec)"),
-      // Not in the paper (optim/gabor/stages/map_term.hpp): {"class_own": {"weight": 1}}.
-      param("map_terms", &G::map_terms, "", "losses on maps of their own, by registered name; {} = the paper"),
+      // Not in the paper (optim/gabor/stages/map_term.hpp).
+      param("map_terms", &G::map_terms, "",
+            "losses on maps of their own, by registered name; class_own is on (weight 1) unless set to 0, and acts "
+            "from a second class on; {\"class_own\": {\"weight\": 0}} = the paper"),
       // Not in the paper (optim/terms/point_term.hpp): {"separation": {"weight": 1}, "pcf_match": {"weight": 10}}.
       param("terms", &G::terms, "", "losses on the positions themselves, by registered name; {} = the paper"),
   });

@@ -48,6 +48,8 @@ struct GaborOptions {
   nlohmann::json optimizer = {{"type", "adam"}};
   nlohmann::json convergence = {{"type", "loss"}};
   nlohmann::json init = {{"type", "best_candidate"}};
+  // A term whose registered weight is > 0 is on without being named here (class_own:
+  // optim/terms/weighted_terms.hpp); configs/methods/gabor_published.json sets it to 0.
   nlohmann::json map_terms = nlohmann::json::object();
   nlohmann::json terms = nlohmann::json::object();
 

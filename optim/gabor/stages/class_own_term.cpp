@@ -63,7 +63,9 @@ torch::Tensor ClassOwnMapTerm::evaluate(const torch::Tensor& moving, const torch
 
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::MapTermRegistry, "class_own", (nlohmann::json{{"weight", 0.0}}),
+// On by default (weight 1): on the joint maps alone a later class fills the holes the earlier
+// ones left, whatever its own spacing (docs/explanation/method.md, "Beyond the paper").
+PPSYNTH_REGISTER(ppsynth::MapTermRegistry, "class_own", (nlohmann::json{{"weight", 1.0}}),
                  (nlohmann::json{{"weight", "[0, inf)"}}),
                  "from the second class on, the loss on the moving class's own maps vs the exemplar class's own",
                  [](const nlohmann::json&, const std::string&) -> std::unique_ptr<ppsynth::MapTerm> {

@@ -149,7 +149,8 @@ TEST_CASE("a tiles or rolled run resumes from any checkpoint bit for bit, and di
     INFO(measure << ", " << classes << " classes, disks " << disks);
     const PointSet ex = test::small_exemplar(classes, disks);
     auto run = [&](const std::string& measure, const std::string* resume, std::vector<std::string>* saved) {
-      auto r = test::checkpointed_run(json{{"type", "gabor"}, {"measure", measure},
+      // class_own (on by default) measures the unrolled grid: the paper's loss alone here
+      auto r = test::checkpointed_run(json{{"type", "gabor"}, {"measure", measure}, {"map_terms", {{"class_own", {{"weight", 0}}}}},
                                            {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 6}, {"num_sigmas", 2}}}},
                                       ex, 5, resume);
       if (saved) *saved = std::move(r.checkpoints);

@@ -291,7 +291,7 @@ TEST_CASE("terms beside the paper's in windows: separation and class_own act, re
   // so its points are the canvas's, in the same order.)
   const OutputShape exact = shape_of(json{{"size", {2.5, 1.2}}, {"border", "published"}}, ex);
   const json own = {{"map_terms", {{"class_own", {{"weight", 1.0}}}}}};
-  const Run plain_exact = synthesize(ex, exact, 20, 3);
+  const Run plain_exact = synthesize(ex, exact, 20, 3, nullptr, false, "grid", json{{"map_terms", {{"class_own", {{"weight", 0.0}}}}}});
   const Run with_own = synthesize(ex, exact, 20, 3, nullptr, false, "grid", own);
   REQUIRE(with_own.output.size() == plain_exact.output.size());
   size_t class1_moved = 0;
