@@ -1,4 +1,4 @@
-// Several runs on one card (issue 66): how many sweep tasks the local executor starts at once
+// Several runs on one card: how many sweep tasks the local executor starts at once
 // and which card each sees (plan_local_slots, a pure function of the machine and the rows).
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-// The device decides (issue 66): "auto" precision, TF32, cuDNN autotuning and the fast preset's
+// The device decides: "auto" precision, TF32, cuDNN autotuning and the fast preset's
 // variant are pure functions of a DeviceCapabilities value (models/device_capabilities.hpp),
 // so a fake CUDA card checks them on a machine without one. The CPU's choices are unchanged.
 #include <catch2/catch.hpp>
