@@ -4,11 +4,11 @@
 # real-data table: eval's verdict should pass them at its nominal rate when the model is
 # right.
 #
-#   Rscript docs/lab/verdict/spatstat_fitted.R EXEMPLAR OUT_STEM DRAWS [U=2] [MODEL=auto]
+#   Rscript docs/lab/verdict/spatstat_fitted.R EXEMPLAR OUT_STEM DRAWS [U=2 | UxxUy] [MODEL=auto]
 #
 # EXEMPLAR: a plain point file (scripts/spatstat_export.R writes them; a "class" column makes
 # it multitype). DRAWS: a count N (draws 1..N) or a range A:B. Writes OUT_STEM_dNNN.txt on
-# [0, U W] x [0, U H] (exemplar units: eval with --zoom 1), seeded by the draw number. MODEL:
+# [0, Ux W] x [0, Uy H] (exemplar units: eval with --zoom 1), seeded by the draw number. MODEL:
 #   poisson        ppm(X ~ 1)                        (multitype: ~ marks)
 #   strauss        ppm(X ~ 1, StraussHard(r)): Strauss with a hard core (estimated by
 #                  spatstat from the closest pair), r by profile likelihood over 20 values
@@ -37,7 +37,9 @@ draws <- if (grepl(":", args[3])) {
   ab <- as.integer(strsplit(args[3], ":")[[1]])
   seq(ab[1], ab[2])
 } else seq_len(as.integer(args[3]))
-U <- if (length(args) >= 4) as.numeric(args[4]) else 2
+# U: one factor for both sides, or "UxxUy" for an output of another aspect (e.g. 1.601x1)
+U <- if (length(args) >= 4) as.numeric(strsplit(args[4], "x")[[1]]) else 2
+if (length(U) == 1) U <- c(U, U)
 model <- if (length(args) >= 5) args[5] else "auto"
 
 X <- read_plain(args[1])
@@ -53,7 +55,7 @@ if (model == "auto") {
 }
 nnd <- mean(nndist(unmark(X)))
 radii <- seq(0.2, 2, length.out = 20) * nnd
-big <- owin(c(0, U * diff(W$xrange)), c(0, U * diff(W$yrange)))
+big <- owin(c(0, U[1] * diff(W$xrange)), c(0, U[2] * diff(W$yrange)))
 
 fit <- switch(model,
   poisson = if (multitype) ppm(X ~ marks) else ppm(X ~ 1),
