@@ -196,7 +196,8 @@ void write_fidelity(std::ostream& os, const json& f) {
   os << "  fidelity: L (sup, mean spacings) and g (rms) distances in spreads, the median distance independent\n"
         "  realizations of the output's size show (from "
      << f["windows"].get<int>() << " random exemplar sub-windows of " << cell(f["side"], "%g")
-     << " its sides); within band: up to " << cell(f["band"], "%g") << " spreads";
+     << " its sides); within band: up to " << cell(f["band"], "%g")
+     << " spreads times the row's clustering^(1/4) (1 + a point's extra neighbours within r_max; 1 if regular)";
   if (f.contains("nominal_rate") && f["nominal_rate"].is_number())
     os << ", which " << cell(json(100 * f["nominal_rate"].get<double>()), "%g")
        << " % of independent realizations exceed per distance";

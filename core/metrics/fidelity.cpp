@@ -20,6 +20,7 @@ namespace {
 using nlohmann::json;
 using Curve = std::vector<double>;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kPi = 3.14159265358979323846;
 
 json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
@@ -174,6 +175,7 @@ json fidelity_report(const PointSet& exemplar, const PointSet& output_in, double
     for (size_t k = 0; k < r.size(); ++k) r[k] = r_max * static_cast<double>(k + 1) / opt.r_values;
     j["r_max"] = r_max;
     const double spacing = lambda > 0 ? 1 / std::sqrt(lambda) : kNaN;
+    j["spacing"] = num(spacing);
     const Summary se = summarize(ex_split, row, r);
     const Summary so = summarize(out_split, row, r);
     auto finish = [&](const json& within, const std::string& reason) {
@@ -191,6 +193,14 @@ json fidelity_report(const PointSet& exemplar, const PointSet& output_in, double
       finish(false, "the output has too few of the row's points (2 of a class, 1 of each class of a pair, marks not all 0)");
       continue;
     }
+    // How clustered the row is at r_max: 1 + the extra neighbours (of the row's second class)
+    // within r_max over Poisson's, lambda (K_ex(r_max) - pi r_max^2), at least 1 (a regular row
+    // is 1). The band widens with it (kFidelityClusterExponent: why).
+    const double l_end = se.l.empty() ? kNaN : se.l.back();
+    const double extra = std::isfinite(l_end) ? lambda * kPi * (l_end * l_end - r_max * r_max) : 0.0;
+    const double clustering = 1 + std::max(0.0, extra);
+    const double edge = opt.band * std::pow(clustering, kFidelityClusterExponent);
+    j["clustering"] = clustering;
     // The null: each sub-window against the whole exemplar, scaled to the output's area.
     std::vector<std::vector<double>> null;
     size_t draws = 0;
@@ -214,7 +224,7 @@ json fidelity_report(const PointSet& exemplar, const PointSet& output_in, double
       const double d = observed[i].second;
       json m = {{"distance", num(d)}, {"spread", num(spread.median)}};
       if (std::isfinite(d) && spread.draws >= kMinFidelityDraws && spread.median > 0) {
-        const double spreads = d / spread.median, edge = opt.band;
+        const double spreads = d / spread.median;
         m["spreads"] = spreads;
         m["band"] = edge;
         m["within"] = spreads <= edge;
@@ -236,7 +246,8 @@ json fidelity_report(const PointSet& exemplar, const PointSet& output_in, double
   return {{"measures",
            "per row, L (sup distance, mean spacings) and g (root mean square) of the output against the exemplar, in "
            "spreads: the median distance that independent realizations of the output's size show, estimated from the "
-           "exemplar's random sub-windows (subwindow_spread.hpp); within band: up to `band` spreads"},
+           "exemplar's random sub-windows (subwindow_spread.hpp); within band: up to `band` spreads times the row's "
+           "clustering to the power 1/4"},
           {"windows", opt.windows},
           {"side", opt.side},
           {"band", opt.band},

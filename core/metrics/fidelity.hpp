@@ -16,10 +16,13 @@
 // (subwindow_spread.hpp: the exemplar's `windows` random sub-windows of `side` times its
 // sides, each against the whole exemplar, scaled to the output's area by the variance law):
 //   "spreads": distance / spread (about 1 for an independent realization; "2.1 spreads");
-//   "band": the band's edge in spreads, `band` (a constant: the 95th percentile of independent
-//           realizations' spreads over six simulated processes, docs/lab/scorecard/README.md;
+//   "band": the band's edge in spreads, `band` times the row's "clustering" to the power
+//           kFidelityClusterExponent ("clustering": 1 + the extra neighbours a point of the
+//           row has within r_max over Poisson's, lambda (K_ex(r_max) - pi r_max^2), at least 1).
+//           `band` is measured: the 95th percentile of independent realizations' spreads over
+//           the clustering factor, six simulated processes pooled (docs/lab/scorecard/README.md;
 //           each exemplar's own sub-windows put their 95th percentile too low, as they share
-//           its noise and overlap, and a clustered exemplar's far too low);
+//           its noise and overlap);
 //   "within": spreads <= band: as close as independent realizations are, at the nominal
 //             false-alarm rate kFidelityNominalRate per distance.
 // A row cannot judge (within null, "reason") when fewer than kMinFidelityDraws sub-windows
@@ -48,11 +51,21 @@ inline constexpr double kFidelityMaxSpacings = 6;
 inline constexpr size_t kMinFidelityDraws = 16;
 // The share of independent realizations the default band leaves out, per distance, as measured.
 inline constexpr double kFidelityNominalRate = 0.05;
+// Why the band widens with the row's clustering: a clustered exemplar's few clusters are its
+// independent units, so its spread is estimated from few of them and its own distance from its
+// process has a heavy tail (the exemplars that lie far from their process are the ones whose
+// sub-windows agree with each other). A constant band left out 16-24 % of a Matérn process's
+// realizations (about 10 clusters) and none of a regular one's; clustering, measured on the
+// exemplar's own K at r_max, is about 10 there and 1 on a regular row. The exponent is the one
+// that brought each of the six simulated processes within the nominal rate's binomial interval
+// while keeping the power against uniform points (1/2 brought Matérn to 2 % but let uniform
+// points pass it 29 of 50 times): docs/lab/scorecard/README.md.
+inline constexpr double kFidelityClusterExponent = 0.25;
 
 struct FidelityOptions {
   int windows = 64;     // random sub-windows of the exemplar
   double side = 0.5;    // their sides, as a fraction of the exemplar's
-  double band = 2.2;    // within band: up to this many spreads (kFidelityNominalRate at the default)
+  double band = 1.72;   // within band: up to this many spreads times clustering^(1/4) (kFidelityNominalRate at the default)
   uint64_t seed = 1;    // where the sub-windows go
   int r_values = 128;   // radii in (0, r_max]
 };
@@ -66,7 +79,8 @@ void check_fidelity_options(const FidelityOptions& opt);
 // { "measures", "windows", "side", "band", "nominal_rate" (null unless band is the default), "seed", "scale" (the factor of the sub-windows'
 //   distances: sqrt((1 / A_out + 1 / A_ex) / (1 / a_sub - 1 / A_ex))), "output_area",
 //   "exemplar_area" (exemplar units), "rows": [ { "row": "all" | "class" | "pair" | "mark",
-//   "class" + "label" | "ci", "cj" + "labels" | "attribute", "r_max", "draws",
+//   "class" + "label" | "ci", "cj" + "labels" | "attribute", "r_max", "spacing" (the row's mean
+//   spacing, exemplar units: L's distance is in these), "clustering", "draws",
 //   per distance ("l", "g" or "kmm"): { "distance", "spread", "spreads", "band", "within" },
 //   "within", "reason" (when it cannot judge or is out of band without a distance) } ],
 //   "out_of_band", "cannot_judge", "within" }

@@ -100,8 +100,9 @@ ppsynth::app::RunFn setup(CLI::App& app) {
                  "scorecard: the output is flagged a copy when this share of its points match, (0, 1]")
       ->capture_default_str();
   app.add_option("--fidelity-band", a->fidelity.band,
-                 "scorecard: fidelity's band, in spreads (the median distance independent realizations show; the default "
-                 "leaves out 5 % of them per distance, as measured), [1, 100]")
+                 "scorecard: fidelity's band, in spreads (the median distance independent realizations show), of a row "
+                 "that is not clustered; a clustered row's is this times its clustering^(1/4); the default leaves out 5 % "
+                 "of independent realizations per distance, as measured, [1, 100]")
       ->capture_default_str();
   app.add_option("--fidelity-windows", a->fidelity.windows,
                  "scorecard: random exemplar sub-windows that estimate fidelity's spread, 16..4096")

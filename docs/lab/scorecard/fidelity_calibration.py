@@ -18,13 +18,16 @@ the draw's exemplar:
   tiled  the tiled_copy method's output (seed d, 2 x 2 whole tiles): must be flagged a copy
 Writes DIR/fidelity.tsv, one line per pattern and distance: process, kind, draw, row, distance
 (l, g, kmm, or "-" for a row without distances), spreads, band, within (True, False, None),
-and the pattern's novelty share and copy flag; prints per process and kind the share of patterns
-out of band per row and distance, of patterns with any row out of band, and flagged a copy, with
-exact (Clopper-Pearson) 95 % intervals.
-  BAND=C (environment): judge "within" as spreads <= C instead of the band the table was made at.
-  CHOOSE=D (environment, with --summary): first print the 95th percentile of the independent
-    realizations' ("same") spreads over draws up to D, every process, row and distance pooled
-    (how the default band was chosen), then the rates over the draws after D only (held out).
+the pattern's novelty share and copy flag, and the row's clustering (fidelity.hpp; tables
+without it read as 1); prints per process and kind the share of patterns out of band per row
+and distance, of patterns with any row out of band, and flagged a copy, with exact
+(Clopper-Pearson) 95 % intervals.
+  BAND=C (environment): judge "within" as spreads <= C x clustering^EXPONENT instead of the band
+    the table was made at (EXPONENT, environment: default 0.25, fidelity.hpp's; 0: a constant).
+  CHOOSE=D (environment, with --summary): first print the 95th percentile over draws up to D of
+    the independent realizations' ("same") spreads / clustering^EXPONENT, every process, row and
+    distance pooled (how the default band was chosen), then the rates over the draws after D
+    only (held out).
 """
 import math
 import os
@@ -60,11 +63,12 @@ def score(exemplar, output, zoom):
     for row in sc["fidelity"]["rows"]:
         name = row.get("name", row["row"])
         keys = [k for k in ("l", "g", "kmm") if k in row]
+        clustering = row.get("clustering", 1.0)
         for k in keys:
             m = row[k]
-            lines.append((name, k, m.get("spreads"), m.get("band"), m.get("within")))
+            lines.append((name, k, m.get("spreads"), m.get("band"), m.get("within"), clustering))
         if not keys:
-            lines.append((name, "-", None, None, row.get("within")))
+            lines.append((name, "-", None, None, row.get("within"), clustering))
     return lines, sc["novelty"].get("share"), sc["novelty"].get("copy")
 
 
@@ -102,9 +106,9 @@ def median(v):
 
 
 def summarize(records):
-    """records: (process, kind, draw, row, distance, spreads, band, within, share, copy)."""
+    """records: (process, kind, draw, row, distance, spreads, band, within, share, copy, clustering)."""
     per_pattern = {}
-    for p, kind, d, row, dist, spreads, band, within, share, copy in records:
+    for p, kind, d, row, dist, spreads, band, within, share, copy, _ in records:
         per_pattern.setdefault((p, kind, d), {"rows": [], "copy": copy})["rows"].append((row, dist, spreads, band, within))
     groups = {}
     for (p, kind, d), v in per_pattern.items():
@@ -157,16 +161,19 @@ def quantile(v, q):
 
 def rejudge(records):
     """BAND and CHOOSE applied to the records (see the docstring)."""
+    exponent = float(os.environ.get("EXPONENT", "0.25"))
     band = os.environ.get("BAND")
     if band:
         band = float(band)
-        records = [r[:6] + (band, r[7] if r[5] is None else r[5] <= band) + r[8:] for r in records]
+        records = [r[:6] + (band * r[10] ** exponent, r[7] if r[5] is None else r[5] <= band * r[10] ** exponent) + r[8:]
+                   for r in records]
     choose = os.environ.get("CHOOSE")
     if choose:
         d = int(choose)
-        same = [r[5] for r in records if r[1] == "same" and r[2] <= d and r[5] is not None]
-        print("independent realizations' spreads over draws up to %d: %d values, 95th percentile %.3f, 90th %.3f, "
-              "99th %.3f\n" % (d, len(same), quantile(same, 0.95), quantile(same, 0.9), quantile(same, 0.99)))
+        same = [r[5] / r[10] ** exponent for r in records if r[1] == "same" and r[2] <= d and r[5] is not None]
+        print("independent realizations' spreads / clustering^%g over draws up to %d: %d values, 95th percentile %.3f, "
+              "90th %.3f, 99th %.3f\n" % (exponent, d, len(same), quantile(same, 0.95), quantile(same, 0.9),
+                                         quantile(same, 0.99)))
         records = [r for r in records if r[2] > d]
     return records
 
@@ -176,10 +183,10 @@ def main():
         records = []
         for table in sys.argv[2:]:
             for line in open(table):
-                p, kind, d, row, dist, s, b, w, share, copy = line.rstrip("\n").split("\t")
+                p, kind, d, row, dist, s, b, w, share, copy, *clustering = line.rstrip("\n").split("\t")
                 f = lambda x: None if x == "None" else float(x)  # noqa: E731
                 records.append((p, kind, int(d), row, dist, f(s), f(b), None if w == "None" else w == "True", f(share),
-                                copy == "True"))
+                                copy == "True", float(clustering[0]) if clustering else 1.0))
         summarize(rejudge(records))
         return
     if len(sys.argv) < 4:
@@ -197,8 +204,8 @@ def main():
             for draw in range(first, first + draws):
                 for kind, ex, out, zoom in cases(dirpath, process, draw):
                     lines, share, copy = score(ex, out, zoom)
-                    for row, dist, s, b, w in lines:
-                        rec = (process, kind, draw, row, dist, s, b, w, share, copy)
+                    for row, dist, s, b, w, clustering in lines:
+                        rec = (process, kind, draw, row, dist, s, b, w, share, copy, clustering)
                         f.write("\t".join(str(x) for x in rec) + "\n")
                         records.append(rec)
                 f.flush()
