@@ -2,10 +2,10 @@
 // Registry<Base, Args...>: name -> factory, one per kind of pluggable part (rasterizers,
 // feature nets, losses, optimizers, initializers, synthesis methods, generators, commands).
 //
-// A part registers itself at the end of its own .cpp with PPSYNTH_REGISTER, giving its
-// config name, its default parameters (JSON; the only place those defaults live), the
-// allowed range of each numeric one (core/config/param_bounds.hpp) and a one-line
-// description. Creating it from config merges the user's parameters over the defaults and
+// A part registers itself at the end of its own .cpp with PPSYNTH_REGISTER_PARAMS, giving its
+// config name, the table that declares its parameters (core/config/params.hpp: each key's
+// default, range and doc line, once) and a one-line description; PPSYNTH_REGISTER takes the
+// defaults and bounds as JSON, for parts defined while the program runs (Python's). Creating it from config merges the user's parameters over the defaults and
 // refuses unknown keys, wrong types and values out of range, naming the key path; the factory
 // gets that key path too, so that what it refuses itself is named the way the user wrote it
 // ("method.feature_net.kernel_size", not "feature_net.kernel_size").
@@ -20,6 +20,8 @@
 
 #include "core/config/config.hpp"
 #include "core/config/param_bounds.hpp"
+#include "core/config/param_docs.hpp"
+#include "core/config/params.hpp"
 #include "core/error.hpp"
 
 namespace ppsynth {
@@ -109,6 +111,17 @@ class Registry {
   std::map<std::string, Entry> entries_;
 };
 
+// A factory for a part whose parameters are a ParamTable: `make(const Options&, key_path,
+// args...)` gets the block read through the table, so that the part reads exactly the keys
+// its defaults declare (a key it lacks is a logic_error, a key it holds that no line reads is
+// refused, naming it).
+template <class O, class Make>
+auto read_through(const ParamTable<O>& table, Make make) {
+  return [&table, make](const nlohmann::json& p, const std::string& key_path, auto&&... args) {
+    return make(table.read(p, key_path), key_path, std::forward<decltype(args)>(args)...);
+  };
+}
+
 }  // namespace ppsynth
 
 #define PPSYNTH_CONCAT_INNER(a, b) a##b
@@ -119,3 +132,11 @@ class Registry {
   [[maybe_unused]] const bool PPSYNTH_CONCAT(ppsynth_registered_, __LINE__) =             \
       REG::instance().add(NAME, REG::Entry{__VA_ARGS__, DEFAULTS, BOUNDS, DESC});         \
   }
+// PPSYNTH_REGISTER_PARAMS(RegistryType, "kind", "name", Options::params(), "description",
+//                         [](const Options& o, const std::string& key_path, args...) { ... }):
+// a part declared by its table (core/config/params.hpp). Its defaults, bounds and the
+// reference's doc lines (under "kind", as `ppsynth config --defaults` names the registry) come
+// from the table, and the factory gets the block read through it (read_through).
+#define PPSYNTH_REGISTER_PARAMS(REG, KIND, NAME, TABLE, DESC, ...)                                          \
+  PPSYNTH_REGISTER(REG, NAME, (TABLE).defaults(), (TABLE).bounds(), DESC, ::ppsynth::read_through(TABLE, __VA_ARGS__)) \
+  PPSYNTH_PARAM_DOCS(KIND, NAME, [] { return (TABLE).docs(); })

@@ -28,15 +28,28 @@ torch::Tensor CorrelationLoss::forward(const Features& out) {
 
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::LossRegistry, "correlation",
-                 (ppsynth::json{{"layers", {2}}, {"weight", 1.0}, {"gradient", "exact"}}),
-                 (ppsynth::json{{"layers", "int [0, 15]"}, {"weight", "[0, inf)"}}),
-                 "deep-correlation loss (global structure); gradient: exact | published",
-                 [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::FeatureLoss> {
-                   const std::string g = p["gradient"].get<std::string>();
-                   ppsynth::CorrelationGradient mode;
-                   if (g == "exact") mode = ppsynth::CorrelationGradient::Exact;
-                   else if (g == "published") mode = ppsynth::CorrelationGradient::Published;
-                   else throw ppsynth::config_error(key + ".gradient", "expected \"exact\" or \"published\", got \"" + g + "\"");
-                   return std::make_unique<ppsynth::CorrelationLoss>(ppsynth::loss_layers(p, key), mode);
-                 })
+namespace ppsynth {
+namespace {
+struct CorrelationOptions {
+  std::vector<int> layers{2};
+  double weight = 1.0;
+  CorrelationGradient gradient = CorrelationGradient::Exact;
+  static const ParamTable<CorrelationOptions>& params() {
+    using O = CorrelationOptions;
+    static const ParamTable<O> t("loss", {
+        param("layers", &O::layers, "int [0, 15]", "the feature layers it compares (indices into the net's)"),
+        param("weight", &O::weight, "[0, inf)", "its weight in the sum of the losses"),
+        choice("gradient", &O::gradient, {{"exact", CorrelationGradient::Exact}, {"published", CorrelationGradient::Published}},
+               "the correlation's gradient: exact, or the published code's"),
+    });
+    return t;
+  }
+};
+}  // namespace
+}  // namespace ppsynth
+
+PPSYNTH_REGISTER_PARAMS(ppsynth::LossRegistry, "loss", "correlation", ppsynth::CorrelationOptions::params(),
+                        "deep-correlation loss (global structure); gradient: exact | published",
+                        [](const ppsynth::CorrelationOptions& o, const std::string& key) -> std::unique_ptr<ppsynth::FeatureLoss> {
+                          return std::make_unique<ppsynth::CorrelationLoss>(ppsynth::given_layers(o.layers, key), o.gradient);
+                        })

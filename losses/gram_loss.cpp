@@ -59,9 +59,25 @@ torch::Tensor GramLoss::forward(const Features& out) {
 
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::LossRegistry, "gram", (ppsynth::json{{"layers", {0, 1, 2}}, {"weight", 0.08}}),
-                 (ppsynth::json{{"layers", "int [0, 15]"}, {"weight", "[0, inf)"}}),
-                 "Gram-matrix loss over the listed layers (local structure)",
-                 [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::FeatureLoss> {
-                   return std::make_unique<ppsynth::GramLoss>(ppsynth::loss_layers(p, key));
-                 })
+namespace ppsynth {
+namespace {
+struct GramOptions {
+  std::vector<int> layers{0, 1, 2};
+  double weight = 0.08;
+  static const ParamTable<GramOptions>& params() {
+    using O = GramOptions;
+    static const ParamTable<O> t("loss", {
+        param("layers", &O::layers, "int [0, 15]", "the feature layers it compares (indices into the net's)"),
+        param("weight", &O::weight, "[0, inf)", "its weight in the sum of the losses"),
+    });
+    return t;
+  }
+};
+}  // namespace
+}  // namespace ppsynth
+
+PPSYNTH_REGISTER_PARAMS(ppsynth::LossRegistry, "loss", "gram", ppsynth::GramOptions::params(),
+                        "Gram-matrix loss over the listed layers (local structure)",
+                        [](const ppsynth::GramOptions& o, const std::string& key) -> std::unique_ptr<ppsynth::FeatureLoss> {
+                          return std::make_unique<ppsynth::GramLoss>(ppsynth::given_layers(o.layers, key));
+                        })

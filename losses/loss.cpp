@@ -16,6 +16,11 @@ std::vector<int> loss_layers(const json& params, const std::string& key_path) {
   return out;
 }
 
+std::vector<int> given_layers(std::vector<int> layers, const std::string& key_path) {
+  if (layers.empty()) throw config_error(key_path + ".layers", "expected a non-empty array of layer indices");
+  return layers;
+}
+
 const torch::Tensor& layer_of(const Features& f, int l, const std::string& loss_name) {
   if (l < 0 || l >= static_cast<int>(f.size()))
     throw InputError("loss '" + loss_name + "' uses layer " + std::to_string(l) + " but the feature net has " +

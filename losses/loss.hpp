@@ -31,8 +31,12 @@ class FeatureLoss {
 
 using LossRegistry = Registry<FeatureLoss>;
 
-// Reads "layers" from a loss spec and checks the indices (named key path on error).
+// Reads "layers" from a loss spec and checks the indices (named key path on error): a Python
+// loss's, whose keys are its own JSON. A compiled loss reads its layers through its table and
+// checks them with given_layers.
 std::vector<int> loss_layers(const json& params, const std::string& key_path);
+// `layers` when not empty; else the config_error loss_layers gives, naming <key_path>.layers.
+std::vector<int> given_layers(std::vector<int> layers, const std::string& key_path);
 // The layer of `f` for index l, or an error naming the loss when the net is shallower.
 const torch::Tensor& layer_of(const Features& f, int l, const std::string& loss_name);
 

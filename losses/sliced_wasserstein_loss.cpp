@@ -64,9 +64,25 @@ class SlicedWassersteinLoss : public FeatureLoss {
 }  // namespace
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::LossRegistry, "sliced_wasserstein", (ppsynth::json{{"layers", {0, 1, 2}}, {"weight", 1.0}}),
-                 (ppsynth::json{{"layers", "int [0, 15]"}, {"weight", "[0, inf)"}}),
-                 "sliced Wasserstein loss on per-pixel features (Heitz et al. 2021; Fig. 14)",
-                 [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::FeatureLoss> {
-                   return std::make_unique<ppsynth::SlicedWassersteinLoss>(ppsynth::loss_layers(p, key));
-                 })
+namespace ppsynth {
+namespace {
+struct SlicedWassersteinOptions {
+  std::vector<int> layers{0, 1, 2};
+  double weight = 1.0;
+  static const ParamTable<SlicedWassersteinOptions>& params() {
+    using O = SlicedWassersteinOptions;
+    static const ParamTable<O> t("loss", {
+        param("layers", &O::layers, "int [0, 15]", "the feature layers it compares (indices into the net's)"),
+        param("weight", &O::weight, "[0, inf)", "its weight in the sum of the losses"),
+    });
+    return t;
+  }
+};
+}  // namespace
+}  // namespace ppsynth
+
+PPSYNTH_REGISTER_PARAMS(ppsynth::LossRegistry, "loss", "sliced_wasserstein", ppsynth::SlicedWassersteinOptions::params(),
+                        "sliced Wasserstein loss on per-pixel features (Heitz et al. 2021; Fig. 14)",
+                        [](const ppsynth::SlicedWassersteinOptions& o, const std::string& key) -> std::unique_ptr<ppsynth::FeatureLoss> {
+                          return std::make_unique<ppsynth::SlicedWassersteinLoss>(ppsynth::given_layers(o.layers, key));
+                        })

@@ -49,9 +49,20 @@ class PixelSplatRasterizer : public Rasterizer {
 }  // namespace
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::RasterizerRegistry, "pixel_splat", (ppsynth::json::object()),
-                 ppsynth::json::object(),
-                 "bilinear splat of points into pixels (Fig. 12c: random filters only)",
-                 [](const ppsynth::json&, const std::string&, ppsynth::RasterizerArgs a) -> std::unique_ptr<ppsynth::Rasterizer> {
-                   return std::make_unique<ppsynth::PixelSplatRasterizer>(a.res, a.rows);
-                 })
+namespace ppsynth {
+namespace {
+struct PixelSplatOptions {  // none: the grid is the method's (RasterizerArgs)
+  static const ParamTable<PixelSplatOptions>& params() {
+    static const ParamTable<PixelSplatOptions> t("method.rasterizer", {});
+    return t;
+  }
+};
+}  // namespace
+}  // namespace ppsynth
+
+PPSYNTH_REGISTER_PARAMS(ppsynth::RasterizerRegistry, "rasterizer", "pixel_splat", ppsynth::PixelSplatOptions::params(),
+                        "bilinear splat of points into pixels (Fig. 12c: random filters only)",
+                        [](const ppsynth::PixelSplatOptions&, const std::string&,
+                           ppsynth::RasterizerArgs a) -> std::unique_ptr<ppsynth::Rasterizer> {
+                          return std::make_unique<ppsynth::PixelSplatRasterizer>(a.res, a.rows);
+                        })

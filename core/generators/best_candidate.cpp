@@ -4,6 +4,7 @@
 #include <random>
 
 #include "core/generators/candidate_cells.hpp"
+#include "core/config/params.hpp"
 #include "core/generators/generator.hpp"
 
 namespace ppsynth {
@@ -40,14 +41,22 @@ struct BestCandidateGen : PointGenerator {
 
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "best_candidate",
-                 (nlohmann::json{{"m", 10.0}, {"margin", 0.01}}),
-                 (nlohmann::json{{"m", "(0, 10000]"}, {"margin", "[0, 0.5)"}}),
-                 "Mitchell best-candidate (toroidal distances, m * count candidates; margin 0.01 = "
-                 "the published initialization's [0.01, 0.99]^2)",
-                 [](const nlohmann::json& p, const std::string& key) {
-                   auto g = std::make_unique<ppsynth::BestCandidateGen>();
-                   g->opt.m = p["m"].get<double>();
-                   g->opt.margin = p["margin"].get<double>();
-                   return g;
-                 })
+namespace ppsynth {
+const ParamTable<BestCandidateOptions>& BestCandidateOptions::params() {
+  using O = BestCandidateOptions;
+  static const ParamTable<O> t("generator", {
+      param("m", &O::m, "(0, 10000]", "candidates drawn per point placed so far"),
+      param("margin", &O::margin, "[0, 0.5)", "candidates kept this fraction of the side away from the border"),
+  });
+  return t;
+}
+}  // namespace ppsynth
+
+PPSYNTH_REGISTER_PARAMS(ppsynth::GeneratorRegistry, "generator", "best_candidate", ppsynth::BestCandidateOptions::params(),
+                        "Mitchell best-candidate (toroidal distances, m * count candidates; margin 0.01 = "
+                        "the published initialization's [0.01, 0.99]^2)",
+                        [](const ppsynth::BestCandidateOptions& o, const std::string&) {
+                          auto g = std::make_unique<ppsynth::BestCandidateGen>();
+                          g->opt = o;
+                          return g;
+                        })

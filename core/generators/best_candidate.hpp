@@ -16,11 +16,15 @@
 
 namespace ppsynth {
 
+template <class T>
+class ParamTable;
+
 struct BestCandidateOptions {
   double m = 10;        // candidates per accepted point
   double margin = 0.01;  // candidates drawn in [x0+margin*W, x1-margin*W] x (same in y)
   // Called every thousand points when set (a caller's stop check, which may throw).
   std::function<void()> poll;
+  static const ParamTable<BestCandidateOptions>& params();  // its keys, defaults and ranges (the .cpp)
 };
 
 PointSet best_candidate_points(size_t n, uint64_t seed, Domain d = {},

@@ -5,6 +5,7 @@
 #include <numeric>
 #include <random>
 
+#include "core/config/params.hpp"
 #include "core/generators/generator.hpp"
 #include "core/generators/sampling_util.hpp"
 #include "core/generators/lattices.hpp"
@@ -139,14 +140,22 @@ struct CcvtGen : PointGenerator {
 
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "ccvt",
-                 (nlohmann::json{{"points_per_site", 1024}, {"max_iterations", 300}, {"neighbor_sites", 6}}),
-                 (nlohmann::json{{"points_per_site", "int [1, 1000000]"}, {"max_iterations", "int [0, inf)"}, {"neighbor_sites", "int [1, 1000]"}}),
-                 "capacity-constrained Voronoi tessellation (Balzer et al. 2009), discrete, toroidal",
-                 [](const nlohmann::json& p, const std::string& key) {
-                   auto g = std::make_unique<ppsynth::CcvtGen>();
-                   g->opt.points_per_site = p["points_per_site"].get<int>();
-                   g->opt.max_iterations = p["max_iterations"].get<int>();
-                   g->opt.neighbor_sites = p["neighbor_sites"].get<int>();
-                   return g;
-                 })
+namespace ppsynth {
+const ParamTable<CcvtOptions>& CcvtOptions::params() {
+  using O = CcvtOptions;
+  static const ParamTable<O> t("generator", {
+      param("points_per_site", &O::points_per_site, "int [1, 1000000]", "each site's capacity: the discrete points it owns"),
+      param("max_iterations", &O::max_iterations, "int [0, inf)", "swap rounds at most (it stops sooner when none swaps)"),
+      param("neighbor_sites", &O::neighbor_sites, "int [1, 1000]", "the nearest sites each site tries swaps with"),
+  });
+  return t;
+}
+}  // namespace ppsynth
+
+PPSYNTH_REGISTER_PARAMS(ppsynth::GeneratorRegistry, "generator", "ccvt", ppsynth::CcvtOptions::params(),
+                        "capacity-constrained Voronoi tessellation (Balzer et al. 2009), discrete, toroidal",
+                        [](const ppsynth::CcvtOptions& o, const std::string&) {
+                          auto g = std::make_unique<ppsynth::CcvtGen>();
+                          g->opt = o;
+                          return g;
+                        })

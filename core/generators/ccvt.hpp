@@ -21,10 +21,14 @@
 
 namespace ppsynth {
 
+template <class T>
+class ParamTable;
+
 struct CcvtOptions {
   int points_per_site = 1024;  // capacity of each site
   int max_iterations = 300;
   int neighbor_sites = 6;      // swap partners considered per site (nearest sites)
+  static const ParamTable<CcvtOptions>& params();  // its keys, defaults and ranges (the .cpp)
 };
 
 PointSet ccvt_points(size_t n, uint64_t seed, Domain d = {}, const CcvtOptions& opt = {});

@@ -108,10 +108,19 @@ struct JitteredGen : PointGenerator {
   PointSet generate(size_t n, uint64_t seed, const Domain& d) const override {
     return jittered_grid_points(n, seed, d, jitter);
   }
+  static const ParamTable<JitteredGen>& params() {
+    static const ParamTable<JitteredGen> t(
+        "generator", {param("jitter", &JitteredGen::jitter, "[0, 1]", "how far a point moves in its cell (1: anywhere in it)")});
+    return t;
+  }
 };
 struct RegularGen : PointGenerator {
   PointSet generate(size_t n, uint64_t seed, const Domain& d) const override {
     return regular_grid_points(n, seed, d);
+  }
+  static const ParamTable<RegularGen>& params() {
+    static const ParamTable<RegularGen> t("generator", {});
+    return t;
   }
 };
 struct HexGen : PointGenerator {
@@ -119,27 +128,22 @@ struct HexGen : PointGenerator {
   PointSet generate(size_t n, uint64_t seed, const Domain& d) const override {
     return hexagonal_lattice_points(n, seed, d, random_offset);
   }
+  static const ParamTable<HexGen>& params() {
+    static const ParamTable<HexGen> t(
+        "generator", {param("random_offset", &HexGen::random_offset, "", "the lattice shifted by a seeded random offset")});
+    return t;
+  }
 };
 }  // namespace
 
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "jittered_grid", (nlohmann::json{{"jitter", 1.0}}),
-                 (nlohmann::json{{"jitter", "[0, 1]"}}),
-                 "one uniform point per grid cell (jitter 1 = whole cell)", [](const nlohmann::json& p, const std::string& key) {
-                   auto g = std::make_unique<ppsynth::JitteredGen>();
-                   g->jitter = p["jitter"].get<double>();
-                   return g;
-                 })
-PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "regular_grid", nlohmann::json::object(),
-                 nlohmann::json::object(),
-                 "cell centers of a regular grid",
-                 [](const nlohmann::json&, const std::string&) { return std::make_unique<ppsynth::RegularGen>(); })
-PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "hexagonal_lattice", (nlohmann::json{{"random_offset", false}}),
-                 nlohmann::json::object(),
-                 "hexagonal (triangular) lattice with torus-compatible spacing; point count close to n",
-                 [](const nlohmann::json& p, const std::string& key) {
-                   auto g = std::make_unique<ppsynth::HexGen>();
-                   g->random_offset = p["random_offset"].get<bool>();
-                   return g;
-                 })
+PPSYNTH_REGISTER_PARAMS(ppsynth::GeneratorRegistry, "generator", "jittered_grid", ppsynth::JitteredGen::params(),
+                        "one uniform point per grid cell (jitter 1 = whole cell)",
+                        [](const ppsynth::JitteredGen& g, const std::string&) { return std::make_unique<ppsynth::JitteredGen>(g); })
+PPSYNTH_REGISTER_PARAMS(ppsynth::GeneratorRegistry, "generator", "regular_grid", ppsynth::RegularGen::params(),
+                        "cell centers of a regular grid",
+                        [](const ppsynth::RegularGen& g, const std::string&) { return std::make_unique<ppsynth::RegularGen>(g); })
+PPSYNTH_REGISTER_PARAMS(ppsynth::GeneratorRegistry, "generator", "hexagonal_lattice", ppsynth::HexGen::params(),
+                        "hexagonal (triangular) lattice with torus-compatible spacing; point count close to n",
+                        [](const ppsynth::HexGen& g, const std::string&) { return std::make_unique<ppsynth::HexGen>(g); })

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <random>
 
+#include "core/config/params.hpp"
 #include "core/generators/generator.hpp"
 #include "core/generators/sampling_util.hpp"
 #include "core/generators/uniform.hpp"
@@ -57,13 +58,21 @@ struct LloydGen : PointGenerator {
 
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "lloyd",
-                 (nlohmann::json{{"iterations", 10}, {"samples_per_point", 64}}),
-                 (nlohmann::json{{"iterations", "int [0, 100000]"}, {"samples_per_point", "int [1, 100000]"}}),
-                 "toroidal Lloyd relaxation of uniform points (sampled Voronoi cells)",
-                 [](const nlohmann::json& p, const std::string& key) {
-                   auto g = std::make_unique<ppsynth::LloydGen>();
-                   g->opt.iterations = p["iterations"].get<int>();
-                   g->opt.samples_per_point = p["samples_per_point"].get<int>();
-                   return g;
-                 })
+namespace ppsynth {
+const ParamTable<LloydOptions>& LloydOptions::params() {
+  using O = LloydOptions;
+  static const ParamTable<O> t("generator", {
+      param("iterations", &O::iterations, "int [0, 100000]", "Lloyd steps"),
+      param("samples_per_point", &O::samples_per_point, "int [1, 100000]", "uniform samples per point that estimate each cell's centroid"),
+  });
+  return t;
+}
+}  // namespace ppsynth
+
+PPSYNTH_REGISTER_PARAMS(ppsynth::GeneratorRegistry, "generator", "lloyd", ppsynth::LloydOptions::params(),
+                        "toroidal Lloyd relaxation of uniform points (sampled Voronoi cells)",
+                        [](const ppsynth::LloydOptions& o, const std::string&) {
+                          auto g = std::make_unique<ppsynth::LloydGen>();
+                          g->opt = o;
+                          return g;
+                        })

@@ -11,9 +11,13 @@
 
 namespace ppsynth {
 
+template <class T>
+class ParamTable;
+
 struct LloydOptions {
   int iterations = 10;
   int samples_per_point = 64;
+  static const ParamTable<LloydOptions>& params();  // its keys, defaults and ranges (the .cpp)
 };
 
 PointSet lloyd_points(size_t n, uint64_t seed, Domain d = {}, const LloydOptions& opt = {});

@@ -5,6 +5,7 @@
 #include <numeric>
 #include <random>
 
+#include "core/config/params.hpp"
 #include "core/generators/generator.hpp"
 #include "core/generators/sampling_util.hpp"
 
@@ -59,14 +60,22 @@ struct MaternGen : PointGenerator {
 
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "matern_cluster",
-                 (nlohmann::json{{"parent_intensity", 0.0}, {"mean_children", 8.0}, {"radius", 0.05}}),
-                 (nlohmann::json{{"parent_intensity", "[0, inf)"}, {"mean_children", "(0, inf)"}, {"radius", "(0, 0.5]"}}),
-                 "Matern cluster process conditioned on n points (parent_intensity 0 = n / mean_children)",
-                 [](const nlohmann::json& p, const std::string& key) {
-                   auto g = std::make_unique<ppsynth::MaternGen>();
-                   g->opt.parent_intensity = p["parent_intensity"].get<double>();
-                   g->opt.mean_children = p["mean_children"].get<double>();
-                   g->opt.radius = p["radius"].get<double>();
-                   return g;
-                 })
+namespace ppsynth {
+const ParamTable<MaternClusterOptions>& MaternClusterOptions::params() {
+  using O = MaternClusterOptions;
+  static const ParamTable<O> t("generator", {
+      param("parent_intensity", &O::parent_intensity, "[0, inf)", "parents per unit area (0: n / mean_children over the area)"),
+      param("mean_children", &O::mean_children, "(0, inf)", "the mean number of points per parent"),
+      param("radius", &O::radius, "(0, 0.5]", "the radius of a parent's disk, in domain units"),
+  });
+  return t;
+}
+}  // namespace ppsynth
+
+PPSYNTH_REGISTER_PARAMS(ppsynth::GeneratorRegistry, "generator", "matern_cluster", ppsynth::MaternClusterOptions::params(),
+                        "Matern cluster process conditioned on n points (parent_intensity 0 = n / mean_children)",
+                        [](const ppsynth::MaternClusterOptions& o, const std::string&) {
+                          auto g = std::make_unique<ppsynth::MaternGen>();
+                          g->opt = o;
+                          return g;
+                        })

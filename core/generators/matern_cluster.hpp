@@ -12,10 +12,14 @@
 
 namespace ppsynth {
 
+template <class T>
+class ParamTable;
+
 struct MaternClusterOptions {
   double parent_intensity = 0;  // parents per unit area; 0 = n / (mean_children * area)
   double mean_children = 8;
   double radius = 0.05;  // cluster disk radius (domain units)
+  static const ParamTable<MaternClusterOptions>& params();  // its keys, defaults and ranges (the .cpp)
 };
 
 PointSet matern_cluster_points(size_t n, uint64_t seed, Domain d = {},

@@ -4,6 +4,7 @@
 #include <random>
 
 #include "core/generators/dynamic_grid.hpp"
+#include "core/config/params.hpp"
 #include "core/generators/generator.hpp"
 #include "core/log.hpp"
 #include "core/metrics/nearest_neighbor.hpp"
@@ -20,13 +21,13 @@ PointSet poisson_disk_points(size_t n, uint64_t seed, Domain d, const PoissonDis
   }
   // r is the minimum distance d_min; relative radius = (d_min / 2) / r_max.
   if (!std::isfinite(r)) throw config_error("poisson_disk.radius", "must be finite");
-  if (opt.max_attempts == 0) throw config_error("poisson_disk.max_attempts", "must be positive");
+  if (opt.max_attempts < 1) throw config_error("poisson_disk.max_attempts", "must be positive");
   std::mt19937_64 rng(seed);
   PointSet ps(d);
   ps.reserve(n);
   gen_detail::DynamicGrid grid(d, std::max(r, 1e-9 * d.width()), d.periodic);
   size_t fails = 0;
-  while (grid.size() < n && fails < opt.max_attempts) {
+  while (grid.size() < n && fails < static_cast<size_t>(opt.max_attempts)) {
     Vec2 c = gen_detail::uniform_in(rng, d);
     if (r > 0 && grid.nearest_within(c, r) < r) {
       ++fails;
@@ -57,18 +58,23 @@ struct PoissonDiskGen : PointGenerator {
 
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(
-    ppsynth::GeneratorRegistry, "poisson_disk",
-    (nlohmann::json{{"radius", 0.0}, {"relative_radius", 0.65}, {"max_attempts", 100000}, {"require_all", false}}),
-    (nlohmann::json{{"radius", "[0, 0.5]"}, {"relative_radius", "[0, 1]"}, {"max_attempts", "int [1, 1000000000]"}}),
-    "dart-throwing Poisson disk (minimum distance `radius`, or relative_radius * 2 r_max when radius = 0)",
-    [](const nlohmann::json& p, const std::string& key) {
-      auto g = std::make_unique<ppsynth::PoissonDiskGen>();
-      g->opt.radius = p["radius"].get<double>();
-      g->opt.relative_radius = p["relative_radius"].get<double>();
-      const double a = p["max_attempts"].get<double>();
-      if (!(a >= 1)) throw ppsynth::config_error("max_attempts", "must be >= 1");
-      g->opt.max_attempts = static_cast<size_t>(a);
-      g->opt.require_all = p["require_all"].get<bool>();
-      return g;
-    })
+namespace ppsynth {
+const ParamTable<PoissonDiskOptions>& PoissonDiskOptions::params() {
+  using O = PoissonDiskOptions;
+  static const ParamTable<O> t("generator", {
+      param("radius", &O::radius, "[0, 0.5]", "the minimum distance, in domain units (0: from relative_radius)"),
+      param("relative_radius", &O::relative_radius, "[0, 1]", "the minimum distance as a fraction of 2 r_max (when radius is 0)"),
+      param("max_attempts", &O::max_attempts, "int [1, 1000000000]", "rejected candidates in a row before it gives up"),
+      param("require_all", &O::require_all, "", "fewer than n points is an error (else a warning)"),
+  });
+  return t;
+}
+}  // namespace ppsynth
+
+PPSYNTH_REGISTER_PARAMS(ppsynth::GeneratorRegistry, "generator", "poisson_disk", ppsynth::PoissonDiskOptions::params(),
+                        "dart-throwing Poisson disk (minimum distance `radius`, or relative_radius * 2 r_max when radius = 0)",
+                        [](const ppsynth::PoissonDiskOptions& o, const std::string&) {
+                          auto g = std::make_unique<ppsynth::PoissonDiskGen>();
+                          g->opt = o;
+                          return g;
+                        })

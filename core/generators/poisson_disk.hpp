@@ -14,11 +14,15 @@
 
 namespace ppsynth {
 
+template <class T>
+class ParamTable;
+
 struct PoissonDiskOptions {
   double radius = 0;            // minimum distance between points (domain units); 0 = derive
   double relative_radius = 0.65;  // used when radius <= 0
-  size_t max_attempts = 100000;   // consecutive rejected candidates before giving up
+  int max_attempts = 100000;      // consecutive rejected candidates before giving up
   bool require_all = false;       // throw instead of returning fewer than n points
+  static const ParamTable<PoissonDiskOptions>& params();  // its keys, defaults and ranges (the .cpp)
 };
 
 PointSet poisson_disk_points(size_t n, uint64_t seed, Domain d = {},

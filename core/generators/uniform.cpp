@@ -21,12 +21,15 @@ struct UniformGen : PointGenerator {
   PointSet generate(size_t n, uint64_t seed, const Domain& d) const override {
     return uniform_points(n, seed, d);
   }
+  static const ParamTable<UniformGen>& params() {
+    static const ParamTable<UniformGen> t("generator", {});
+    return t;
+  }
 };
 }  // namespace
 
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::GeneratorRegistry, "uniform", nlohmann::json::object(),
-                 nlohmann::json::object(),
-                 "uniform random points (white noise)",
-                 [](const nlohmann::json&, const std::string&) { return std::make_unique<ppsynth::UniformGen>(); })
+PPSYNTH_REGISTER_PARAMS(ppsynth::GeneratorRegistry, "generator", "uniform", ppsynth::UniformGen::params(),
+                        "uniform random points (white noise)",
+                        [](const ppsynth::UniformGen& g, const std::string&) { return std::make_unique<ppsynth::UniformGen>(g); })

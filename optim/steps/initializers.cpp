@@ -35,6 +35,15 @@ class BestCandidateInit : public Initializer {
   BestCandidateOptions o_;
 };
 
+struct UniformInitOptions {
+  double margin = 0.01;
+  static const ParamTable<UniformInitOptions>& params() {
+    static const ParamTable<UniformInitOptions> t(
+        "method.init", {param("margin", &UniformInitOptions::margin, "[0, 0.5)", "points kept this fraction of the side away from the border")});
+    return t;
+  }
+};
+
 class UniformInit : public Initializer {
  public:
   explicit UniformInit(double margin) : margin_(margin) {}  // in [0, 0.5): the registry's bound
@@ -44,6 +53,15 @@ class UniformInit : public Initializer {
 
  private:
   double margin_;
+};
+
+struct GeneratorInitOptions {
+  json generator = json{{"type", "jittered_grid"}};
+  static const ParamTable<GeneratorInitOptions>& params() {
+    static const ParamTable<GeneratorInitOptions> t(
+        "method.init", {param("generator", &GeneratorInitOptions::generator, "", "the generator's spec ({\"type\": ..., its keys})")});
+    return t;
+  }
 };
 
 // Any registered point generator ({"generator": {"type": "jittered_grid", ...}}).
@@ -61,25 +79,19 @@ class GeneratorInit : public Initializer {
 }  // namespace
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::InitializerRegistry, "best_candidate", (ppsynth::json{{"m", 10.0}, {"margin", 0.01}}),
-                 (ppsynth::json{{"m", "(0, 10000]"}, {"margin", "[0, 0.5)"}}),
-                 "toroidal best-candidate Poisson disk in [margin, 1-margin]^2 (the paper's)",
-                 [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::Initializer> {
-                   ppsynth::BestCandidateOptions o;
-                   o.m = p["m"].get<double>();
-                   o.margin = p["margin"].get<double>();
-                   return std::make_unique<ppsynth::BestCandidateInit>(o);
-                 })
-PPSYNTH_REGISTER(ppsynth::InitializerRegistry, "uniform", (ppsynth::json{{"margin", 0.01}}),
-                 (ppsynth::json{{"margin", "[0, 0.5)"}}),
-                 "uniform random positions (the supplement: random initialization works too)",
-                 [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::Initializer> {
-                   return std::make_unique<ppsynth::UniformInit>(p["margin"].get<double>());
-                 })
-PPSYNTH_REGISTER(ppsynth::InitializerRegistry, "generator", (ppsynth::json{{"generator", {{"type", "jittered_grid"}}}}),
-                 ppsynth::json::object(),
-                 "any registered point generator",
-                 [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::Initializer> {
-                   return std::make_unique<ppsynth::GeneratorInit>(p["generator"]);
-                 })
+PPSYNTH_REGISTER_PARAMS(ppsynth::InitializerRegistry, "initializer", "best_candidate", ppsynth::BestCandidateOptions::params(),
+                        "toroidal best-candidate Poisson disk in [margin, 1-margin]^2 (the paper's)",
+                        [](const ppsynth::BestCandidateOptions& o, const std::string&) -> std::unique_ptr<ppsynth::Initializer> {
+                          return std::make_unique<ppsynth::BestCandidateInit>(o);
+                        })
+PPSYNTH_REGISTER_PARAMS(ppsynth::InitializerRegistry, "initializer", "uniform", ppsynth::UniformInitOptions::params(),
+                        "uniform random positions (the supplement: random initialization works too)",
+                        [](const ppsynth::UniformInitOptions& o, const std::string&) -> std::unique_ptr<ppsynth::Initializer> {
+                          return std::make_unique<ppsynth::UniformInit>(o.margin);
+                        })
+PPSYNTH_REGISTER_PARAMS(ppsynth::InitializerRegistry, "initializer", "generator", ppsynth::GeneratorInitOptions::params(),
+                        "any registered point generator",
+                        [](const ppsynth::GeneratorInitOptions& o, const std::string&) -> std::unique_ptr<ppsynth::Initializer> {
+                          return std::make_unique<ppsynth::GeneratorInit>(o.generator);
+                        })
 PPSYNTH_DEFAULTS_KIND("initializer", ppsynth::InitializerRegistry)

@@ -10,6 +10,22 @@
 namespace ppsynth {
 namespace {
 
+struct LossRuleOptions {
+  int window = 100;
+  int check_every = 10;
+  double threshold = 0.01;
+  static const ParamTable<LossRuleOptions>& params() {
+    using O = LossRuleOptions;
+    // check_every 0 would divide by zero; a window of 0 compares a loss with itself
+    static const ParamTable<O> t("method.convergence", {
+        param("window", &O::window, "int [1, 1000000000]", "the iterations whose decrease is compared with the stage's"),
+        param("check_every", &O::check_every, "int [1, 1000000000]", "iterations between two checks"),
+        param("threshold", &O::threshold, "[0, inf)", "the fraction of the stage's decrease below which it stops"),
+    });
+    return t;
+  }
+};
+
 class LossStoppingRule : public StoppingRule {
  public:
   LossStoppingRule(int window, int check_every, double threshold)
@@ -37,13 +53,8 @@ class LossStoppingRule : public StoppingRule {
 
 PPSYNTH_DEFAULTS_KIND("convergence", ppsynth::StoppingRuleRegistry)
 
-PPSYNTH_REGISTER(ppsynth::StoppingRuleRegistry, "loss",
-                 (ppsynth::json{{"window", 100}, {"check_every", 10}, {"threshold", 0.01}}),
-                 // check_every 0 would divide by zero; a window of 0 compares a loss with itself
-                 (ppsynth::json{{"window", "int [1, 1000000000]"}, {"check_every", "int [1, 1000000000]"},
-                                {"threshold", "[0, inf)"}}),
-                 "the paper's rule: the loss fell by less than `threshold` of the stage's decrease over the last `window` iterations",
-                 [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::StoppingRule> {
-                   return std::make_unique<ppsynth::LossStoppingRule>(p["window"].get<int>(), p["check_every"].get<int>(),
-                                                                      p["threshold"].get<double>());
-                 })
+PPSYNTH_REGISTER_PARAMS(ppsynth::StoppingRuleRegistry, "convergence", "loss", ppsynth::LossRuleOptions::params(),
+                        "the paper's rule: the loss fell by less than `threshold` of the stage's decrease over the last `window` iterations",
+                        [](const ppsynth::LossRuleOptions& o, const std::string&) -> std::unique_ptr<ppsynth::StoppingRule> {
+                          return std::make_unique<ppsynth::LossStoppingRule>(o.window, o.check_every, o.threshold);
+                        })

@@ -28,6 +28,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/config/params.hpp"
 #include "core/error.hpp"
 #include "core/metrics/crops.hpp"
 #include "core/metrics/patches.hpp"
@@ -36,6 +37,31 @@
 
 namespace ppsynth {
 namespace {
+
+struct PatternRuleOptions {
+  int window = 50;
+  int check_every = 10;
+  double threshold = 0.02;
+  int min_iterations = 30;
+  bool end_on_best = false;
+  bool best_by_crops = false;
+  bool rows_of_moving_class = true;
+  static const ParamTable<PatternRuleOptions>& params() {
+    using O = PatternRuleOptions;
+    static const ParamTable<O> t("method.convergence", {
+        param("window", &O::window, "int [1, 1000000000]", "the iterations in which the PCF MSE must improve"),
+        param("check_every", &O::check_every, "int [1, 1000000000]", "iterations between two measures"),
+        param("threshold", &O::threshold, "[0, 1]", "the relative improvement the window must bring"),
+        param("min_iterations", &O::min_iterations, "int [0, 1000000000]", "iterations before it may stop"),
+        choice("end_on", &O::end_on_best, {{"last", false}, {"best", true}}, "the iterate the stage ends on: its last, or its best checked"),
+        choice("best_by", &O::best_by_crops, {{"output", false}, {"crops", true}},
+               "how the best is judged: the points as one rectangle, or 20 exemplar-sized crops"),
+        choice("rows", &O::rows_of_moving_class, {{"moving_class", true}, {"all", false}},
+               "the PCFs measured: the moving class's own and cross, or the points in play as one pattern"),
+    });
+    return t;
+  }
+};
 
 class PatternStoppingRule : public StoppingRule {
  public:
@@ -185,25 +211,9 @@ class PatternStoppingRule : public StoppingRule {
 }  // namespace
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::StoppingRuleRegistry, "pattern",
-                 (ppsynth::json{{"window", 50}, {"check_every", 10}, {"threshold", 0.02}, {"min_iterations", 30}, {"end_on", "last"},
-                                {"best_by", "output"}, {"rows", "moving_class"}}),
-                 (ppsynth::json{{"window", "int [1, 1000000000]"}, {"check_every", "int [1, 1000000000]"},
-                                {"threshold", "[0, 1]"}, {"min_iterations", "int [0, 1000000000]"}}),
-                 "stop when the PCF MSE of the stage's points to the exemplar's has not improved by `threshold` (relative) in `window` iterations; end_on: last | best (the stage ends on its best checked iterate); best_by: output (the points as one rectangle) | crops (20 exemplar-sized crops: the pattern away from the border); rows: moving_class (a stage moving one class among others is judged by that class's own PCF and its cross PCFs) | all (the points in play as one pattern)",
-                 [](const ppsynth::json& p, const std::string& key) -> std::unique_ptr<ppsynth::StoppingRule> {
-                   const std::string end_on = p["end_on"].get<std::string>();
-                   if (end_on != "last" && end_on != "best")
-                     throw ppsynth::config_error(key + ".end_on", "expected \"last\" or \"best\", got \"" + end_on + "\"");
-                   const std::string best_by = p["best_by"].get<std::string>();
-                   if (best_by != "output" && best_by != "crops")
-                     throw ppsynth::config_error(key + ".best_by", "expected \"output\" or \"crops\", got \"" + best_by + "\"");
-                   const std::string rows = p["rows"].get<std::string>();
-                   if (rows != "moving_class" && rows != "all")
-                     throw ppsynth::config_error(key + ".rows", "expected \"moving_class\" or \"all\", got \"" + rows + "\"");
-                   return std::make_unique<ppsynth::PatternStoppingRule>(p["window"].get<int>(), p["check_every"].get<int>(),
-                                                                         p["threshold"].get<double>(),
-                                                                         p["min_iterations"].get<int>(),
-                                                                         end_on == "best", best_by == "crops",
-                                                                         rows == "moving_class");
-                 })
+PPSYNTH_REGISTER_PARAMS(ppsynth::StoppingRuleRegistry, "convergence", "pattern", ppsynth::PatternRuleOptions::params(),
+                        "stop when the PCF MSE of the stage's points to the exemplar's has not improved by `threshold` (relative) in `window` iterations; end_on: last | best (the stage ends on its best checked iterate); best_by: output (the points as one rectangle) | crops (20 exemplar-sized crops: the pattern away from the border); rows: moving_class (a stage moving one class among others is judged by that class's own PCF and its cross PCFs) | all (the points in play as one pattern)",
+                        [](const ppsynth::PatternRuleOptions& o, const std::string&) -> std::unique_ptr<ppsynth::StoppingRule> {
+                          return std::make_unique<ppsynth::PatternStoppingRule>(o.window, o.check_every, o.threshold, o.min_iterations,
+                                                                                o.end_on_best, o.best_by_crops, o.rows_of_moving_class);
+                        })

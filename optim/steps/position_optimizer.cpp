@@ -11,8 +11,7 @@
 
 namespace ppsynth {
 
-double learning_rate_for(const json& p, int s, const std::string& kp) {
-  const json& lr = p["lr"];
+double learning_rate_for(const json& lr, int s, const std::string& kp) {
   double v = 0;
   if (lr.is_number()) v = lr.get<double>();
   else if (lr.is_array() && !lr.empty() && lr[0].is_number())
@@ -191,17 +190,45 @@ class LbfgsPositions : public PositionOptimizer {
 }  // namespace
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::OptimizerRegistry, "adam", (ppsynth::json{{"lr", {0.005, 0.002, 0.002, 0.002}}}),
-                 (ppsynth::json{{"lr", "(0, inf)"}}),
-                 "Adam, fresh state per stage; lr per sigma (published: 0.005, 0.002, 0.002, 0.002)",
-                 [](const ppsynth::json& p, const std::string& key, torch::Tensor params, int s) -> std::unique_ptr<ppsynth::PositionOptimizer> {
-                   return std::make_unique<ppsynth::AdamPositions>(params, ppsynth::learning_rate_for(p, s, key));
-                 })
-PPSYNTH_REGISTER(ppsynth::OptimizerRegistry, "lbfgs", (ppsynth::json{{"lr", {0.5, 0.2, 0.2, 0.2}}, {"max_iter", 20}}),
-                 (ppsynth::json{{"lr", "(0, inf)"}, {"max_iter", "int [1, 10000]"}}),
-                 "L-BFGS (published: lr 100x Adam's); one step = up to max_iter evaluations",
-                 [](const ppsynth::json& p, const std::string& key, torch::Tensor params, int s) -> std::unique_ptr<ppsynth::PositionOptimizer> {
-                   return std::make_unique<ppsynth::LbfgsPositions>(params, ppsynth::learning_rate_for(p, s, key),
-                                                                   p["max_iter"].get<int>());
-                 })
+namespace ppsynth {
+namespace {
+constexpr const char* kLrDoc = "the step size: a number, or a list with one per sigma (the last repeats)";
+
+struct AdamOptions {
+  json lr = json::array({0.005, 0.002, 0.002, 0.002});
+  static const ParamTable<AdamOptions>& params() {
+    using O = AdamOptions;
+    static const ParamTable<O> t("method.optimizer", {param("lr", &O::lr, "(0, inf)", kLrDoc)});
+    return t;
+  }
+};
+
+struct LbfgsOptions {
+  json lr = json::array({0.5, 0.2, 0.2, 0.2});
+  int max_iter = 20;
+  static const ParamTable<LbfgsOptions>& params() {
+    using O = LbfgsOptions;
+    static const ParamTable<O> t("method.optimizer", {
+        param("lr", &O::lr, "(0, inf)", kLrDoc),
+        param("max_iter", &O::max_iter, "int [1, 10000]", "the loss evaluations one step may take"),
+    });
+    return t;
+  }
+};
+}  // namespace
+}  // namespace ppsynth
+
+PPSYNTH_REGISTER_PARAMS(ppsynth::OptimizerRegistry, "optimizer", "adam", ppsynth::AdamOptions::params(),
+                        "Adam, fresh state per stage; lr per sigma (published: 0.005, 0.002, 0.002, 0.002)",
+                        [](const ppsynth::AdamOptions& o, const std::string& key, torch::Tensor params,
+                           int s) -> std::unique_ptr<ppsynth::PositionOptimizer> {
+                          return std::make_unique<ppsynth::AdamPositions>(params, ppsynth::learning_rate_for(o.lr, s, key));
+                        })
+PPSYNTH_REGISTER_PARAMS(ppsynth::OptimizerRegistry, "optimizer", "lbfgs", ppsynth::LbfgsOptions::params(),
+                        "L-BFGS (published: lr 100x Adam's); one step = up to max_iter evaluations",
+                        [](const ppsynth::LbfgsOptions& o, const std::string& key, torch::Tensor params,
+                           int s) -> std::unique_ptr<ppsynth::PositionOptimizer> {
+                          return std::make_unique<ppsynth::LbfgsPositions>(params, ppsynth::learning_rate_for(o.lr, s, key),
+                                                                          o.max_iter);
+                        })
 PPSYNTH_DEFAULTS_KIND("optimizer", ppsynth::OptimizerRegistry)

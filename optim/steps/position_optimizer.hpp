@@ -34,7 +34,7 @@ class PositionOptimizer {
 // list can give each sigma its own rate.
 using OptimizerRegistry = Registry<PositionOptimizer, torch::Tensor /*params*/, int /*sigma index*/>;
 
-// lr may be a number or a list (one per sigma; the last repeats).
-double learning_rate_for(const json& params, int sigma_index, const std::string& key_path);
+// `lr`, a number or a list (one per sigma; the last repeats), at a sigma; key_path: the optimizer's.
+double learning_rate_for(const json& lr, int sigma_index, const std::string& key_path);
 
 }  // namespace ppsynth

@@ -93,10 +93,22 @@ namespace {
 // The registered form: divided by its value at the class's first evaluation, so at a
 // class's start it weighs `weight` x the paper's loss whatever the scene's PCF scale, and it
 // fades as the class's PCF approaches the exemplar's.
+struct PcfMatchOptions {
+  double weight = 0;
+  bool cross = true;
+  static const ParamTable<PcfMatchOptions>& params() {
+    using O = PcfMatchOptions;
+    static const ParamTable<O> t("method.terms.pcf_match", {
+        param("weight", &O::weight, "[0, inf)", "the term's weight against the paper's loss at the class's start (0: off)"),
+        param("cross", &O::cross, "", "the cross PCFs to the frozen classes too"),
+    });
+    return t;
+  }
+};
+
 class PcfMatchPointTerm : public PointTerm {
  public:
-  // The registry has checked every key's type against the defaults below.
-  explicit PcfMatchPointTerm(const nlohmann::json& p) : cross_(p["cross"].get<bool>()) {}
+  explicit PcfMatchPointTerm(const PcfMatchOptions& o) : cross_(o.cross) {}
   void begin_class(const ClassStage& s) override {
     term_ = std::make_unique<PcfMatchTerm>(s.exemplar, s.output, s.moving, s.frozen, s.upscale, cross_, s.device);
     start_ = -1;
@@ -117,9 +129,8 @@ class PcfMatchPointTerm : public PointTerm {
 
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::PointTermRegistry, "pcf_match", (nlohmann::json{{"weight", 0.0}, {"cross", true}}),
-                 (nlohmann::json{{"weight", "[0, inf)"}}),
-                 "the moving class's PCF (and cross-PCFs to the frozen classes) on the output torus vs the exemplar's",
-                 [](const nlohmann::json& p, const std::string& key) -> std::unique_ptr<ppsynth::PointTerm> {
-                   return std::make_unique<ppsynth::PcfMatchPointTerm>(p);
-                 })
+PPSYNTH_REGISTER_PARAMS(ppsynth::PointTermRegistry, "point_term", "pcf_match", ppsynth::PcfMatchOptions::params(),
+                        "the moving class's PCF (and cross-PCFs to the frozen classes) on the output torus vs the exemplar's",
+                        [](const ppsynth::PcfMatchOptions& o, const std::string&) -> std::unique_ptr<ppsynth::PointTerm> {
+                          return std::make_unique<ppsynth::PcfMatchPointTerm>(o);
+                        })

@@ -75,9 +75,22 @@ torch::Tensor SeparationTerm::operator()(const torch::Tensor& moving, const torc
 namespace {
 
 // The registered form: builds the stage's thresholds at each class stage.
+struct SeparationOptions {
+  double weight = 0;
+  double fraction = 0.9;
+  static const ParamTable<SeparationOptions>& params() {
+    using O = SeparationOptions;
+    static const ParamTable<O> t("method.terms.separation", {
+        param("weight", &O::weight, "[0, inf)", "the term's weight against the paper's loss at the class's start (0: off)"),
+        param("fraction", &O::fraction, "(0, 2]", "the minimum distance as a fraction of the exemplar's closest pair (per class pair, / u)"),
+    });
+    return t;
+  }
+};
+
 class SeparationPointTerm : public PointTerm {
  public:
-  explicit SeparationPointTerm(const nlohmann::json& p) : fraction_(p["fraction"].get<double>()) {}
+  explicit SeparationPointTerm(const SeparationOptions& o) : fraction_(o.fraction) {}
   void begin_class(const ClassStage& s) override {
     term_ = std::make_unique<SeparationTerm>(s.exemplar, s.output, s.moving, s.frozen, s.upscale, fraction_, s.device,
                                              s.window_side);
@@ -96,9 +109,8 @@ class SeparationPointTerm : public PointTerm {
 
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::PointTermRegistry, "separation", (nlohmann::json{{"weight", 0.0}, {"fraction", 0.9}}),
-                 (nlohmann::json{{"weight", "[0, inf)"}, {"fraction", "(0, 2]"}}),
-                 "soft minimum distance: fraction x the exemplar's closest pair per class pair / u (at least r_i + r_j)",
-                 [](const nlohmann::json& p, const std::string& key) -> std::unique_ptr<ppsynth::PointTerm> {
-                   return std::make_unique<ppsynth::SeparationPointTerm>(p);
-                 })
+PPSYNTH_REGISTER_PARAMS(ppsynth::PointTermRegistry, "point_term", "separation", ppsynth::SeparationOptions::params(),
+                        "soft minimum distance: fraction x the exemplar's closest pair per class pair / u (at least r_i + r_j)",
+                        [](const ppsynth::SeparationOptions& o, const std::string&) -> std::unique_ptr<ppsynth::PointTerm> {
+                          return std::make_unique<ppsynth::SeparationPointTerm>(o);
+                        })

@@ -65,9 +65,22 @@ torch::Tensor ClassOwnMapTerm::evaluate(const torch::Tensor& moving, const torch
 
 // On by default (weight 1): on the joint maps alone a later class fills the holes the earlier
 // ones left, whatever its own spacing (docs/explanation/method.md, "Beyond the paper").
-PPSYNTH_REGISTER(ppsynth::MapTermRegistry, "class_own", (nlohmann::json{{"weight", 1.0}}),
-                 (nlohmann::json{{"weight", "[0, inf)"}}),
-                 "from the second class on, the loss on the moving class's own maps vs the exemplar class's own",
-                 [](const nlohmann::json&, const std::string&) -> std::unique_ptr<ppsynth::MapTerm> {
-                   return std::make_unique<ppsynth::ClassOwnMapTerm>();
-                 })
+namespace ppsynth {
+namespace {
+struct ClassOwnOptions {
+  double weight = 1;
+  static const ParamTable<ClassOwnOptions>& params() {
+    static const ParamTable<ClassOwnOptions> t(
+        "method.map_terms.class_own",
+        {param("weight", &ClassOwnOptions::weight, "[0, inf)", "the loss on the moving class's own maps, against the joint maps' (0: off)")});
+    return t;
+  }
+};
+}  // namespace
+}  // namespace ppsynth
+
+PPSYNTH_REGISTER_PARAMS(ppsynth::MapTermRegistry, "map_term", "class_own", ppsynth::ClassOwnOptions::params(),
+                        "from the second class on, the loss on the moving class's own maps vs the exemplar class's own",
+                        [](const ppsynth::ClassOwnOptions&, const std::string&) -> std::unique_ptr<ppsynth::MapTerm> {
+                          return std::make_unique<ppsynth::ClassOwnMapTerm>();
+                        })

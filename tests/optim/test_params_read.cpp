@@ -1,0 +1,93 @@
+// Every part of every registry reads exactly the keys its defaults declare: built from its
+// defaults it reads no key they lack (a read of an undeclared key is a logic_error), built
+// without any one of them it fails (every declared key is read), and a key beside them that
+// nothing reads is refused.
+#include <catch2/catch.hpp>
+
+#include <stdexcept>
+#include <string>
+
+#include <torch/torch.h>
+
+#include "core/generators/generator.hpp"
+#include "core/output_shape.hpp"
+#include "losses/loss.hpp"
+#include "models/feature_net.hpp"
+#include "models/rasterizer.hpp"
+#include "optim/gabor/resolution/gabor_resolution.hpp"
+#include "optim/gabor/stages/map_term.hpp"
+#include "optim/gabor/stages/stage_kind.hpp"
+#include "optim/method/method.hpp"
+#include "optim/steps/initializer.hpp"
+#include "optim/steps/position_optimizer.hpp"
+#include "optim/steps/stopping_rule.hpp"
+#include "optim/terms/point_term.hpp"
+#include "tests/support/gabor_runs.hpp"
+#include "tests/support/small_exemplar.hpp"
+
+using namespace ppsynth;
+
+namespace {
+
+// `build(name, params)` builds the part `name` of registry R from `params` as its factory would
+// get them (defaults merged, "type" gone). Parts that test files register to show the JSON form
+// (a Python part's) are named test_* and left out.
+template <class R, class Build>
+void check_reads(const std::string& kind, Build build) {
+  const auto& registry = R::instance();
+  int parts = 0;
+  for (const std::string& name : registry.names()) {
+    if (name.rfind("test_", 0) == 0) continue;
+    ++parts;
+    INFO(kind << " '" << name << "'");
+    const json defaults = registry.entry(name).defaults;
+    CHECK_NOTHROW(build(name, defaults));
+    for (auto it = defaults.begin(); it != defaults.end(); ++it) {
+      INFO("without its declared key '" << it.key() << "'");
+      json less = defaults;
+      less.erase(it.key());
+      CHECK_THROWS_AS(build(name, less), std::logic_error);
+    }
+    json more = defaults;
+    more["zz_declared_by_no_one"] = 1;
+    CHECK_THROWS_WITH(build(name, more), Catch::Matchers::Contains("zz_declared_by_no_one"));
+  }
+  CHECK(parts > 0);
+}
+
+// The registry's own factory, with the arguments the run gives it.
+template <class R, class... Args>
+auto by_factory(const std::string& kind, Args... args) {
+  return [kind, args...](const std::string& name, const json& params) {
+    R::instance().entry(name).make(params, kind, args...);
+  };
+}
+
+}  // namespace
+
+TEST_CASE("every registered part reads each key its defaults declare, and no other", "[config][params]") {
+  const PointSet ex = test::small_exemplar(2, false);
+  const OutputShape square;
+  const GaborSettings settings = resolve_gabor_settings(test::method_params(json{{"type", "gabor"}}), ex, square, false);
+
+  check_reads<MethodRegistry>("method", [&](const std::string& name, const json& params) {
+    if (name != "gabor") return by_factory<MethodRegistry>("method")(name, params);
+    // The gabor method keeps its params and reads them when it resolves its settings.
+    json spec = params;
+    spec["type"] = "gabor";
+    resolve_gabor_settings(spec, ex, square, false);
+  });
+  check_reads<StageKindRegistry>("method.stage", by_factory<StageKindRegistry>("method.stage", std::cref(settings)));
+  RasterizerArgs raster;
+  raster.k = 4;  // the method's, which a Gabor raster needs
+  check_reads<RasterizerRegistry>("method.rasterizer", by_factory<RasterizerRegistry>("method.rasterizer", raster));
+  check_reads<FeatureNetRegistry>("method.feature_net", by_factory<FeatureNetRegistry>("method.feature_net", 1, uint64_t{1}));
+  check_reads<LossRegistry>("method.losses", by_factory<LossRegistry>("method.losses"));
+  const torch::Tensor positions = torch::zeros({4, 2}, torch::requires_grad());
+  check_reads<OptimizerRegistry>("method.optimizer", by_factory<OptimizerRegistry>("method.optimizer", positions, 0));
+  check_reads<InitializerRegistry>("method.init", by_factory<InitializerRegistry>("method.init"));
+  check_reads<StoppingRuleRegistry>("method.convergence", by_factory<StoppingRuleRegistry>("method.convergence"));
+  check_reads<PointTermRegistry>("method.terms", by_factory<PointTermRegistry>("method.terms"));
+  check_reads<MapTermRegistry>("method.map_terms", by_factory<MapTermRegistry>("method.map_terms"));
+  check_reads<GeneratorRegistry>("generator", by_factory<GeneratorRegistry>("generator"));
+}
