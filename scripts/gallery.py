@@ -4,6 +4,7 @@
     scripts/gallery.py -o gallery.html                  # every exemplar of configs/runs, --quick
     scripts/gallery.py -o gallery.html --preset fast    # the same at the fast preset (minutes each)
     scripts/gallery.py -o gallery.html --runs DIR...    # finished run directories (a sweep's runs/*)
+    scripts/gallery.py -o page.html --pair LABEL EXEMPLAR OUTPUT ...   # point files (a model's draw, an output.txt)
 
 Without --runs, it synthesizes each base config of configs/runs (one per shipped exemplar: the
 configs whose parent, if any, is a method fragment) into a scratch directory, `--quick` unless
@@ -13,8 +14,11 @@ Wasserstein and Chamfer distance, the scorecard (novelty: is it a copy of the ex
 fidelity: its L and g distances in spreads of independent realizations, within the band or
 not; periodicity; close pairs; docs/explanation/scorecard.md) and the spatstat-style verdict
 where the evaluation has them, and the settings it ran with. A multi-class exemplar and its
-output are drawn once more class by class, each class on its own beside all together. Pictures
-are embedded, so the page is one file to open or send.
+output are drawn once more class by class, each class on its own beside all together. Per
+fidelity row, L(r) - r of exemplar and output with fidelity's band around the exemplar's (where
+the evaluation has the curves). A --pair card evaluates OUTPUT against EXEMPLAR with `ppsynth
+eval` and draws both (docs/lab/scorecard/real_data_page.sh: the six real sets). Pictures are
+embedded, so the page is one file to open or send.
 
 The page is written whole or not at all; an existing file is replaced only with --force.
 """
@@ -94,10 +98,12 @@ COLOURS = ("#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e
 
 
 def read_points(path):
-    """A plain point file as ppsynth writes it ("# domain x0 y0 x1 y1", "# class_labels ...",
-    then "x y [class ...]" rows, the class an index into the labels): (domain, [(x, y, class)],
-    labels); None when the file is not in that form (the card then shows no per-class panels)."""
-    domain, points, labels = None, [], []
+    """A plain point file as ppsynth writes it ("# domain x0 y0 x1 y1", "# class_labels ..." or
+    "# classes 0=a 1=b", the columns' header "# x y [class] [attributes ...]", then the rows, the
+    class an index into the labels; without the header the third column is the class):
+    (domain, [(x, y, class)], labels); None when the file is not in that form (the card then
+    shows no per-class panels)."""
+    domain, points, labels, column = None, [], [], 2
     try:
         with open(path) as f:
             for line in f:
@@ -109,8 +115,13 @@ def read_points(path):
                         domain = tuple(float(v) for v in t[2:])
                     if len(t) > 2 and t[1] == "class_labels":
                         labels = t[2:]
+                    if len(t) > 2 and t[1] == "classes":
+                        labels = [c.split("=", 1)[-1] for c in t[2:]]
+                    if len(t) >= 3 and t[1:3] == ["x", "y"]:  # a mark column is not a class
+                        column = t.index("class") - 1 if "class" in t else None
                     continue
-                points.append((float(t[0]), float(t[1]), int(float(t[2])) if len(t) > 2 else 0))
+                c = int(float(t[column])) if column is not None and len(t) > column else 0
+                points.append((float(t[0]), float(t[1]), c))
     except (OSError, ValueError):
         return None
     return (domain, points, labels) if domain and domain[2] > domain[0] and domain[3] > domain[1] else None
@@ -147,6 +158,49 @@ def class_panels(run_dir):
     return "".join(rows)
 
 
+def l_panels(m):
+    """Per fidelity row with an L distance, an SVG of L(r) - r of exemplar and output up to the
+    row's r_max, and the band around the exemplar's: L within band x spread mean spacings of it
+    (the fidelity line's test, a sup distance: the output's curve stays inside the grey). From
+    the evaluation's second-order curves ("second_order", eval without --no-curves) and its
+    fidelity rows; "" when either is missing."""
+    rows = ((m.get("second_order") or {}).get("rows")) or []
+    fid = ((m.get("scorecard") or {}).get("fidelity") or {}).get("rows") or []
+    def key(r):
+        return (r.get("row"), r.get("class"), r.get("ci"), r.get("cj"))
+    curves = {key(r): r for r in rows if isinstance(r.get("r"), list)}
+    cells = []
+    for f in fid:
+        c, l = curves.get(key(f)), f.get("l")
+        if not c or not isinstance(l, dict) or not all(isinstance(v, (int, float)) for v in (f.get("r_max"), f.get("spacing"),
+                                                                                           l.get("spread"), l.get("band"))):
+            continue
+        half = l["band"] * l["spread"] * f["spacing"]  # the band's half-width in L's units
+        pts = [(r, e - r, o - r) for r, e, o in zip(c["r"], c["exemplar"]["l"], c["output"]["l"])
+               if 0 < r <= f["r_max"] and isinstance(e, (int, float)) and isinstance(o, (int, float))]
+        if len(pts) < 2:
+            continue
+        ys = [v for _, e, o in pts for v in (e - half, e + half, o)]
+        lo, hi = min(ys), max(ys)
+        hi, lo = hi + 0.05 * (hi - lo or 1), lo - 0.05 * (hi - lo or 1)
+        w, h, r1 = 210, 120, pts[-1][0]
+        def xy(r, y):
+            return f"{r / r1 * w:.1f},{(hi - y) / (hi - lo) * h:.1f}"
+        band = " ".join(xy(r, e + half) for r, e, _ in pts) + " " + " ".join(xy(r, e - half) for r, e, _ in reversed(pts))
+        zero = f'<line x1="0" x2="{w}" y1="{hi / (hi - lo) * h:.1f}" y2="{hi / (hi - lo) * h:.1f}" stroke="#ccc"/>' if lo < 0 < hi else ""
+        within = "within band" if l.get("within") else "out of band"
+        title = f"{f.get('name', f.get('row'))}: L {l.get('spreads', float('nan')):.2f} spreads, {within}"
+        cells.append(f'<div class="panel"><svg width="{w}" height="{h}" viewBox="0 0 {w} {h}">'
+                     f'<rect width="100%" height="100%" fill="#fff" stroke="#999"/>{zero}'
+                     f'<polygon points="{band}" fill="#ddd"/>'
+                     f'<polyline points="{" ".join(xy(r, e) for r, e, _ in pts)}" fill="none" stroke="#000" stroke-width="1.5"/>'
+                     f'<polyline points="{" ".join(xy(r, o) for r, _, o in pts)}" fill="none" stroke="#1f77b4" stroke-width="1.5"/>'
+                     f'</svg><div class="ptitle">{html.escape(title)}</div></div>')
+    legend = ('<div class="ptitle">L(r) - r up to each row\'s r_max (exemplar units): exemplar (black), output (blue), '
+              'the band around the exemplar\'s (grey)</div>')
+    return f'<div class="classes">{"".join(cells)}</div>{legend}' if cells else ""
+
+
 def scorecard_rows(m):
     """The scorecard's lines as the card shows them (docs/explanation/scorecard.md)."""
     sc = m.get("scorecard") or {}
@@ -156,18 +210,17 @@ def scorecard_rows(m):
         word = "<b>COPY</b> of the exemplar" if nov.get("copy") else "new"
         rows.append(("novelty", f"{word}: {nov['share']:.3f} of the neighbourhoods copied (a copy from {nov.get('copy_share', '?')})"))
     fid = sc.get("fidelity") or {}
-    band = fid.get("band")
     for r in fid.get("rows", []):
         parts = []
         for key, label in (("l", "L"), ("g", "g"), ("kmm", "k_mm")):
             d = r.get(key)
-            if isinstance(d, dict) and isinstance(d.get("spreads"), (int, float)):
-                parts.append(f"{label} {d['spreads']:.2f}")
+            if isinstance(d, dict) and isinstance(d.get("spreads"), (int, float)) and isinstance(d.get("band"), (int, float)):
+                parts.append(f"{label} {d['spreads']:.2f} (band {d['band']:.2f})")
         if r.get("within") is None:
             word = "cannot judge"
         else:
             word = "within band" if r["within"] else "<b>out of band</b>"
-        spreads = f"{', '.join(parts)} spreads (band {band:g}); " if parts and isinstance(band, (int, float)) else ""
+        spreads = f"{', '.join(parts)} spreads; " if parts else ""
         reason = f" ({html.escape(r['reason'])})" if r.get("reason") and not parts else ""
         rows.append((f"fidelity, {r.get('name', r.get('row'))}", f"{spreads}{word}{reason}"))  # the table escapes names
     per = sc.get("periodicity") or {}
@@ -199,6 +252,18 @@ def card(run_dir):
     preset = (run.get("preset") or {}).get("name") if isinstance(run.get("preset"), dict) else run.get("preset")
     defaults = "the paper's settings" if method == "gabor" else "its defaults"
     settings = "quick settings" if run.get("quick") else (f"preset {preset}" if preset else defaults)
+    rows = measure_rows(m)
+    rows.append(("method", f"{html.escape(method)}, {settings}, seed {run.get('seed', '?')}"))
+    threads = run.get("threads", "?")
+    rows.append(("time", f"{run.get('total_seconds', 0):.1f} s, {threads} thread{'' if threads == 1 else 's'}, {run.get('processor', '?')}"))
+    table = "".join(f"<tr><th>{html.escape(k)}</th><td>{v}</td></tr>" for k, v in rows)
+    return (f'<figure><figcaption>{html.escape(name)}</figcaption>'
+            f'<img alt="{html.escape(name)}: exemplar and output" src="data:image/png;base64,{picture}">'
+            f"{class_panels(run_dir)}{l_panels(m)}<table>{table}</table></figure>")
+
+
+def measure_rows(m):
+    """An evaluation's rows as a card shows them: counts and distances, the scorecard, the verdict."""
     rows = []
     a = m.get("all", {})
     if a:
@@ -221,13 +286,39 @@ def card(run_dir):
         else:
             word = "same K-function" if r.get("pass") else "<b>K-function differs</b>"
             rows.append((f"K test, {label}", f"{word} (p = {r['p']:.3g})"))
-    rows.append(("method", f"{html.escape(method)}, {settings}, seed {run.get('seed', '?')}"))
-    threads = run.get("threads", "?")
-    rows.append(("time", f"{run.get('total_seconds', 0):.1f} s, {threads} thread{'' if threads == 1 else 's'}, {run.get('processor', '?')}"))
+    return rows
+
+
+def pair_card(label, exemplar, output):
+    """A card for an output that is a point file, not a run directory (a fitted model's draw, a
+    finished run's output.txt): `ppsynth eval` of it against `exemplar` (its scorecard, verdict
+    and curves), the two drawn side by side (and class by class), the L curves with their band."""
+    for path in (exemplar, output):
+        if not os.path.isfile(path):
+            sys.exit(f"gallery: --pair {label}: no file {path}")
+    p = subprocess.run([BIN, "eval", "-q", "--json", "--exemplar", exemplar, "--output", output], capture_output=True, text=True)
+    if p.returncode != 0:
+        sys.exit(f"gallery: --pair {label}: ppsynth eval failed (exit {p.returncode}):\n{p.stderr.strip()}")
+    m = json.loads(p.stdout)
+    ex, out = read_points(exemplar), read_points(output)
+    if not ex or not out:
+        sys.exit(f"gallery: --pair {label}: {exemplar if not ex else output} is not a plain point file of ppsynth")
+    classes = sorted({q[2] for q in ex[1]} | {q[2] for q in out[1]})
+    labels = ex[2] or out[2]
+    pictures = []
+    for name, (domain, points, _) in (("exemplar", ex), ("output", out)):
+        aspect = (domain[2] - domain[0]) / (domain[3] - domain[1])
+        height = int(min(150 if name == "exemplar" else 220, 460 / aspect))  # the card's width
+        cells = [panel(domain, points, set(classes), name, height=height)]
+        if len(classes) > 1:
+            cells += [panel(domain, points, {c}, f"{name}, class {labels[c] if c < len(labels) else c}", height=height // 2)
+                      for c in classes]
+        pictures.append(f'<div class="classes">{"".join(cells)}</div>')
+    rows = measure_rows(m)
+    rows.append(("files", f"{html.escape(exemplar)} &rarr; {html.escape(output)}"))
     table = "".join(f"<tr><th>{html.escape(k)}</th><td>{v}</td></tr>" for k, v in rows)
-    return (f'<figure><figcaption>{html.escape(name)}</figcaption>'
-            f'<img alt="{html.escape(name)}: exemplar and output" src="data:image/png;base64,{picture}">'
-            f"{class_panels(run_dir)}<table>{table}</table></figure>")
+    return (f'<figure><figcaption>{html.escape(label)}</figcaption>{"".join(pictures)}{l_panels(m)}'
+            f"<table>{table}</table></figure>")
 
 
 PAGE = """<!doctype html>
@@ -247,8 +338,7 @@ th {{ text-align: left; color: #666; font-weight: normal; padding-right: 1em; ve
 </style></head>
 <body>
 <h1>ppsynth gallery</h1>
-<p class="lead">Each exemplar (left), the points the synthesis started from (middle), and the pattern
-ppsynth synthesized from it (right, 2 x 2 the exemplar's area). {what}</p>
+<p class="lead">{what}</p>
 <main>
 {cards}
 </main>
@@ -294,24 +384,30 @@ def main():
     ap.add_argument("--preset", help="synthesize at this preset (e.g. fast) instead of --quick")
     ap.add_argument("--work", help="keep the syntheses in this new directory (default: a scratch directory, removed)")
     ap.add_argument("--threads", type=int, default=0, help="threads per synthesis (default: PPSYNTH_THREADS or every core)")
+    ap.add_argument("--pair", nargs=3, action="append", metavar=("LABEL", "EXEMPLAR", "OUTPUT"),
+                    help="a card for OUTPUT, a point file, evaluated against EXEMPLAR (repeatable; with or without --runs)")
     ap.add_argument("--force", action="store_true", help="replace an existing page")
     args = ap.parse_args()
     check_out(args.out, args.force)
-    if args.runs and (args.preset or args.work):
-        sys.exit("gallery: --runs shows finished runs; --preset and --work go with new syntheses")
+    if (args.runs or args.pair) and (args.preset or args.work):
+        sys.exit("gallery: --runs and --pair show finished outputs; --preset and --work go with new syntheses")
     if args.work and os.path.exists(args.work) and os.listdir(args.work):
         sys.exit(f"gallery: --work {args.work} is not empty")
     if not args.runs and not os.access(BIN, os.X_OK):
         sys.exit(f"gallery: {BIN} not found: build first (scripts/setup.sh) or set PPSYNTH_BIN")
 
     scratch = None
-    if args.runs:
-        dirs = args.runs
-        what = "Finished runs."
+    runs = ("Each exemplar (left), the points the synthesis started from (middle), and the pattern ppsynth "
+            "synthesized from it (right, 2 x 2 the exemplar's area). ")
+    pairs = ("A point file's card: the exemplar, the output (and each class on its own), per row L(r) - r of both with "
+             "the fidelity band around the exemplar's, and <code>ppsynth eval</code>'s scorecard and verdict. ")
+    if args.runs or args.pair:
+        dirs = args.runs or []
+        what = (runs + "Finished runs. " if dirs else "") + (pairs if args.pair else "")
     else:
         work = args.work or (scratch := tempfile.TemporaryDirectory(prefix="ppsynth-gallery-")).name
         dirs = synthesize(base_configs(), work, args.preset, args.threads)
-        what = ("At the " + args.preset + " preset." if args.preset else
+        what = runs + ("At the " + args.preset + " preset." if args.preset else
                 "At quick settings (tiny grids, few iterations): they show every exemplar through the "
                 "pipeline, not the method's quality; <code>--preset fast</code> or <code>--runs</code> for that.")
     def order(d):  # by exemplar name, then seed
@@ -320,7 +416,7 @@ def main():
             return (str(r.get("name", "")), int(r.get("seed", 0)))
         except (OSError, ValueError):
             return ("", 0)  # card() names what is wrong with it
-    cards = "\n".join(card(d) for d in sorted(dirs, key=order))
+    cards = "\n".join([card(d) for d in sorted(dirs, key=order)] + [pair_card(*p) for p in args.pair or []])
     command = "scripts/gallery.py " + " ".join(sys.argv[1:])
     page = PAGE.format(what=what, when=datetime.date.today().isoformat(), command=html.escape(command), cards=cards)
     try:
@@ -329,7 +425,7 @@ def main():
         sys.exit(f"gallery: cannot write {args.out}: {e.strerror or e}")
     if scratch:
         scratch.cleanup()
-    print(f"gallery: {len(dirs)} exemplars -> {args.out}")
+    print(f"gallery: {len(dirs) + len(args.pair or [])} cards -> {args.out}")
 
 
 if __name__ == "__main__":

@@ -117,3 +117,35 @@ def test_a_failed_write_removes_its_partial_file(tmp_path, monkeypatch):
     with pytest.raises(OSError):
         module.write_page("<html></html>", str(tmp_path / "g.html"))
     assert os.listdir(tmp_path) == []
+
+
+def test_a_point_file_gets_a_card_with_its_l_curves_and_band(tmp_path):
+    # --pair: an output that is a point file (a fitted model's draw), evaluated against its
+    # exemplar: both drawn, L(r) - r of both inside the band's polygon, the scorecard's lines.
+    ex, out = tmp_path / "ex.txt", tmp_path / "out.txt"
+    command("generate", "poisson_disk", "-n", 200, "--seed", 1, "-o", ex, "-q")
+    command("generate", "poisson_disk", "-n", 800, "--seed", 2, "--domain", 0, 0, 2, 2, "-o", out, "-q")
+    page = tmp_path / "g.html"
+    p = gallery("-o", page, "--pair", "a Poisson disk's draw", ex, out)
+    assert p.returncode == 0, p.stderr
+    text = page.read_text()
+    assert "<figcaption>a Poisson disk&#x27;s draw</figcaption>" in text
+    assert text.count("<svg") >= 3  # exemplar, output, the all-points L panel
+    assert '<polygon points="' in text and "all points: L " in text and "spreads" in text
+    assert re.search(r"fidelity, all points</th><td>L [0-9.]+ \(band [0-9.]+\)", text)
+    assert "novelty" in text and "K test, all points" in text
+    p = gallery("-o", tmp_path / "h.html", "--pair", "x", ex, tmp_path / "missing.txt")
+    assert p.returncode != 0 and "missing.txt" in p.stderr and not (tmp_path / "h.html").exists()
+
+
+def test_a_mark_column_is_not_a_class(tmp_path):
+    # longleaf's plain file: "# x y mark" (a tree's diameter); it was drawn as 70-odd classes.
+    spec = importlib.util.spec_from_file_location("gallery", SCRIPT)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    marked, classed = tmp_path / "m.txt", tmp_path / "c.txt"
+    marked.write_text("# domain 0 0 1 1\n# x y mark\n0.1 0.2 32.9\n0.3 0.4 53.5\n")
+    classed.write_text("# domain 0 0 1 1\n# classes 0=off 1=on\n# x y class\n0.1 0.2 1\n0.3 0.4 0\n")
+    assert [p[2] for p in module.read_points(str(marked))[1]] == [0, 0]
+    _, points, labels = module.read_points(str(classed))
+    assert [p[2] for p in points] == [1, 0] and labels == ["off", "on"]
