@@ -18,7 +18,7 @@
 // area its noise averages over does not; for one intensity the two laws agree.
 // The scaled distances' median is the "spread" (the typical distance of an independent
 // realization); a median, as the sub-windows overlap and share the exemplar's noise: their
-// upper quantiles come out too low (fidelity.hpp's band is a measured constant instead). How
+// upper quantiles come out too low (fidelity.hpp's band is measured instead). How
 // well this holds on simulated processes: docs/lab/scorecard/README.md ("Fidelity, calibrated").
 #include <cstdint>
 #include <vector>
