@@ -6,6 +6,8 @@
 #include "core/config/defaults_catalog.hpp"
 #include "core/config/json_text.hpp"
 #include "core/config/param_bounds.hpp"
+#include "core/config/param_docs.hpp"
+#include "core/config/params.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/output_shape.hpp"
@@ -17,26 +19,54 @@
 
 namespace ppsynth {
 
-json run_defaults() {
-  return json{
-      {"name", ""},              // run name (default: the exemplar's file stem)
-      {"description", ""},
-      {"exemplar", ""},          // point file; "shared:data/..." is relative to ../shared
-      {"format", "auto"},        // auto | gabor | point-synthesis | plain | json
-      {"scaling", "per-axis"},   // Point-Synthesis files: per-axis (published) | uniform
-      {"merge_classes", false},  // treat every point as one class (positions-only synthesis)
-      {"init_file", nullptr},    // explicit initialization: one file (with a class column) or a list, one file per class
-      {"preset", nullptr},       // a named preset under the config's own keys (optim/run/presets.hpp): "fast"
-      {"seed", 95},
-      {"upscale", 2},            // u: S = u^2 times the exemplar's points (unless "output" gives a size)
-      {"output", output_defaults()},  // a rectangle or a point count in exemplar units (core/output_shape.hpp)
-      {"method", {{"type", "gabor"}}},
-      {"snapshots", true},       // plot the output after every stage (paper Fig. 4)
-      {"evaluate", true},        // run the metrics on the output
-      {"checkpoint_seconds", 60.0},  // wall time between checkpoints (and at every stage boundary)
-      {"runtime", runtime_defaults()},  // device, TF32, determinism (optim/run/runtime.hpp)
-  };
-}
+namespace {
+
+// The top-level keys of a run config. Blocks that are their own parts' (output, runtime, the
+// method's spec) and the seed (a whole number up to 2^63 - 1: is_seed) stay JSON here.
+struct RunOptions {
+  std::string name;
+  std::string description;
+  std::string exemplar;
+  std::string format = "auto";
+  std::string scaling = "per-axis";
+  bool merge_classes = false;
+  json init_file;
+  json preset;
+  json seed = 95;
+  int upscale = 2;
+  json output = output_defaults();
+  json method = json{{"type", "gabor"}};
+  bool snapshots = true;
+  bool evaluate = true;
+  double checkpoint_seconds = 60;
+  json runtime = runtime_defaults();
+  static const ParamTable<RunOptions>& params() {
+    using O = RunOptions;
+    static const ParamTable<O> t("", {
+        param("name", &O::name, "", "the run's name (empty: the exemplar's file stem)"),
+        param("description", &O::description, "", "a line about the run, kept in its config"),
+        param("exemplar", &O::exemplar, "", "the exemplar's point file (\"shared:data/...\" under ../shared)"),
+        param("format", &O::format, "", "the exemplar's format: auto, gabor, point-synthesis, plain or json"),
+        param("scaling", &O::scaling, "", "a Point-Synthesis file's scaling: per-axis (the published) or uniform"),
+        param("merge_classes", &O::merge_classes, "", "every point as one class (positions only)"),
+        param("init_file", &O::init_file, "", "the start: one file (with a class column), or a list with one file per class"),
+        param("preset", &O::preset, "", "a named preset laid under the config's own keys (\"fast\")"),
+        param("seed", &O::seed, "", "the seed of every random draw of the run"),
+        param("upscale", &O::upscale, "int [1, 64]", "u: u^2 times the exemplar's points (unless output gives a size)"),
+        param("output", &O::output, "", "a rectangle or a point count in exemplar units"),
+        param("method", &O::method, "", "the method's spec: its type and its keys"),
+        param("snapshots", &O::snapshots, "", "plot the output after every stage"),
+        param("evaluate", &O::evaluate, "", "run the metrics on the output"),
+        param("checkpoint_seconds", &O::checkpoint_seconds, "(0, inf)", "wall time between checkpoints (and one at every stage's end)"),
+        param("runtime", &O::runtime, "", "device, TF32 and determinism"),
+    });
+    return t;
+  }
+};
+
+}  // namespace
+
+json run_defaults() { return RunOptions::params().defaults(); }
 
 json resolve_run_config(json config, const std::vector<std::string>& overrides) {
   for (auto& o : overrides) set_override(config, o);
@@ -47,7 +77,7 @@ json resolve_run_config(json config, const std::vector<std::string>& overrides) 
     throw config_error(*key, "not valid UTF-8, and a run records its config as JSON: rename the file (or link it under a UTF-8 name)");
   json r = apply_defaults(run_defaults(), apply_preset(config), "");
   if (!is_seed(r["seed"])) throw config_error("seed", "expected a whole number from 0 to 2^63 - 1, got " + r["seed"].dump());
-  check_bounds(r, json{{"upscale", "int [1, 64]"}, {"checkpoint_seconds", "(0, inf)"}}, "");  // u: u^2 copies of the exemplar
+  check_bounds(r, RunOptions::params().bounds(), "");
   check_runtime(r["runtime"]);
   json resolved_method;
   MethodRegistry::instance().create(r["method"], "method", &resolved_method);
@@ -116,8 +146,11 @@ std::optional<PointSet> load_initialization(const json& r) {
 
 }  // namespace ppsynth
 
+PPSYNTH_PARAM_DOCS("run", "run", [] { return ppsynth::RunOptions::params().docs(); })
+
 namespace {
 [[maybe_unused]] const bool ppsynth_run_kind = ppsynth::register_defaults_kind("run", [] {
-  return ppsynth::json{{"run", {{"description", "top-level keys of a synthesis config"}, {"defaults", ppsynth::run_defaults()}}}};
+  return ppsynth::json{{"run", {{"description", "top-level keys of a synthesis config"}, {"defaults", ppsynth::run_defaults()},
+                               {"bounds", ppsynth::RunOptions::params().bounds()}}}};
 });
 }  // namespace
