@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "core/config/param_docs.hpp"
 #include "core/config/params.hpp"
 
 namespace ppsynth {
@@ -99,11 +98,10 @@ torch::Tensor filter_bank(const std::string& name, int K, const std::string& key
 
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "fixed_bank", ppsynth::FixedBankOptions::params().defaults(),
-                 ppsynth::FixedBankOptions::params().bounds(), "fixed filter banks (Fig. 10): gaussian | sobel | derivative | all",
-                 [](const ppsynth::json& p, const std::string& key, int in_channels, uint64_t) -> std::unique_ptr<ppsynth::FeatureNet> {
-                   const ppsynth::FixedBankOptions o = ppsynth::FixedBankOptions::params().read(p, key);
-                   auto bank = ppsynth::filter_bank(o.bank, o.kernel_size, key);
-                   return std::make_unique<ppsynth::FixedBankNet>(bank, in_channels, o.depth, o.instance_norm, o.relu);
-                 })
-PPSYNTH_PARAM_DOCS("feature_net", "fixed_bank", [] { return ppsynth::FixedBankOptions::params().docs(); })
+PPSYNTH_REGISTER_PARAMS(ppsynth::FeatureNetRegistry, "feature_net", "fixed_bank", ppsynth::FixedBankOptions::params(),
+                        "fixed filter banks (Fig. 10): gaussian | sobel | derivative | all",
+                        [](const ppsynth::FixedBankOptions& o, const std::string& key, int in_channels,
+                           uint64_t) -> std::unique_ptr<ppsynth::FeatureNet> {
+                          auto bank = ppsynth::filter_bank(o.bank, o.kernel_size, key);
+                          return std::make_unique<ppsynth::FixedBankNet>(bank, in_channels, o.depth, o.instance_norm, o.relu);
+                        })

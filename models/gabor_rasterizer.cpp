@@ -1,6 +1,5 @@
 // "gabor" and "spatial" rasterizers: GaborFeatureMaps behind the Rasterizer interface.
 #include "core/config/defaults_catalog.hpp"
-#include "core/config/param_docs.hpp"
 #include "core/config/params.hpp"
 #include "models/gabor_feature_maps.hpp"
 #include "models/rasterizer.hpp"
@@ -40,8 +39,7 @@ struct GaborRasterizerOptions {
   }
 };
 
-std::unique_ptr<Rasterizer> make(const json& p, const std::string& key, const RasterizerArgs& a, bool spatial_only) {
-  const GaborRasterizerOptions r = GaborRasterizerOptions::params().read(p, key);
+std::unique_ptr<Rasterizer> make(const GaborRasterizerOptions& r, const RasterizerArgs& a, bool spatial_only) {
   GaborMapsOptions o;
   o.res = a.res;
   o.rows = a.rows;
@@ -57,14 +55,14 @@ std::unique_ptr<Rasterizer> make(const json& p, const std::string& key, const Ra
 }  // namespace
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::RasterizerRegistry, "gabor", ppsynth::GaborRasterizerOptions::params().defaults(),
-                 ppsynth::GaborRasterizerOptions::params().bounds(),
-                 "Gabor maps: 1 spatial + 9 frequency maps per attribute (paper Eq. 5)",
-                 [](const ppsynth::json& p, const std::string& key, ppsynth::RasterizerArgs a) { return ppsynth::make(p, key, a, false); })
-PPSYNTH_REGISTER(ppsynth::RasterizerRegistry, "spatial", ppsynth::GaborRasterizerOptions::params().defaults(),
-                 ppsynth::GaborRasterizerOptions::params().bounds(),
-                 "spatial maps only (gamma = 0; Fig. 11, irregular-convolution features)",
-                 [](const ppsynth::json& p, const std::string& key, ppsynth::RasterizerArgs a) { return ppsynth::make(p, key, a, true); })
+PPSYNTH_REGISTER_PARAMS(ppsynth::RasterizerRegistry, "rasterizer", "gabor", ppsynth::GaborRasterizerOptions::params(),
+                        "Gabor maps: 1 spatial + 9 frequency maps per attribute (paper Eq. 5)",
+                        [](const ppsynth::GaborRasterizerOptions& r, const std::string&, ppsynth::RasterizerArgs a) {
+                          return ppsynth::make(r, a, false);
+                        })
+PPSYNTH_REGISTER_PARAMS(ppsynth::RasterizerRegistry, "rasterizer", "spatial", ppsynth::GaborRasterizerOptions::params(),
+                        "spatial maps only (gamma = 0; Fig. 11, irregular-convolution features)",
+                        [](const ppsynth::GaborRasterizerOptions& r, const std::string&, ppsynth::RasterizerArgs a) {
+                          return ppsynth::make(r, a, true);
+                        })
 PPSYNTH_DEFAULTS_KIND("rasterizer", ppsynth::RasterizerRegistry)
-PPSYNTH_PARAM_DOCS("rasterizer", "gabor", [] { return ppsynth::GaborRasterizerOptions::params().docs(); })
-PPSYNTH_PARAM_DOCS("rasterizer", "spatial", [] { return ppsynth::GaborRasterizerOptions::params().docs(); })

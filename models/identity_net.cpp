@@ -1,6 +1,5 @@
 // "identity": no filter network (Fig. 12b, "Gabor only"): every block's features are the
 // maps themselves, so the losses act on the Gabor maps directly (published encode2).
-#include "core/config/param_docs.hpp"
 #include "core/config/params.hpp"
 #include "models/feature_net.hpp"
 
@@ -27,9 +26,8 @@ struct IdentityOptions {
 }  // namespace
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "identity", ppsynth::IdentityOptions::params().defaults(),
-                 ppsynth::IdentityOptions::params().bounds(), "no filters: the maps themselves at every layer (Fig. 12b)",
-                 [](const ppsynth::json& p, const std::string& key, int, uint64_t) -> std::unique_ptr<ppsynth::FeatureNet> {
-                   return std::make_unique<ppsynth::IdentityNet>(ppsynth::IdentityOptions::params().read(p, key).depth);
-                 })
-PPSYNTH_PARAM_DOCS("feature_net", "identity", [] { return ppsynth::IdentityOptions::params().docs(); })
+PPSYNTH_REGISTER_PARAMS(ppsynth::FeatureNetRegistry, "feature_net", "identity", ppsynth::IdentityOptions::params(),
+                        "no filters: the maps themselves at every layer (Fig. 12b)",
+                        [](const ppsynth::IdentityOptions& o, const std::string&, int, uint64_t) -> std::unique_ptr<ppsynth::FeatureNet> {
+                          return std::make_unique<ppsynth::IdentityNet>(o.depth);
+                        })

@@ -1,6 +1,5 @@
 #include "models/random_filter_net.hpp"
 
-#include "core/config/param_docs.hpp"
 #include "models/network_precision.hpp"
 
 namespace ppsynth {
@@ -133,18 +132,15 @@ const ParamTable<RandomFilterNetOptions>& RandomFilterNetOptions::params() {
 
 }  // namespace ppsynth
 
-PPSYNTH_PARAM_DOCS("feature_net", "random", [] { return ppsynth::RandomFilterNetOptions::params().docs(); })
-
-PPSYNTH_REGISTER(ppsynth::FeatureNetRegistry, "random", ppsynth::RandomFilterNetOptions::params().defaults(),
-                 ppsynth::RandomFilterNetOptions::params().bounds(),
-                 "the paper's random-filter network (Glorot-uniform, frozen)",
-                 [](const ppsynth::json& p, const std::string& key, int in_channels, uint64_t seed) -> std::unique_ptr<ppsynth::FeatureNet> {
-                   ppsynth::RandomFilterNetOptions o = ppsynth::RandomFilterNetOptions::params().read(p, key);
-                   o.in_channels = in_channels;
-                   o.seed = seed;
-                   const ppsynth::NetworkPrecision prec = ppsynth::resolve_network_precision(o.precision, key + ".precision");
-                   o.dtype = prec.dtype;
-                   o.precision_reason = prec.reason;
-                   if (o.kernel_size % 2 == 0) throw ppsynth::config_error(key + ".kernel_size", "must be odd");
-                   return std::make_unique<ppsynth::RandomFilterNet>(o);
-                 })
+PPSYNTH_REGISTER_PARAMS(ppsynth::FeatureNetRegistry, "feature_net", "random", ppsynth::RandomFilterNetOptions::params(),
+                        "the paper's random-filter network (Glorot-uniform, frozen)",
+                        [](ppsynth::RandomFilterNetOptions o, const std::string& key, int in_channels,
+                           uint64_t seed) -> std::unique_ptr<ppsynth::FeatureNet> {
+                          o.in_channels = in_channels;
+                          o.seed = seed;
+                          const ppsynth::NetworkPrecision prec = ppsynth::resolve_network_precision(o.precision, key + ".precision");
+                          o.dtype = prec.dtype;
+                          o.precision_reason = prec.reason;
+                          if (o.kernel_size % 2 == 0) throw ppsynth::config_error(key + ".kernel_size", "must be odd");
+                          return std::make_unique<ppsynth::RandomFilterNet>(o);
+                        })
