@@ -1,7 +1,7 @@
 // Every part of every registry reads exactly the keys its defaults declare: built from its
 // defaults it reads no key they lack (a read of an undeclared key is a logic_error), built
 // without any one of them it fails (every declared key is read), and a key beside them that
-// nothing reads is refused.
+// nothing reads is refused. And each declared key has its doc line for the reference.
 #include <catch2/catch.hpp>
 
 #include <stdexcept>
@@ -9,6 +9,7 @@
 
 #include <torch/torch.h>
 
+#include "core/config/param_docs.hpp"
 #include "core/generators/generator.hpp"
 #include "core/output_shape.hpp"
 #include "losses/loss.hpp"
@@ -91,3 +92,47 @@ TEST_CASE("every registered part reads each key its defaults declare, and no oth
   check_reads<MapTermRegistry>("method.map_terms", by_factory<MapTermRegistry>("method.map_terms"));
   check_reads<GeneratorRegistry>("generator", by_factory<GeneratorRegistry>("generator"));
 }
+
+namespace {
+
+// The keys of `defaults` (dotted; a part's spec, a list or an empty object is one key) that
+// `docs` gives no line. Parts and blocks that test files register (test_*) are left out.
+void undocumented(const json& defaults, const json& docs, const std::string& prefix, std::vector<std::string>& out) {
+  for (auto it = defaults.begin(); it != defaults.end(); ++it) {
+    const std::string key = prefix + it.key();
+    if (key.rfind("test_", 0) == 0) continue;  // a test file's stage kind's block under the gabor method
+    const json* d = docs.is_object() && docs.contains(it.key()) ? &docs[it.key()] : nullptr;
+    if (it->is_object() && !it->empty() && !it->contains("type") && d && d->is_object())
+      undocumented(*it, *d, key + ".", out);
+    else if (!d || !d->is_string() || d->get<std::string>().empty())
+      out.push_back(key);
+  }
+}
+
+template <class R>
+void check_docs(const std::string& kind) {
+  const auto& registry = R::instance();
+  for (const std::string& name : registry.names()) {
+    if (name.rfind("test_", 0) == 0) continue;
+    INFO(kind << " '" << name << "'");
+    std::vector<std::string> missing;
+    undocumented(registry.entry(name).defaults, param_docs(kind, name), "", missing);
+    CHECK(missing == std::vector<std::string>{});
+  }
+}
+
+}  // namespace
+
+TEST_CASE("every registered part's declared keys have their doc lines for the reference", "[config][params][docs]") {
+  check_docs<MethodRegistry>("method");  // the gabor method's stage kinds' blocks among its own
+  check_docs<RasterizerRegistry>("rasterizer");
+  check_docs<FeatureNetRegistry>("feature_net");
+  check_docs<LossRegistry>("loss");
+  check_docs<OptimizerRegistry>("optimizer");
+  check_docs<InitializerRegistry>("initializer");
+  check_docs<StoppingRuleRegistry>("convergence");
+  check_docs<PointTermRegistry>("point_term");
+  check_docs<MapTermRegistry>("map_term");
+  check_docs<GeneratorRegistry>("generator");
+}
+
