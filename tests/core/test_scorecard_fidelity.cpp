@@ -1,7 +1,9 @@
 // The scorecard's calibrated fidelity (core/metrics/fidelity.hpp, subwindow_spread.hpp): an
 // independent realization of the exemplar's process lies within the band; uniform points
 // against a strongly regular exemplar lie far outside it (a band widened to pass everything
-// fails here); the spread follows the output's area; a class the output lacks is out of band;
+// fails here); the band widens with the exemplar's clustering, so a Matérn process's own
+// realizations fall out of it at the nominal rate while uniform points against it still do not
+// pass; the spread follows the output's area; a class the output lacks is out of band;
 // a tiled copy, as faithful as can be, is still scored a copy; eval's text, JSON and gather's
 // values carry the lines.
 #include <catch2/catch.hpp>
