@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "core/config/config.hpp"
+#include "core/config/params.hpp"
 #include "core/error.hpp"
 #include "core/metrics/nearest_neighbor.hpp"
 
@@ -56,11 +57,20 @@ std::string OutputShape::describe() const {
 
 bool is_square(const Domain& d) { return std::abs(d.width() - d.height()) <= 1e-9 * std::max(d.width(), d.height()); }
 
-nlohmann::json output_defaults() {
-  // null size and points: the paper's u x u output ("upscale").
-  // "pad": null (= "auto") so that the config check takes a length as well as "auto".
-  return {{"size", nullptr}, {"points", nullptr}, {"border", "clean"}, {"pad", nullptr}};
+const ParamTable<OutputOptions>& OutputOptions::params() {
+  using O = OutputOptions;
+  // null size and points: the paper's u x u output ("upscale"). "pad": null (= "auto") so that
+  // the config check takes a length as well as "auto".
+  static const ParamTable<O> t("output", {
+      param("size", &O::size, "", "[a, b]: a rectangle a exemplar widths by b exemplar heights (null: upscale's)"),
+      param("points", &O::points, "", "N: a square holding about N points at the exemplar's density"),
+      param("border", &O::border, "", "a rectangle's border: clean (padded, cropped), context (the pad holds the exemplar, frozen) or published"),
+      param("pad", &O::pad, "", "the pad of a clean or context border, in exemplar units (null or \"auto\": 2 mean nearest-neighbour distances)"),
+  });
+  return t;
 }
+
+nlohmann::json output_defaults() { return OutputOptions::params().defaults(); }
 
 namespace {
 std::atomic<size_t> g_resolutions{0};

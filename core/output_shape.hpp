@@ -69,7 +69,20 @@ struct OutputShape {
 // Sides equal to 1e-9 of the longer.
 bool is_square(const Domain& d);
 
-// The run config's defaults for "output" (declared once, here).
+template <class T>
+class ParamTable;
+
+// The run config's "output" block: its keys declared once (output_shape.cpp's table), read by
+// resolve_output_shape.
+struct OutputOptions {
+  nlohmann::json size;    // null, or [a, b] in exemplar sides
+  nlohmann::json points;  // null, or N
+  std::string border = "clean";
+  nlohmann::json pad;     // null or "auto", or a length in exemplar units
+  static const ParamTable<OutputOptions>& params();
+};
+
+// The run config's defaults for "output": OutputOptions{} written out.
 nlohmann::json output_defaults();
 // From a resolved run config (its "upscale" and "output"); errors name the key.
 // `exemplar` resolves "points" and the automatic pad.

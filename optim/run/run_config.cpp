@@ -21,8 +21,9 @@ namespace ppsynth {
 
 namespace {
 
-// The top-level keys of a run config. Blocks that are their own parts' (output, runtime, the
-// method's spec) and the seed (a whole number up to 2^63 - 1: is_seed) stay JSON here.
+// The top-level keys of a run config; "output" and "runtime" are blocks with tables of their
+// own. The method's spec (its part's keys) and the seed (a whole number up to 2^63 - 1:
+// is_seed) stay JSON here.
 struct RunOptions {
   std::string name;
   std::string description;
@@ -34,12 +35,12 @@ struct RunOptions {
   json preset;
   json seed = 95;
   int upscale = 2;
-  json output = output_defaults();
+  OutputOptions output;
   json method = json{{"type", "gabor"}};
   bool snapshots = true;
   bool evaluate = true;
   double checkpoint_seconds = 60;
-  json runtime = runtime_defaults();
+  RuntimeOptions runtime;
   static const ParamTable<RunOptions>& params() {
     using O = RunOptions;
     static const ParamTable<O> t("", {
@@ -53,12 +54,12 @@ struct RunOptions {
         param("preset", &O::preset, "", "a named preset laid under the config's own keys (\"fast\")"),
         param("seed", &O::seed, "", "the seed of every random draw of the run"),
         param("upscale", &O::upscale, "int [1, 64]", "u: u^2 times the exemplar's points (unless output gives a size)"),
-        param("output", &O::output, "", "a rectangle or a point count in exemplar units"),
+        block("output", &O::output),
         param("method", &O::method, "", "the method's spec: its type and its keys"),
         param("snapshots", &O::snapshots, "", "plot the output after every stage"),
         param("evaluate", &O::evaluate, "", "run the metrics on the output"),
         param("checkpoint_seconds", &O::checkpoint_seconds, "(0, inf)", "wall time between checkpoints (and one at every stage's end)"),
-        param("runtime", &O::runtime, "", "device, TF32 and determinism"),
+        block("runtime", &O::runtime),
     });
     return t;
   }

@@ -15,6 +15,7 @@
 #include <torch/cuda.h>
 #include <torch/torch.h>
 
+#include "core/config/params.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "models/gabor_feature_maps.hpp"
@@ -78,7 +79,17 @@ DeviceRequest parse_device(const nlohmann::json& v) {
 
 }  // namespace
 
-nlohmann::json runtime_defaults() { return {{"device", "cpu"}, {"tf32", nullptr}, {"deterministic", true}}; }
+const ParamTable<RuntimeOptions>& RuntimeOptions::params() {
+  using O = RuntimeOptions;
+  static const ParamTable<O> t("runtime", {
+      param("device", &O::device, "", "cpu, cuda, cuda:N, or auto (the first CUDA device this process sees, else the CPU)"),
+      param("tf32", &O::tf32, "", "CUDA only: TF32 tensor cores for float32 (null or \"auto\": the device decides)"),
+      param("deterministic", &O::deterministic, "", "CUDA only: deterministic algorithms, no autotuning (the same bits every run)"),
+  });
+  return t;
+}
+
+nlohmann::json runtime_defaults() { return RuntimeOptions::params().defaults(); }
 
 void check_runtime(const nlohmann::json& runtime) {
   parse_device(runtime.at("device"));

@@ -78,7 +78,18 @@ DeviceDecision decide_device_settings(const DeviceCapabilities& device, const nl
 // CUDA device this process cannot see has its capability unknown.
 DeviceCapabilities capabilities_of_device(const nlohmann::json& device);
 
-// {"device": "cpu", "tf32": null, "deterministic": true}: the run config's "runtime".
+template <class T>
+class ParamTable;
+
+// The run config's "runtime" block (above): its keys declared once (runtime.cpp's table).
+struct RuntimeOptions {
+  nlohmann::json device = "cpu";
+  nlohmann::json tf32;  // null: the device decides
+  bool deterministic = true;
+  static const ParamTable<RuntimeOptions>& params();
+};
+
+// {"device": "cpu", "tf32": null, "deterministic": true}: RuntimeOptions{} written out.
 nlohmann::json runtime_defaults();
 // Checks a resolved "runtime" object's values (config_error naming the key), without
 // asking which devices this process has: a config can be resolved on a machine that will not

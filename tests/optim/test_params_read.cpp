@@ -22,6 +22,7 @@
 #include "optim/steps/initializer.hpp"
 #include "optim/steps/position_optimizer.hpp"
 #include "optim/steps/stopping_rule.hpp"
+#include "optim/run/run_config.hpp"
 #include "optim/terms/point_term.hpp"
 #include "tests/support/gabor_runs.hpp"
 #include "tests/support/small_exemplar.hpp"
@@ -134,5 +135,9 @@ TEST_CASE("every registered part's declared keys have their doc lines for the re
   check_docs<PointTermRegistry>("point_term");
   check_docs<MapTermRegistry>("map_term");
   check_docs<GeneratorRegistry>("generator");
+  // The run config's own keys, its output and runtime blocks included.
+  std::vector<std::string> missing;
+  undocumented(run_defaults(), param_docs("run", "run"), "", missing);
+  CHECK(missing == std::vector<std::string>{});
 }
 
