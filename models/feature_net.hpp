@@ -28,11 +28,8 @@ using FeatureNetRegistry = Registry<FeatureNet, int /*in_channels*/, uint64_t /*
 // A network spec whose filter count depends on the exemplar's class count,
 //   "channels": {"one_class": 64, "several_classes": 120},
 // with that count resolved to a number for an exemplar of `num_classes` classes; any other
-// spec returns as it is. A multi-class exemplar's classes share one network whose filters
-// must also hold the structure between the classes: with fewer float32 filters the two-class
-// poisson_n64c2_point lost distance to its exemplar that 120 keep, while one class loses
-// nothing (docs/lab/performance/README.md, "The fast preset's quality on an AVX2 machine";
-// docs/lab/real_scale/ has what the count costs). Errors name `key_path`.channels.
+// spec returns as it is: a config may size the network by the exemplar's class count, as a
+// multi-class exemplar's classes share one network. Errors name `key_path`.channels.
 nlohmann::json with_channels_for_classes(const nlohmann::json& spec, int num_classes, const std::string& key_path);
 
 // Freezes every parameter of `m` (requires_grad = false).

@@ -397,8 +397,10 @@ def main():
         sys.exit(f"gallery: {BIN} not found: build first (scripts/setup.sh) or set PPSYNTH_BIN")
 
     scratch = None
+    # A finished run may have any output size (--size, rectangles); only the shipped configs are 2 x 2.
     runs = ("Each exemplar (left), the points the synthesis started from (middle), and the pattern ppsynth "
-            "synthesized from it (right, 2 x 2 the exemplar's area). ")
+            "synthesized from it (right; " + ("each run at its own output size" if args.runs else "2 x 2 the exemplar's area")
+            + "). ")
     pairs = ("A point file's card: the exemplar, the output (and each class on its own), per row L(r) - r of both with "
              "the fidelity band around the exemplar's, and <code>ppsynth eval</code>'s scorecard and verdict. ")
     if args.runs or args.pair:

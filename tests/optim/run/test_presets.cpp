@@ -51,9 +51,9 @@ TEST_CASE("the fast preset by processor class: auto precision, and its float32 v
   CHECK(with_units["convergence"] == without["convergence"]);
   CHECK(with_units["grid"] == without["grid"]);
   CHECK_FALSE(with_units["feature_net"].contains("channels"));  // the paper's 120 filters where bf16 is native
-  // Without them, fewer float32 filters for one class; a multi-class exemplar keeps 120.
+  // Without them, fewer float32 filters, for one class and for several.
   CHECK(with_channels_for_classes(without["feature_net"], 1, "f")["channels"].get<int>() < 120);
-  CHECK(with_channels_for_classes(without["feature_net"], 2, "f")["channels"] == 120);
+  CHECK(with_channels_for_classes(without["feature_net"], 2, "f")["channels"].get<int>() < 120);
   // This process takes the variant of its own processor, and run.json says which and why.
   CHECK(preset_fragment("fast") == preset_fragment("fast", cpu_isa().native_bf16));
   const json record = preset_record(resolve_run_config(json{{"preset", "fast"}}, {}));
@@ -63,7 +63,7 @@ TEST_CASE("the fast preset by processor class: auto precision, and its float32 v
   CHECK(preset_record(resolve_run_config(json::object(), {})).is_null());
 }
 
-TEST_CASE("the fast preset's float32 variant: 64 filters for a one-class exemplar, 120 for a multi-class one", "[optim][config][preset]") {
+TEST_CASE("the fast preset's float32 variant: 64 filters for a one-class and a multi-class exemplar", "[optim][config][preset]") {
   // The variant as the run resolves it (whatever this processor is), down to the settings the
   // pipeline makes its network from.
   json method = merge(json{{"type", "gabor"}}, preset_fragment("fast", false)["method"]);
@@ -72,7 +72,7 @@ TEST_CASE("the fast preset's float32 variant: 64 filters for a one-class exempla
   OutputShape shape;
   shape.upscale = 2;
   CHECK(resolve_gabor_settings(p, test::small_exemplar(1, false), shape, false).feature_net["channels"] == 64);
-  CHECK(resolve_gabor_settings(p, test::small_exemplar(2, false), shape, false).feature_net["channels"] == 120);
+  CHECK(resolve_gabor_settings(p, test::small_exemplar(2, false), shape, false).feature_net["channels"] == 64);
   // A config's own number holds for both.
   json own = method;
   own["feature_net"]["channels"] = 24;
