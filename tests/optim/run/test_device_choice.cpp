@@ -97,7 +97,7 @@ TEST_CASE("The fast preset's variant follows the run's device, not the host CPU,
   // A CUDA device this process cannot see: its capability is unknown, so the float32 variant
   // (whatever the host CPU's bf16 units), and the record says why.
   const nlohmann::json r = resolve_run_config(nlohmann::json{{"preset", "fast"}}, {"runtime.device=cuda"});
-  CHECK(r["method"]["feature_net"]["channels"]["one_class"] == 64);  // the float32 variant's
+  CHECK(r["method"]["feature_net"]["channels"] == 64);  // the float32 variant's
   const nlohmann::json record = preset_record(r);
   CHECK(record["variant"] == "without bf16 units");
   CHECK_THAT(record["reason"].get<std::string>(), Contains("CUDA device"));
