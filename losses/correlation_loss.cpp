@@ -36,12 +36,12 @@ struct CorrelationOptions {
   CorrelationGradient gradient = CorrelationGradient::Exact;
   static const ParamTable<CorrelationOptions>& params() {
     using O = CorrelationOptions;
-    static const ParamTable<O> t("loss", {
-        param("layers", &O::layers, "int [0, 15]", "the feature layers it compares (indices into the net's)"),
-        param("weight", &O::weight, "[0, inf)", "its weight in the sum of the losses"),
-        choice("gradient", &O::gradient, {{"exact", CorrelationGradient::Exact}, {"published", CorrelationGradient::Published}},
-               "the correlation's gradient: exact, or the published code's"),
-    });
+    static const ParamTable<O> t("loss", [] {
+      std::vector<Param<O>> keys = layer_loss_params<O>();
+      keys.push_back(choice("gradient", &O::gradient, {{"exact", CorrelationGradient::Exact}, {"published", CorrelationGradient::Published}},
+                            "the correlation's gradient: exact, or the published code's"));
+      return keys;
+    }());
     return t;
   }
 };

@@ -66,10 +66,7 @@ struct GramOptions {
   double weight = 0.08;
   static const ParamTable<GramOptions>& params() {
     using O = GramOptions;
-    static const ParamTable<O> t("loss", {
-        param("layers", &O::layers, "int [0, 15]", "the feature layers it compares (indices into the net's)"),
-        param("weight", &O::weight, "[0, inf)", "its weight in the sum of the losses"),
-    });
+    static const ParamTable<O> t("loss", layer_loss_params<O>());
     return t;
   }
 };

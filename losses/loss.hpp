@@ -40,4 +40,12 @@ std::vector<int> given_layers(std::vector<int> layers, const std::string& key_pa
 // The layer of `f` for index l, or an error naming the loss when the net is shallower.
 const torch::Tensor& layer_of(const Features& f, int l, const std::string& loss_name);
 
+// The two keys every compiled loss declares, worded once for the reference: the feature
+// layers it compares and its weight in the sum. O has members `layers` and `weight`.
+template <class O>
+std::vector<Param<O>> layer_loss_params() {
+  return {param("layers", &O::layers, "int [0, 15]", "the feature layers it compares (indices into the net's)"),
+          param("weight", &O::weight, "[0, inf)", "its weight in the sum of the losses")};
+}
+
 }  // namespace ppsynth

@@ -71,10 +71,7 @@ struct SlicedWassersteinOptions {
   double weight = 1.0;
   static const ParamTable<SlicedWassersteinOptions>& params() {
     using O = SlicedWassersteinOptions;
-    static const ParamTable<O> t("loss", {
-        param("layers", &O::layers, "int [0, 15]", "the feature layers it compares (indices into the net's)"),
-        param("weight", &O::weight, "[0, inf)", "its weight in the sum of the losses"),
-    });
+    static const ParamTable<O> t("loss", layer_loss_params<O>());
     return t;
   }
 };
