@@ -32,9 +32,8 @@ namespace {
 
 class Pcf2017Method : public SynthesisMethod {
  public:
-  // p: the registered defaults merged with the user's (Pcf2017Options' table's).
-  Pcf2017Method(const nlohmann::json& p, const std::string& key) {
-    const Pcf2017Options o = Pcf2017Options::read(p, key);
+  // o: the method's block read through its table; the checks between two keys made (check).
+  explicit Pcf2017Method(const Pcf2017Options& o) {
     pcf_ = o.pcf;
     descent_ = o.descent;
     quick_iterations_ = o.quick_iterations;
@@ -242,9 +241,9 @@ class Pcf2017Method : public SynthesisMethod {
 
 }  // namespace ppsynth::pcf2017
 
-PPSYNTH_REGISTER(ppsynth::MethodRegistry, "pcf2017", ppsynth::pcf2017::Pcf2017Options::params().defaults(),
-                 ppsynth::pcf2017::Pcf2017Options::params().bounds(),
-                 "Roveri et al. 2017 (thesis Ch. 4): gradient descent on the PCF energy (Eq. 4.3), stationary, torus",
-                 [](const nlohmann::json& p, const std::string& key) -> std::unique_ptr<ppsynth::SynthesisMethod> {
-                   return std::make_unique<ppsynth::pcf2017::Pcf2017Method>(p, key);
-                 })
+PPSYNTH_REGISTER_PARAMS(ppsynth::MethodRegistry, "method", "pcf2017", ppsynth::pcf2017::Pcf2017Options::params(),
+                        "Roveri et al. 2017 (thesis Ch. 4): gradient descent on the PCF energy (Eq. 4.3), stationary, torus",
+                        [](const ppsynth::pcf2017::Pcf2017Options& o, const std::string& key) -> std::unique_ptr<ppsynth::SynthesisMethod> {
+                          o.check(key);
+                          return std::make_unique<ppsynth::pcf2017::Pcf2017Method>(o);
+                        })

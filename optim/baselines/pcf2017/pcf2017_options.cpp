@@ -1,6 +1,5 @@
 #include "optim/baselines/pcf2017/pcf2017_options.hpp"
 
-#include "core/config/param_docs.hpp"
 #include "core/error.hpp"
 
 namespace ppsynth::pcf2017 {
@@ -24,13 +23,9 @@ const ParamTable<Pcf2017Options>& Pcf2017Options::params() {
   return t;
 }
 
-PPSYNTH_PARAM_DOCS("method", "pcf2017", [] { return Pcf2017Options::params().docs(); })
-
-Pcf2017Options Pcf2017Options::read(const nlohmann::json& p, const std::string& key) {
-  const Pcf2017Options o = params().read(p, key);
-  if (!(o.pcf.r_b > o.pcf.r_a)) throw config_error(key + ".r_a", "need r_a < r_b");
-  if (!(o.descent.max_step >= o.descent.step)) throw config_error(key + ".max_step", "must be >= step");
-  return o;
+void Pcf2017Options::check(const std::string& key) const {
+  if (!(pcf.r_b > pcf.r_a)) throw config_error(key + ".r_a", "need r_a < r_b");
+  if (!(descent.max_step >= descent.step)) throw config_error(key + ".max_step", "must be >= step");
 }
 
 }  // namespace ppsynth::pcf2017

@@ -14,9 +14,9 @@ struct Pcf2017Options {
   int quick_iterations = 30;  // --quick caps the descent's iterations at this
 
   static const ParamTable<Pcf2017Options>& params();
-  // From the method's params (defaults merged); errors name `key`.<key>, and the checks
-  // between two keys (r_a < r_b, step <= max_step) are made here.
-  static Pcf2017Options read(const nlohmann::json& p, const std::string& key);
+  // The checks between two keys, which no one key's range can make (r_a < r_b, step <=
+  // max_step); errors name `key`.<key>.
+  void check(const std::string& key) const;
 };
 
 }  // namespace ppsynth::pcf2017

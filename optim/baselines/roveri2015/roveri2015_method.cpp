@@ -35,9 +35,8 @@ namespace {
 
 class Roveri2015Method : public SynthesisMethod {
  public:
-  // p: the registered defaults merged with the user's (Roveri2015Options' table's).
-  Roveri2015Method(const nlohmann::json& p, const std::string& key) {
-    const Roveri2015Options o = Roveri2015Options::params().read(p, key);
+  // o: the method's block read through its table.
+  explicit Roveri2015Method(const Roveri2015Options& o) {
     p_ = o.roveri;
     quick_scales_ = o.quick_scales;
   }
@@ -175,10 +174,9 @@ class Roveri2015Method : public SynthesisMethod {
 
 }  // namespace ppsynth::roveri2015
 
-PPSYNTH_REGISTER(ppsynth::MethodRegistry, "roveri2015", ppsynth::roveri2015::Roveri2015Options::params().defaults(),
-                 ppsynth::roveri2015::Roveri2015Options::params().bounds(),
-                 "Roveri et al. 2015 (thesis Ch. 3): functional neighborhood matching, multi-scale local-global "
-                 "solver with sampling control, random-patch-copy init",
-                 [](const nlohmann::json& p, const std::string& key) -> std::unique_ptr<ppsynth::SynthesisMethod> {
-                   return std::make_unique<ppsynth::roveri2015::Roveri2015Method>(p, key);
-                 })
+PPSYNTH_REGISTER_PARAMS(ppsynth::MethodRegistry, "method", "roveri2015", ppsynth::roveri2015::Roveri2015Options::params(),
+                        "Roveri et al. 2015 (thesis Ch. 3): functional neighborhood matching, multi-scale local-global "
+                        "solver with sampling control, random-patch-copy init",
+                        [](const ppsynth::roveri2015::Roveri2015Options& o, const std::string&) -> std::unique_ptr<ppsynth::SynthesisMethod> {
+                          return std::make_unique<ppsynth::roveri2015::Roveri2015Method>(o);
+                        })

@@ -1,7 +1,5 @@
 #include "optim/baselines/roveri2015/roveri2015_options.hpp"
 
-#include "core/config/param_docs.hpp"
-
 namespace ppsynth::roveri2015 {
 
 const ParamTable<Roveri2015Options>& Roveri2015Options::params() {
@@ -38,7 +36,5 @@ const ParamTable<Roveri2015Options>& Roveri2015Options::params() {
   });
   return t;
 }
-
-PPSYNTH_PARAM_DOCS("method", "roveri2015", [] { return Roveri2015Options::params().docs(); })
 
 }  // namespace ppsynth::roveri2015

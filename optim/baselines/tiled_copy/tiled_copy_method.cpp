@@ -15,7 +15,6 @@
 #include <random>
 
 #include "core/config/config.hpp"
-#include "core/config/param_docs.hpp"
 #include "core/config/params.hpp"
 #include "core/error.hpp"
 #include "optim/method/method.hpp"
@@ -38,8 +37,9 @@ struct TiledCopyOptions {
 
 class TiledCopyMethod : public SynthesisMethod {
  public:
-  TiledCopyMethod(const nlohmann::json& p, const std::string& key) {
-    const nlohmann::json o = TiledCopyOptions::params().read(p, key).offset;
+  // The offset's type is checked here: a bound checks only the numbers it holds.
+  TiledCopyMethod(const TiledCopyOptions& options, const std::string& key) {
+    const nlohmann::json& o = options.offset;
     if (o.is_null()) return;
     if (!o.is_array() || o.size() != 2 || !o[0].is_number() || !o[1].is_number())
       throw config_error(key + ".offset",
@@ -100,10 +100,8 @@ class TiledCopyMethod : public SynthesisMethod {
 
 }  // namespace ppsynth
 
-PPSYNTH_REGISTER(ppsynth::MethodRegistry, "tiled_copy", ppsynth::TiledCopyOptions::params().defaults(),
-                 ppsynth::TiledCopyOptions::params().bounds(),
-                 "the exemplar tiled u x u (or over an output rectangle), shifted (offset null = seeded random, or [x, y]): the copy baseline",
-                 [](const nlohmann::json& p, const std::string& key) -> std::unique_ptr<ppsynth::SynthesisMethod> {
-                   return std::make_unique<ppsynth::TiledCopyMethod>(p, key);
-                 })
-PPSYNTH_PARAM_DOCS("method", "tiled_copy", [] { return ppsynth::TiledCopyOptions::params().docs(); })
+PPSYNTH_REGISTER_PARAMS(ppsynth::MethodRegistry, "method", "tiled_copy", ppsynth::TiledCopyOptions::params(),
+                        "the exemplar tiled u x u (or over an output rectangle), shifted (offset null = seeded random, or [x, y]): the copy baseline",
+                        [](const ppsynth::TiledCopyOptions& o, const std::string& key) -> std::unique_ptr<ppsynth::SynthesisMethod> {
+                          return std::make_unique<ppsynth::TiledCopyMethod>(o, key);
+                        })

@@ -53,5 +53,5 @@ TEST_CASE("a baseline's bad parameter is named by its key path", "[optim][baseli
   // A key of the merged params that the table does not declare is refused, naming it.
   json extra = pcf2017::Pcf2017Options::params().defaults();
   extra["colour"] = 1;
-  CHECK_THROWS_WITH(pcf2017::Pcf2017Options::read(extra, "method"), Contains("method.colour"));
+  CHECK_THROWS_WITH(pcf2017::Pcf2017Options::params().read(extra, "method"), Contains("method.colour"));
 }
