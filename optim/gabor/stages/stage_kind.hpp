@@ -12,9 +12,10 @@
 // The paper's stage is SigmaStage (optim/gabor/stages/sigma_stage.hpp). Kinds that follow each
 // class's sigma stages (BorderRelaxStage, optim/gabor/stages/border_relax/border_relax_stage.hpp)
 // register under a name with PPSYNTH_REGISTER_STAGE_KIND, declaring their options block
-// method.<name> (its defaults and ranges; the method's defaults list it): a factory gets that
-// block, merged and checked, with the resolved settings, and returns the kind, or null when
-// the block does not ask for it. A kind's record fields are its own: the checkpoint keeps them
+// method.<name> by its table (core/config/params.hpp: each key's default, range and doc line,
+// once; the method's defaults, bounds and reference list it): a factory gets that block read
+// through the table, typed, with the resolved settings, and returns the kind, or null when the
+// block does not ask for it. A kind's record fields are its own: the checkpoint keeps them
 // as they are, and record_problem() checks them when a run resumes. A new kind is one file:
 // its class and its registration (tests/optim/gabor/test_stage_kinds.cpp adds one,
 // test_stage_kind_options.cpp one with options and a record it resumes from).
@@ -82,7 +83,8 @@ class StageKind {
 
 // Class-end kinds by name. The factory gets the kind's block method.<name> (GaborSettings::
 // stage_kinds), its key path and the settings; it returns null when the block does not ask for
-// the kind, and throws config_error naming the key for a block it cannot run.
+// the kind, and throws config_error naming the key for a block it cannot run. A kind registers
+// with PPSYNTH_REGISTER_STAGE_KIND (below), whose factory gets the block read through its table.
 using StageKindRegistry = Registry<StageKind, const GaborSettings&>;
 
 // The class-end kinds the settings ask for, in name order.
@@ -94,9 +96,16 @@ bool register_stage_kind(const std::string& name, StageKindRegistry::Entry entry
 
 }  // namespace ppsynth
 
-// PPSYNTH_REGISTER_STAGE_KIND("name", defaults_json, bounds_json, "description", factory_lambda)
-#define PPSYNTH_REGISTER_STAGE_KIND(NAME, DEFAULTS, BOUNDS, DESC, ...)                              \
-  namespace {                                                                                         \
-  [[maybe_unused]] const bool PPSYNTH_CONCAT(ppsynth_stage_kind_, __LINE__) = ppsynth::register_stage_kind( \
-      NAME, ppsynth::StageKindRegistry::Entry{__VA_ARGS__, DEFAULTS, BOUNDS, DESC});                   \
-  }
+// PPSYNTH_REGISTER_STAGE_KIND("name", Options::params(), "description",
+//     [](const Options& o, const std::string& key_path, const GaborSettings& s) -> std::unique_ptr<StageKind> { ... }):
+// a kind declared by its table, as PPSYNTH_REGISTER_PARAMS declares a part (core/registry.hpp).
+// Its block method.<name>'s defaults and bounds come from the table, so do the reference's doc
+// lines (under the "gabor" method's, whose block it is), and the factory gets the block read
+// through it (read_through). A kind without options declares an empty table.
+#define PPSYNTH_REGISTER_STAGE_KIND(NAME, TABLE, DESC, ...)                                                    \
+  namespace {                                                                                                   \
+  [[maybe_unused]] const bool PPSYNTH_CONCAT(ppsynth_stage_kind_, __LINE__) = ::ppsynth::register_stage_kind(   \
+      NAME, ::ppsynth::StageKindRegistry::Entry{::ppsynth::read_through(TABLE, __VA_ARGS__), (TABLE).defaults(), \
+                                                (TABLE).bounds(), DESC});                                       \
+  }                                                                                                             \
+  PPSYNTH_PARAM_DOCS("method", "gabor", [] { return nlohmann::json{{NAME, (TABLE).docs()}}; })

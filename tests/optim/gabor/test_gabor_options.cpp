@@ -34,6 +34,11 @@ void check_round_trip(const char* name) {
   CHECK(T::params().docs().size() == d.size());  // a doc line (or a block's lines) per key
 }
 
+// The border relax's block as its registration reads it (through its table), resolved.
+BorderRelaxSettings relax(const json& block, const BorderRelaxContext& where) {
+  return BorderRelaxSettings::resolve(BorderRelaxOptions::params().read(block), where);
+}
+
 }  // namespace
 
 TEST_CASE("every Gabor options block: defaults from its struct, read and written back the same", "[optim][options]") {
@@ -185,22 +190,22 @@ TEST_CASE("method.border_relax: auto, --quick's cap, the band in output units, e
   square.mean_nn_distance = 0.1;
   square.upscale = 2;
   json block = BorderRelaxOptions::params().defaults();
-  BorderRelaxSettings s = BorderRelaxSettings::resolve(block, square);
+  BorderRelaxSettings s = relax(block, square);
   CHECK(s.iterations == 60);  // auto, where the grid has an edge
   CHECK(s.band == Approx(0.05));
   CHECK(s.lr == 0);
   CHECK(s.after_all);
   BorderRelaxContext quick = square;
   quick.quick = true;
-  CHECK(BorderRelaxSettings::resolve(block, quick).iterations == 4);
+  CHECK(relax(block, quick).iterations == 4);
   BorderRelaxContext rect = square;
   rect.rectangle = true;
-  CHECK(BorderRelaxSettings::resolve(block, rect).iterations == 0);
+  CHECK(relax(block, rect).iterations == 0);
   block["iterations"] = 10;
-  CHECK_THROWS_WITH(BorderRelaxSettings::resolve(block, rect), Contains("method.border_relax"));
+  CHECK_THROWS_WITH(relax(block, rect), Contains("method.border_relax"));
   block["after"] = "class";
   block["lr"] = 0.5;
-  s = BorderRelaxSettings::resolve(block, square);
+  s = relax(block, square);
   CHECK(s.iterations == 10);
   CHECK(s.lr == 0.5);
   CHECK_FALSE(s.after_all);
@@ -209,6 +214,6 @@ TEST_CASE("method.border_relax: auto, --quick's cap, the band in output units, e
     json q = BorderRelaxOptions::params().defaults();
     q[key] = bad;
     INFO(key << " = " << bad.dump());
-    CHECK_THROWS_WITH(BorderRelaxSettings::resolve(q, square), Contains(std::string("method.border_relax.") + key));
+    CHECK_THROWS_WITH(relax(q, square), Contains(std::string("method.border_relax.") + key));
   }
 }

@@ -1,6 +1,6 @@
 // A stage kind that owns options and a record, added by this one file: its block
-// (method.test_trail) with its defaults and ranges is declared where it registers, the
-// settings carry the block without knowing it, and its record holds a string that the
+// (method.test_trail) is declared once, in its table, where it registers (its defaults,
+// ranges, doc lines and typed read come from it), the settings carry the block without knowing it, and its record holds a string that the
 // checkpoint stores and gives back without reading it. Each trail stage appends its word to
 // the trail of the stage before it, so a resumed run that lost the record would write another
 // trail. The run is interrupted after a checkpoint and resumed: the same points and records.
@@ -12,6 +12,7 @@
 
 #include "core/checkpoint_file.hpp"
 #include "core/config/config.hpp"
+#include "core/config/param_docs.hpp"
 #include "core/error.hpp"
 #include "optim/gabor/resolution/gabor_resolution.hpp"
 #include "optim/gabor/stages/stage_kind.hpp"
@@ -51,14 +52,22 @@ class TrailStage : public StageKind {
   std::string word_;
 };
 
-// Off by default (iterations 0): the kind is registered for the whole test binary.
-PPSYNTH_REGISTER_STAGE_KIND("test_trail", (json{{"iterations", 0}, {"word", "w"}}), (json{{"iterations", "int [0, 100]"}}),
-                            "a test's stage kind with options and a string in its record",
-                            [](const json& block, const std::string& key, const GaborSettings&) -> std::unique_ptr<StageKind> {
-                              const int iterations = get_int(block, "iterations", key);
-                              if (!block["word"].is_string()) throw config_error(key + ".word", "expected a string");
-                              if (iterations == 0) return nullptr;
-                              return std::make_unique<TrailStage>(iterations, block["word"].get<std::string>());
+struct TrailOptions {
+  int iterations = 0;  // off by default: the kind is registered for the whole test binary
+  std::string word = "w";
+  static const ParamTable<TrailOptions>& params() {
+    static const ParamTable<TrailOptions> t("method.test_trail", {
+        param("iterations", &TrailOptions::iterations, "int [0, 100]", "trail iterations per class (0: off)"),
+        param("word", &TrailOptions::word, "", "appended to the trail at each trail stage"),
+    });
+    return t;
+  }
+};
+
+PPSYNTH_REGISTER_STAGE_KIND("test_trail", TrailOptions::params(), "a test's stage kind with options and a string in its record",
+                            [](const TrailOptions& o, const std::string&, const GaborSettings&) -> std::unique_ptr<StageKind> {
+                              if (o.iterations == 0) return nullptr;
+                              return std::make_unique<TrailStage>(o.iterations, o.word);
                             })
 
 json trail_method(const json& trail) {
@@ -88,6 +97,13 @@ TEST_CASE("a stage kind with options runs its block and records a string", "[opt
   CHECK(run.report.stages[5].details["trail"] == "ab0ab1");
   // Off (its default): the paper's plan.
   CHECK(test::checkpointed_run(trail_method(json::object()), ex, 7).report.stages.size() == 4);
+}
+
+TEST_CASE("a stage kind's table gives the method its block's defaults, ranges and doc lines", "[optim][stage_kinds][stage_kind_options][params]") {
+  const auto& gabor = MethodRegistry::instance().entry("gabor");
+  CHECK(gabor.defaults["test_trail"] == TrailOptions::params().defaults());
+  CHECK(gabor.bounds["test_trail"] == TrailOptions::params().bounds());
+  CHECK(param_docs("method", "gabor")["test_trail"] == TrailOptions::params().docs());
 }
 
 TEST_CASE("a stage kind's options are checked where it declares them, naming the key", "[optim][stage_kinds][stage_kind_options]") {

@@ -40,8 +40,16 @@ class LeftHalfStage : public StageKind {
   }
 };
 
-PPSYNTH_REGISTER_STAGE_KIND("test_left_half", json::object(), json::object(), "a test's stage kind",
-                            [](const json&, const std::string&, const GaborSettings&) -> std::unique_ptr<StageKind> {
+// No options: an empty table.
+struct LeftHalfOptions {
+  static const ParamTable<LeftHalfOptions>& params() {
+    static const ParamTable<LeftHalfOptions> t("method.test_left_half", {});
+    return t;
+  }
+};
+
+PPSYNTH_REGISTER_STAGE_KIND("test_left_half", LeftHalfOptions::params(), "a test's stage kind",
+                            [](const LeftHalfOptions&, const std::string&, const GaborSettings&) -> std::unique_ptr<StageKind> {
                               if (!left_half_enabled) return nullptr;
                               return std::make_unique<LeftHalfStage>();
                             })

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "core/config/param_docs.hpp"
 #include "core/error.hpp"
 
 namespace ppsynth {
@@ -55,10 +54,7 @@ const ParamTable<BorderRelaxOptions>& BorderRelaxOptions::params() {
   return t;
 }
 
-PPSYNTH_PARAM_DOCS("method", "gabor", [] { return nlohmann::json{{"border_relax", BorderRelaxOptions::params().docs()}}; })
-
-BorderRelaxSettings BorderRelaxSettings::resolve(const nlohmann::json& block, const BorderRelaxContext& where) {
-  const BorderRelaxOptions b = BorderRelaxOptions::params().read(block);
+BorderRelaxSettings BorderRelaxSettings::resolve(const BorderRelaxOptions& b, const BorderRelaxContext& where) {
   const bool has_grid_edge = !where.rectangle && where.measured_whole;
   BorderRelaxSettings o;
   o.iterations = b.iterations ? *b.iterations : has_grid_edge ? k_auto_iterations : 0;

@@ -2,8 +2,8 @@
 // method.border_relax, typed: the block as the user writes it (BorderRelaxOptions, each key
 // declared once in its table, border_relax_options.cpp), and what the relax stage runs with
 // (BorderRelaxSettings: "auto" decided, the band in output units, --quick's cap). The relax
-// stage (border_relax_stage.hpp) registers with the table's defaults and bounds as its block
-// method.border_relax, and resolves it.
+// stage (border_relax_stage.hpp) registers with the table as its block method.border_relax,
+// and resolves the block read through it.
 #include <optional>
 
 #include "core/config/params.hpp"
@@ -41,8 +41,8 @@ struct BorderRelaxSettings {
   double separation = 0;
   bool after_all = false;
 
-  // From the method's border_relax block (defaults merged); errors name method.border_relax.<key>.
-  static BorderRelaxSettings resolve(const nlohmann::json& block, const BorderRelaxContext& where);
+  // From the method's border_relax block, read; errors name method.border_relax.
+  static BorderRelaxSettings resolve(const BorderRelaxOptions& block, const BorderRelaxContext& where);
 };
 
 }  // namespace ppsynth

@@ -73,9 +73,9 @@ std::string BorderRelaxStage::record_problem(const nlohmann::json& d) const {
   return "";
 }
 
-PPSYNTH_REGISTER_STAGE_KIND("border_relax", BorderRelaxOptions::params().defaults(), BorderRelaxOptions::params().bounds(),
+PPSYNTH_REGISTER_STAGE_KIND("border_relax", BorderRelaxOptions::params(),
                             "method.border_relax: after each class's sigma stages, its points near the torus's grid edge move",
-                            [](const json& block, const std::string&, const GaborSettings& s) -> std::unique_ptr<StageKind> {
+                            [](const BorderRelaxOptions& block, const std::string&, const GaborSettings& s) -> std::unique_ptr<StageKind> {
                               // What the rest of the settings say about where a relax can run.
                               BorderRelaxContext where;
                               where.rectangle = s.rectangle;
