@@ -72,13 +72,7 @@ TEST_CASE("every registered part reads each key its defaults declare, and no oth
   const OutputShape square;
   const GaborSettings settings = resolve_gabor_settings(test::method_params(json{{"type", "gabor"}}), ex, square, false);
 
-  check_reads<MethodRegistry>("method", [&](const std::string& name, const json& params) {
-    if (name != "gabor") return by_factory<MethodRegistry>("method")(name, params);
-    // The gabor method keeps its params and reads them when it resolves its settings.
-    json spec = params;
-    spec["type"] = "gabor";
-    resolve_gabor_settings(spec, ex, square, false);
-  });
+  check_reads<MethodRegistry>("method", by_factory<MethodRegistry>("method"));
   check_reads<StageKindRegistry>("method.stage", by_factory<StageKindRegistry>("method.stage", std::cref(settings)));
   RasterizerArgs raster;
   raster.k = 4;  // the method's, which a Gabor raster needs

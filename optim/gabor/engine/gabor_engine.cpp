@@ -122,18 +122,18 @@ std::vector<size_t> concat(const std::vector<size_t>& a, const std::vector<size_
 
 }  // namespace
 
-GaborEngine::GaborEngine(const json& params, const PointSet& exemplar, const SynthesisContext& ctx)
-    : p_(params), exemplar_(exemplar), shape_(ctx.output), ctx_(ctx), device_(ctx.device),
+GaborEngine::GaborEngine(const GaborParams& params, const PointSet& exemplar, const SynthesisContext& ctx)
+    : o_(params.options), exemplar_(exemplar), shape_(ctx.output), ctx_(ctx), device_(ctx.device),
       jitter_rng_(ctx.seed ^ 0x9e3779b97f4a7c15ull) {
   validate(exemplar, "exemplar");
-  s_ = resolve_gabor_settings(p_, exemplar, shape_, ctx.quick);
-  pipe_ = std::make_unique<GaborPipeline>(p_, s_, ctx.seed, device_);
-  map_terms_ = create_map_terms(p_["map_terms"]);
-  for (auto& t : map_terms_) t.term->begin_run(MapTermRun{p_, s_, exemplar, ctx.seed, device_});
-  terms_ = create_point_terms(p_["terms"]);
-  rule_ = StoppingRuleRegistry::instance().create(p_["convergence"], "method.convergence");
-  OptimizerRegistry::instance().entry(p_["optimizer"].value("type", ""), "method.optimizer.type");
-  auto init = InitializerRegistry::instance().create(p_["init"], "method.init");
+  s_ = resolve_gabor_settings(params, exemplar, shape_, ctx.quick);
+  pipe_ = std::make_unique<GaborPipeline>(o_, s_, ctx.seed, device_);
+  map_terms_ = create_map_terms(o_.map_terms);
+  for (auto& t : map_terms_) t.term->begin_run(MapTermRun{o_, s_, exemplar, ctx.seed, device_});
+  terms_ = create_point_terms(o_.terms);
+  rule_ = StoppingRuleRegistry::instance().create(o_.convergence, "method.convergence");
+  OptimizerRegistry::instance().entry(o_.optimizer.value("type", ""), "method.optimizer.type");
+  auto init = InitializerRegistry::instance().create(o_.init, "method.init");
   init->set_poll([&ctx] { ctx.poll(); });
   std::vector<std::vector<size_t>> out_index;
   out_ = initial_output(exemplar, ctx, *init, out_index);
@@ -287,7 +287,7 @@ json GaborEngine::runtime_record() const {
             {"deterministic", cuda ? ctx_.deterministic : true}};
   // what the device decided and why (optim/run/runtime.hpp's decide_device_settings)
   if (cuda) r["choices"] = json::parse(synthesis_device().choices);
-  const std::string rasterizer = p_["rasterizer"].value("type", "");
+  const std::string rasterizer = o_.rasterizer.value("type", "");
   if (rasterizer == "gabor" || rasterizer == "spatial")
     r["gabor_maps"] = gabor_maps_path_name(gabor_maps_path(GaborMapsPath::automatic, device_));
   return r;
@@ -394,7 +394,7 @@ void GaborEngine::enter_stage(const Stage& stage) {
   phases_.targets += since(t0);
   start_ = stage.kind->start(StageStartView{stage, s_, out_, moving_idx_, state_.stages});
   if (start_.moving_mask.defined()) start_.moving_mask = start_.moving_mask.to(device_);
-  optimizer_ = OptimizerRegistry::instance().create(stage.kind->optimizer(p_["optimizer"], s_), "method.optimizer",
+  optimizer_ = OptimizerRegistry::instance().create(stage.kind->optimizer(o_.optimizer, s_), "method.optimizer",
                                                     state_.moving, stage.sigma_index);
   if (!state_.optimizer.empty()) optimizer_->load_state(state_.optimizer, ctx_.resume_source);  // resumed inside the stage
   stage_start_ = Clock::now();

@@ -30,6 +30,7 @@
 #include <random>
 
 #include "optim/gabor/pipeline/gabor_pipeline.hpp"
+#include "optim/gabor/resolution/gabor_resolution.hpp"
 #include "optim/gabor/stages/map_term.hpp"
 #include "optim/method/method.hpp"
 #include "optim/terms/point_term.hpp"
@@ -43,7 +44,7 @@ namespace ppsynth {
 
 class GaborEngine {
  public:
-  GaborEngine(const json& params, const PointSet& exemplar, const SynthesisContext& ctx);
+  GaborEngine(const GaborParams& params, const PointSet& exemplar, const SynthesisContext& ctx);
   // Runs the plan from the state (fresh, or restored from ctx.resume_state) to the end.
   PointSet run();
   const json& stats() const { return stats_; }
@@ -75,7 +76,7 @@ class GaborEngine {
   ProgressEvent event(const Stage& stage) const;
   int iteration_cap(const Stage& stage) const;  // its kind's
 
-  json p_;
+  GaborOptions o_;  // the method's own keys, as read (its parts' specs among them)
   const PointSet& exemplar_;
   OutputShape shape_;
   WindowLayout layout_;  // rectangles only

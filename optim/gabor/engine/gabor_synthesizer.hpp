@@ -6,18 +6,21 @@
 // which keeps its state explicit and so can checkpoint and resume. Output: u^2 copies of each
 // class's exemplar count, attributes tiled (radius divided by u), every point with its class.
 // Defaults: gabor_defaults() in optim/gabor/resolution/gabor_resolution.cpp (`ppsynth config --defaults`).
+#include "optim/gabor/resolution/gabor_resolution.hpp"
 #include "optim/method/method.hpp"
 
 namespace ppsynth {
 
 class GaborSynthesizer : public SynthesisMethod {
  public:
-  explicit GaborSynthesizer(json params) : p_(std::move(params)) {}
+  // The params read once, when the method is created (read_gabor_params); each synthesis
+  // resolves them for its exemplar and output.
+  explicit GaborSynthesizer(GaborParams params) : p_(std::move(params)) {}
   PointSet synthesize(const PointSet& exemplar, const SynthesisContext& ctx) override;
   bool can_resume() const override { return true; }
 
  private:
-  json p_;
+  GaborParams p_;
 };
 
 }  // namespace ppsynth

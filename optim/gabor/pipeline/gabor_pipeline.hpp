@@ -23,7 +23,8 @@ class GaborPipeline {
  public:
   // Every module and tensor of the pipeline lives on `device` (runtime.device): the points
   // and weights given to it must be there too; set_targets moves the exemplar's itself.
-  GaborPipeline(const json& params, const GaborSettings& s, uint64_t seed, torch::Device device = torch::kCPU);
+  // `o`: the method's keys as read; the pipeline takes its rasterizer and losses specs.
+  GaborPipeline(const GaborOptions& o, const GaborSettings& s, uint64_t seed, torch::Device device = torch::kCPU);
 
   // Exemplar features -> loss targets; once per sigma (and per class stage). The exemplar's
   // points and weights may be on the CPU: they are moved to the pipeline's device.
@@ -53,7 +54,7 @@ class GaborPipeline {
   json resolved() const;  // rasterizer, feature net and losses with every default filled in
 
  private:
-  json p_;
+  json rasterizer_;  // method.rasterizer's spec: the rasterizers are rebuilt from it
   GaborSettings s_;
   uint64_t seed_;
   torch::Device device_;

@@ -147,22 +147,33 @@ std::vector<int> class_order(const std::vector<int>& order, int K) {
 
 }  // namespace
 
+GaborParams read_gabor_params(const json& p, const std::string& key_path) {
+  // Every key of the params is read here, by the method's table or as a stage kind's block: a
+  // key declared but read by no one, or read but declared by no one, is a logic_error.
+  ParamReader reader(p, key_path);
+  if (p.contains("type")) reader.at("type");  // a spec as its registry resolved it: the method's name
+  GaborParams g;
+  g.options = GaborOptions::params().read(reader);
+  // Each class-end kind's block as the method's registry merged and checked it; the kind
+  // reads it, and refuses what it cannot run, naming method.<name>.<key>, as the settings resolve.
+  for (const std::string& name : StageKindRegistry::instance().names()) g.stage_kinds[name] = reader.at(name);
+  if (const std::vector<std::string> unread = reader.unread(); !unread.empty())
+    throw std::logic_error("'" + unread.front() + "' is declared in the method's defaults but read by no one");
+  return g;
+}
+
 GaborSettings resolve_gabor_settings(const json& p, const PointSet& exemplar, const OutputShape& shape, bool quick) {
+  return resolve_gabor_settings(read_gabor_params(p), exemplar, shape, quick);
+}
+
+GaborSettings resolve_gabor_settings(const GaborParams& params, const PointSet& exemplar, const OutputShape& shape, bool quick) {
   GaborSettings s;
   if (shape.upscale < 1) throw config_error("upscale", "must be >= 1");
   s.upscale = shape.rectangle ? 1 : shape.upscale;
   const int K = exemplar.num_classes();
   s.mean_nn_distance = mean_nn_distance(exemplar);
-  // Every key of the params is read here, by the method's table or as a stage kind's block: a
-  // key declared but read by no one, or read but declared by no one, is a logic_error.
-  ParamReader reader(p, "method");
-  if (p.contains("type")) reader.at("type");  // a spec as its registry resolved it: the method's name
-  const GaborOptions o = GaborOptions::params().read(reader);
-  // Each class-end kind's block as the method's registry merged and checked it; the kind
-  // resolves it, and refuses what it cannot run, naming method.<name>.<key>, below.
-  for (const std::string& name : StageKindRegistry::instance().names()) s.stage_kinds[name] = reader.at(name);
-  if (const std::vector<std::string> unread = reader.unread(); !unread.empty())
-    throw std::logic_error("'" + unread.front() + "' is declared in the method's defaults but read by no one");
+  const GaborOptions& o = params.options;
+  for (const auto& [name, block] : params.stage_kinds) s.stage_kinds[name] = block;
   const GridOptions& grid = o.grid;
   s.res = grid.resolved_res(s.mean_nn_distance);
   if (shape.rectangle) {

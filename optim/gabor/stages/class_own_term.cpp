@@ -11,7 +11,7 @@ void ClassOwnMapTerm::begin_run(const MapTermRun& run) {
   settings_ = run.settings;
   seed_ = run.seed;
   fresh_net_ = run.settings.fresh_net_per_class;
-  if (run.exemplar.num_classes() > 1) pipe_ = std::make_unique<GaborPipeline>(run.params, run.settings, run.seed, run.device);
+  if (run.exemplar.num_classes() > 1) pipe_ = std::make_unique<GaborPipeline>(run.options, run.settings, run.seed, run.device);
 }
 
 void ClassOwnMapTerm::begin_group(const MapTermGroup& g) {

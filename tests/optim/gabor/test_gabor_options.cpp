@@ -15,6 +15,7 @@
 #include "optim/gabor/settings/gabor_options.hpp"
 #include "optim/gabor/stages/border_relax/border_relax_options.hpp"
 #include "optim/gabor/stages/stage_kind.hpp"
+#include "optim/method/method.hpp"
 #include "tests/support/gabor_runs.hpp"
 #include "tests/support/small_exemplar.hpp"
 
@@ -103,6 +104,20 @@ TEST_CASE("the gabor method reads every key its defaults declare, and reads no o
   unread = p;
   unread["grid"]["colour"] = 1;  // inside a block too
   CHECK_THROWS_WITH(resolve_gabor_settings(unread, ex, square, false), Contains("method.grid.colour"));
+}
+
+TEST_CASE("the gabor method reads its params once, when it is created, naming a bad key", "[optim][options][params]") {
+  // A value of the wrong kind that no range catches is refused by the registry's create, as
+  // every other part's is, not first by the synthesis.
+  const auto& methods = MethodRegistry::instance();
+  CHECK_THROWS_WITH(methods.create(json{{"type", "gabor"}, {"measure", "edges"}}, "method"), Contains("method.measure"));
+  CHECK_THROWS_WITH(methods.create(json{{"type", "gabor"}, {"grid", {{"per_sigma", "yes"}}}}, "method"),
+                    Contains("method.grid.per_sigma"));
+  // The read params: the table's keys typed, each kind's block as merged (the kind reads it
+  // through its own table as the settings resolve: its factory needs them).
+  const GaborParams g = read_gabor_params(test::method_params(json{{"type", "gabor"}, {"measure", "rolled"}}));
+  CHECK(g.options.measure == GaborOptions::Measure::rolled);
+  CHECK(g.stage_kinds.at("border_relax") == BorderRelaxOptions::params().defaults());
 }
 
 TEST_CASE("method.grid: res 0 from the exemplar's spacing, coarser grids at coarser sigmas", "[optim][options]") {

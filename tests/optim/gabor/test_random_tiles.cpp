@@ -112,7 +112,7 @@ TEST_CASE("a tile holding the exemplar itself has the exemplar's loss: zero, whe
   shape.upscale = 2;
   const GaborSettings s = resolve_gabor_settings(p, ex, shape, false);
   REQUIRE(s.measure_tiles());
-  GaborPipeline pipe(p, s, 9);
+  GaborPipeline pipe(read_gabor_params(p).options, s, 9);
   pipe.set_targets(positions_tensor(ex), {}, s.sigmas.back());
   // The output: the exemplar tiled 2 x 2 on the unit square (each copy zoomed out by 2).
   auto ex_xy = positions_tensor(ex, torch::kFloat64);
