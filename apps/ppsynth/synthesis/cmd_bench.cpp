@@ -135,9 +135,8 @@ Subject make_subject(const Opts& o) {
   b.t0 = Clock::now();
   OutputShape shape;  // the paper's u x u output: the bench times its iteration
   shape.upscale = b.u;
-  const GaborParams params = read_gabor_params(p);
-  b.s = resolve_gabor_settings(params, b.ex, shape, false);
-  b.pipe = std::make_unique<GaborPipeline>(params.options, b.s, seed, b.device);
+  b.s = resolve_gabor_settings(p, b.ex, shape, false);
+  b.pipe = std::make_unique<GaborPipeline>(b.s, seed, b.device);
   auto init = InitializerRegistry::instance().create(p["init"], "method.init");
   b.start = init->initialize(b.ex.size() * b.u * b.u, 0, seed, Domain{});
   b.ex_pts = positions_tensor(b.ex).to(b.device);

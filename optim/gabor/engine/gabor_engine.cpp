@@ -123,17 +123,18 @@ std::vector<size_t> concat(const std::vector<size_t>& a, const std::vector<size_
 }  // namespace
 
 GaborEngine::GaborEngine(const GaborParams& params, const PointSet& exemplar, const SynthesisContext& ctx)
-    : o_(params.options), exemplar_(exemplar), shape_(ctx.output), ctx_(ctx), device_(ctx.device),
+    : exemplar_(exemplar), shape_(ctx.output), ctx_(ctx), device_(ctx.device),
       jitter_rng_(ctx.seed ^ 0x9e3779b97f4a7c15ull) {
   validate(exemplar, "exemplar");
   s_ = resolve_gabor_settings(params, exemplar, shape_, ctx.quick);
-  pipe_ = std::make_unique<GaborPipeline>(o_, s_, ctx.seed, device_);
-  map_terms_ = create_map_terms(o_.map_terms);
-  for (auto& t : map_terms_) t.term->begin_run(MapTermRun{o_, s_, exemplar, ctx.seed, device_});
-  terms_ = create_point_terms(o_.terms);
-  rule_ = StoppingRuleRegistry::instance().create(o_.convergence, "method.convergence");
-  OptimizerRegistry::instance().entry(o_.optimizer.value("type", ""), "method.optimizer.type");
-  auto init = InitializerRegistry::instance().create(o_.init, "method.init");
+  const GaborOptions& o = s_.options;
+  pipe_ = std::make_unique<GaborPipeline>(s_, ctx.seed, device_);
+  map_terms_ = create_map_terms(o.map_terms);
+  for (auto& t : map_terms_) t.term->begin_run(MapTermRun{s_, exemplar, ctx.seed, device_});
+  terms_ = create_point_terms(o.terms);
+  rule_ = StoppingRuleRegistry::instance().create(o.convergence, "method.convergence");
+  OptimizerRegistry::instance().entry(o.optimizer.value("type", ""), "method.optimizer.type");
+  auto init = InitializerRegistry::instance().create(o.init, "method.init");
   init->set_poll([&ctx] { ctx.poll(); });
   std::vector<std::vector<size_t>> out_index;
   out_ = initial_output(exemplar, ctx, *init, out_index);
@@ -287,7 +288,7 @@ json GaborEngine::runtime_record() const {
             {"deterministic", cuda ? ctx_.deterministic : true}};
   // what the device decided and why (optim/run/runtime.hpp's decide_device_settings)
   if (cuda) r["choices"] = json::parse(synthesis_device().choices);
-  const std::string rasterizer = o_.rasterizer.value("type", "");
+  const std::string rasterizer = s_.options.rasterizer.value("type", "");
   if (rasterizer == "gabor" || rasterizer == "spatial")
     r["gabor_maps"] = gabor_maps_path_name(gabor_maps_path(GaborMapsPath::automatic, device_));
   return r;
@@ -334,7 +335,7 @@ void GaborEngine::enter_group(const Stage& stage) {
   group_ = stage.group;
   geometry_ = stage.geometry;
   const int K = exemplar_.num_classes(), class_step = group_ % K;  // window plans: K groups per window
-  if (s_.fresh_net_per_class && group_ > 0)
+  if (s_.options.fresh_net_per_class && group_ > 0)
     pipe_->redraw_network(class_network_seed(ctx_.seed, class_step));
   // A group continues one optimization: its points and positions come from the checkpoint
   // when resumed inside it, else from the plan (or the window's choice) and the output.
@@ -394,7 +395,7 @@ void GaborEngine::enter_stage(const Stage& stage) {
   phases_.targets += since(t0);
   start_ = stage.kind->start(StageStartView{stage, s_, out_, moving_idx_, state_.stages});
   if (start_.moving_mask.defined()) start_.moving_mask = start_.moving_mask.to(device_);
-  optimizer_ = OptimizerRegistry::instance().create(stage.kind->optimizer(o_.optimizer, s_), "method.optimizer",
+  optimizer_ = OptimizerRegistry::instance().create(stage.kind->optimizer(s_.options.optimizer, s_), "method.optimizer",
                                                     state_.moving, stage.sigma_index);
   if (!state_.optimizer.empty()) optimizer_->load_state(state_.optimizer, ctx_.resume_source);  // resumed inside the stage
   stage_start_ = Clock::now();
@@ -454,7 +455,7 @@ torch::Tensor GaborEngine::evaluate(const Stage& stage) {
       l = l.defined() ? l + v : v;
     }
   } else {
-    if (s_.measure == GaborOptions::Measure::rolled || stage.kind->rolls_grid())
+    if (s_.options.measure == GaborOptions::Measure::rolled || stage.kind->rolls_grid())
       pts = roll_torus(pts, tile_offset(ctx_.seed, state_.stage, state_.iteration, 1));
     jitter = pipe_->draw_jitter(jitter_rng_);
     l = measure(pts, out_weights_, jitter, stage, false);

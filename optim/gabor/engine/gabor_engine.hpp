@@ -76,7 +76,6 @@ class GaborEngine {
   ProgressEvent event(const Stage& stage) const;
   int iteration_cap(const Stage& stage) const;  // its kind's
 
-  GaborOptions o_;  // the method's own keys, as read (its parts' specs among them)
   const PointSet& exemplar_;
   OutputShape shape_;
   WindowLayout layout_;  // rectangles only

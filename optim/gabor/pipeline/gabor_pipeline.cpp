@@ -12,8 +12,8 @@ torch::Tensor wrap_unit(const torch::Tensor& x) {
   return torch::where(y < 0, y + torch::ceil(torch::abs(y)), y);
 }
 
-GaborPipeline::GaborPipeline(const GaborOptions& o, const GaborSettings& s, uint64_t seed, torch::Device device)
-    : rasterizer_(o.rasterizer), s_(s), seed_(seed), device_(device), loss_(o.losses, "method.losses"), res_(s.sigma_res.at(0)),
+GaborPipeline::GaborPipeline(const GaborSettings& s, uint64_t seed, torch::Device device)
+    : s_(s), seed_(seed), device_(device), loss_(s.options.losses, "method.losses"), res_(s.sigma_res.at(0)),
       out_res_(s.sigma_out_res.at(0)), out_rows_(s.sigma_out_rows.at(0)) {
   build_rasterizers();
   in_channels_ = ex_rast_->channels(static_cast<int>(s.attr_cols.size()));
@@ -26,12 +26,12 @@ void GaborPipeline::build_rasterizers() {
   const int ex_cols = static_cast<int>(std::lround(E.width() * res_)), ex_rows = grid_rows(ex_cols, E.height() / E.width());
   RasterizerArgs ex_args{ex_cols, E.width(), s_.k, false, 0, ex_rows},
       out_args{out_res_, s_.out_scale, s_.k, true, 0, out_rows_};
-  ex_rast_ = RasterizerRegistry::instance().create(rasterizer_, "method.rasterizer", ex_args, &resolved_rast_);
-  out_rast_ = RasterizerRegistry::instance().create(rasterizer_, "method.rasterizer", out_args);
+  ex_rast_ = RasterizerRegistry::instance().create(s_.options.rasterizer, "method.rasterizer", ex_args, &resolved_rast_);
+  out_rast_ = RasterizerRegistry::instance().create(s_.options.rasterizer, "method.rasterizer", out_args);
   if (s_.measure_tiles()) {
     RasterizerArgs tile_args = ex_args;
     tile_args.divisor = tile_divisor_;
-    tile_rast_ = RasterizerRegistry::instance().create(rasterizer_, "method.rasterizer", tile_args);
+    tile_rast_ = RasterizerRegistry::instance().create(s_.options.rasterizer, "method.rasterizer", tile_args);
   }
   for (auto* r : {&ex_rast_, &out_rast_, &tile_rast_})
     if (*r) (*r)->to(device_);
@@ -77,7 +77,7 @@ void GaborPipeline::set_targets(const torch::Tensor& ex_points, const torch::Ten
 }
 
 torch::Tensor GaborPipeline::draw_jitter(std::mt19937_64& rng, bool tile) const {
-  if (!s_.jitter || !out_rast_->uses_jitter()) return {};
+  if (!s_.options.jitter || !out_rast_->uses_jitter()) return {};
   const int64_t R = tile ? res_ : out_res_, rows = tile ? res_ : out_rows_;
   const float amp = 1.0f / static_cast<float>(R + 1);  // the columns' spacing, the rows' too
   std::uniform_real_distribution<float> unif(-1.0f, 1.0f);

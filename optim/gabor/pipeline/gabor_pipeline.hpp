@@ -23,8 +23,8 @@ class GaborPipeline {
  public:
   // Every module and tensor of the pipeline lives on `device` (runtime.device): the points
   // and weights given to it must be there too; set_targets moves the exemplar's itself.
-  // `o`: the method's keys as read; the pipeline takes its rasterizer and losses specs.
-  GaborPipeline(const GaborOptions& o, const GaborSettings& s, uint64_t seed, torch::Device device = torch::kCPU);
+  // The rasterizer's and the losses' specs are the settings' options'.
+  GaborPipeline(const GaborSettings& s, uint64_t seed, torch::Device device = torch::kCPU);
 
   // Exemplar features -> loss targets; once per sigma (and per class stage). The exemplar's
   // points and weights may be on the CPU: they are moved to the pipeline's device.
@@ -54,7 +54,6 @@ class GaborPipeline {
   json resolved() const;  // rasterizer, feature net and losses with every default filled in
 
  private:
-  json rasterizer_;  // method.rasterizer's spec: the rasterizers are rebuilt from it
   GaborSettings s_;
   uint64_t seed_;
   torch::Device device_;

@@ -172,7 +172,8 @@ GaborSettings resolve_gabor_settings(const GaborParams& params, const PointSet& 
   s.upscale = shape.rectangle ? 1 : shape.upscale;
   const int K = exemplar.num_classes();
   s.mean_nn_distance = mean_nn_distance(exemplar);
-  const GaborOptions& o = params.options;
+  s.options = params.options;
+  const GaborOptions& o = s.options;
   for (const auto& [name, block] : params.stage_kinds) s.stage_kinds[name] = block;
   const GridOptions& grid = o.grid;
   s.res = grid.resolved_res(s.mean_nn_distance);
@@ -196,23 +197,19 @@ GaborSettings resolve_gabor_settings(const GaborParams& params, const PointSet& 
   }
   s.sigmas = sigma_schedule(s.mean_nn_distance, o.c1, o.c2, num_sigmas);
   s.k = static_cast<int>(std::min<size_t>(exemplar.size(), static_cast<size_t>(o.k)));
-  s.k_per_stage = o.k_per_stage;
   s.attr_cols = map_attribute_columns(exemplar, o.map_attributes);
-  s.jitter = o.jitter;
   s.sigma_res = grid.per_stage(s.sigmas, s.res);
-  s.measure = o.measure;
-  const std::string named = std::string("\"") + measure_name(s.measure) + "\"";
-  if (s.measure != GaborOptions::Measure::grid && shape.rectangle)
+  const std::string named = std::string("\"") + measure_name(o.measure) + "\"";
+  if (o.measure != GaborOptions::Measure::grid && shape.rectangle)
     throw config_error("method.measure", named + " measures the paper's u x u square; a rectangle output "
                                          "(output.size or output.points) takes output.border instead");
   const bool map_terms = map_terms_act(o.map_terms, exemplar.num_classes());
-  if (s.measure != GaborOptions::Measure::grid && map_terms)
+  if (o.measure != GaborOptions::Measure::grid && map_terms)
     throw config_error("method.measure", named + " does not combine with method.map_terms (their maps are the unrolled grid's); "
                                          "on several classes set method.map_terms.class_own.weight=0, which is on by default");
   s.rectangle = shape.rectangle;
   s.quick = quick;
   class_end_kinds(s);  // each kind refuses here a block it cannot run
-  s.fresh_net_per_class = o.fresh_net_per_class;
   if (shape.rectangle) {  // windows: only the terms that know them (optim/terms/point_term.hpp, map_term.hpp)
     check_point_terms_in_windows(o.terms);
     check_map_terms_in_windows(o.map_terms);

@@ -10,8 +10,8 @@ void ClassOwnMapTerm::begin_run(const MapTermRun& run) {
   exemplar_ = &run.exemplar;
   settings_ = run.settings;
   seed_ = run.seed;
-  fresh_net_ = run.settings.fresh_net_per_class;
-  if (run.exemplar.num_classes() > 1) pipe_ = std::make_unique<GaborPipeline>(run.options, run.settings, run.seed, run.device);
+  fresh_net_ = run.settings.options.fresh_net_per_class;
+  if (run.exemplar.num_classes() > 1) pipe_ = std::make_unique<GaborPipeline>(run.settings, run.seed, run.device);
 }
 
 void ClassOwnMapTerm::begin_group(const MapTermGroup& g) {
@@ -20,7 +20,7 @@ void ClassOwnMapTerm::begin_group(const MapTermGroup& g) {
   if (fresh_net_)  // as the joint pipeline's (window plans: K groups per window)
     pipe_->redraw_network(class_network_seed(seed_, stage.group % exemplar_->num_classes()));
   const size_t own = exemplar_->subset_class(stage.own_class).size();
-  pipe_->set_neighbors(settings_.k_per_stage ? static_cast<int>(std::min<size_t>(settings_.k, own)) : settings_.k);
+  pipe_->set_neighbors(settings_.options.k_per_stage ? static_cast<int>(std::min<size_t>(settings_.k, own)) : settings_.k);
   std::vector<int64_t> own_rows;  // rows of the frozen points of the moving class (a window's context)
   std::vector<size_t> weighted;   // their output indices, then the moving ones: evaluate()'s order
   for (size_t r = 0; r < g.frozen.size(); ++r)

@@ -29,7 +29,6 @@ namespace ppsynth {
 // What a term may build its maps from: the method's parameters and resolved settings (grid,
 // k, attributes), the exemplar, the run's seed.
 struct MapTermRun {
-  const GaborOptions& options;  // the method's keys, as read
   const GaborSettings& settings;
   const PointSet& exemplar;
   uint64_t seed;

@@ -16,7 +16,7 @@ SynthesisPlan class_sigma_plan(const PointSet& exemplar, const GaborSettings& s,
   const auto torus = std::make_shared<TorusGeometry>();
   const auto class_end = class_end_kinds(s);
   // The neighbor count of a stage whose targets hold `points` exemplar points.
-  auto k_for = [&](size_t points) { return s.k_per_stage ? static_cast<int>(std::min<size_t>(s.k, points)) : s.k; };
+  auto k_for = [&](size_t points) { return s.options.k_per_stage ? static_cast<int>(std::min<size_t>(s.k, points)) : s.k; };
   for (int st = 0; st < K; ++st) {
     const int cls = s.class_order[st];
     const std::vector<int> active(s.class_order.begin(), s.class_order.begin() + st + 1);

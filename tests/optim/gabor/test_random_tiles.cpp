@@ -112,7 +112,7 @@ TEST_CASE("a tile holding the exemplar itself has the exemplar's loss: zero, whe
   shape.upscale = 2;
   const GaborSettings s = resolve_gabor_settings(p, ex, shape, false);
   REQUIRE(s.measure_tiles());
-  GaborPipeline pipe(read_gabor_params(p).options, s, 9);
+  GaborPipeline pipe(s, 9);
   pipe.set_targets(positions_tensor(ex), {}, s.sigmas.back());
   // The output: the exemplar tiled 2 x 2 on the unit square (each copy zoomed out by 2).
   auto ex_xy = positions_tensor(ex, torch::kFloat64);
@@ -184,8 +184,8 @@ TEST_CASE("method.measure is refused where it means nothing, naming the key", "[
     const json own = method_params(json{{"type", "gabor"}, {"measure", measure}, {"map_terms", {{"class_own", {{"weight", 1}}}}}});
     CHECK_THROWS_WITH(resolve_gabor_settings(own, test::small_exemplar(2, false), square, false), Catch::Contains("method.map_terms"));
     // On one class the per-class term acts on nothing, and nothing refuses it.
-    CHECK(resolve_gabor_settings(own, ex, square, false).measure != GaborOptions::Measure::grid);
+    CHECK(resolve_gabor_settings(own, ex, square, false).options.measure != GaborOptions::Measure::grid);
   }
-  CHECK(resolve_gabor_settings(method_params(json{{"type", "gabor"}, {"measure", "rolled"}}), ex, square, false).measure ==
+  CHECK(resolve_gabor_settings(method_params(json{{"type", "gabor"}, {"measure", "rolled"}}), ex, square, false).options.measure ==
         GaborOptions::Measure::rolled);
 }

@@ -667,7 +667,7 @@ TEST_CASE("a rectangular exemplar's targets come from its whole domain, not its 
   const json params = gabor_params(json{{"type", "gabor"}, {"quick", {{"res", 24}, {"channels", 4}, {"num_sigmas", 2}}}});
   const GaborSettings s = resolve_gabor_settings(params, a, shape_of(json{{"size", {2, 2}}}, a), true);
   REQUIRE(3 * s.sigmas.back() < 0.3);  // the moved points lie beyond the maps' reach of x <= 1
-  GaborPipeline pipe(read_gabor_params(params).options, s, 3);
+  GaborPipeline pipe(s, 3);
   pipe.set_grid(static_cast<int>(s.sigmas.size()) - 1);
   auto gen = at::detail::createCPUGenerator(5);
   const auto out = at::rand({120, 2}, gen, torch::kFloat32) * torch::tensor({{1.0f, 0.65f}});  // a fixed output, local coordinates

@@ -121,7 +121,7 @@ TEST_CASE("On CUDA, one evaluation's loss and gradient equal the CPU's within fl
   std::vector<double> loss;
   std::vector<torch::Tensor> grad;
   for (const torch::Device device : {torch::Device(torch::kCPU), torch::Device("cuda:0")}) {
-    GaborPipeline pipe(read_gabor_params(p).options, s, 9, device);
+    GaborPipeline pipe(s, 9, device);
     pipe.set_targets(positions_tensor(ex), {}, s.sigmas.back());
     auto x = start.detach().to(device).requires_grad_(true);  // a leaf of its own on each device
     auto l = pipe.loss(pipe.features(pipe.output_maps(wrap_unit(x), {}, s.sigmas.back(), {})));

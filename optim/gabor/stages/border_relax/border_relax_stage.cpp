@@ -79,7 +79,7 @@ PPSYNTH_REGISTER_STAGE_KIND("border_relax", BorderRelaxOptions::params(),
                               // What the rest of the settings say about where a relax can run.
                               BorderRelaxContext where;
                               where.rectangle = s.rectangle;
-                              where.measured_whole = s.measure == GaborOptions::Measure::grid;
+                              where.measured_whole = s.options.measure == GaborOptions::Measure::grid;
                               where.quick = s.quick;
                               where.max_iterations = s.max_iterations;
                               where.mean_nn_distance = s.mean_nn_distance;
