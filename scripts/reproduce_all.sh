@@ -5,13 +5,15 @@
 # the pictures (`ppsynth reproduce --page`). Prints the wall time of each config and the total.
 #
 # Usage: scripts/reproduce_all.sh [OUT_DIR] [PPSYNTH_BINARY] [--quick] [--seeds 95-99] [-j N]
-#                                 [--only "fig04 table1"] [--set key=value ...]
+#                                 [--only "fig04 table1"] [--preset fast] [--set key=value ...]
 #   --seeds S   every synthesized column over the seeds S, as one sweep per config in
 #               OUT_DIR/sweeps/NAME; a run any earlier config's sweep holds already (the same
 #               resolved config and seed: lines' default run feeds a dozen items) is copied,
 #               not run again, and a rerun of this script resumes where it stopped.
 #   -j N        runs at once per sweep (default 1)
 #   --only L    only these configs (names, space-separated)
+#   --preset P  ours' runs at a preset (fast: bf16 where the CPU has it, the stopping rule that
+#               keeps a stage's best); the baselines run as their configs say
 # Full settings take hours on a CPU; --quick is a smoke run. A config that fails is reported
 # and the others still run; the page shows what exists; the exit status is 1 when any failed.
 # A report already in OUT_DIR/NAME is replaced (--force): this script made it.

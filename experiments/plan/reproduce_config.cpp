@@ -289,7 +289,8 @@ json column_run_config(const ReproduceConfig& c, const PanelSpec& p, const std::
   }
   run["name"] = c.name + "-" + p.name + "-" + column;  // a label, and a plain name like every run name
   for (const auto& o : overrides) {
-    if (column != "ours" && o.rfind("method.", 0) == 0) continue;  // method keys belong to ours
+    // Method keys, and a preset (it sets the gabor method's keys), belong to ours.
+    if (column != "ours" && (o.rfind("method.", 0) == 0 || o.rfind("preset=", 0) == 0)) continue;
     set_override(run, o);
   }
   return run;

@@ -89,7 +89,8 @@ void check_reproduce_runs(const ReproduceConfig& c, const std::vector<std::strin
 
 // The run config of one method column of a panel (unresolved): "ours" -> panel.run; a
 // registry name -> panel.run with "method" = {"type": name} + method_params[name].
-// `overrides` ("--set key=value") apply to every column; keys under "method." only to ours.
+// `overrides` ("--set key=value") apply to every column; keys under "method." and "preset"
+// only to ours.
 json column_run_config(const ReproduceConfig& c, const PanelSpec& p, const std::string& column,
                        const std::vector<std::string>& overrides);
 

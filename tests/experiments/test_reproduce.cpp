@@ -124,7 +124,7 @@ TEST_CASE("method columns: registry names, pending methods, parameters and --set
   CHECK_FALSE(method_available("not_yet_written"));
   CHECK(method_available("pcf2017"));
 
-  const std::vector<std::string> sets = {"seed=7", "method.max_iterations=3"};
+  const std::vector<std::string> sets = {"seed=7", "method.max_iterations=3", "preset=fast"};
   json ours = column_run_config(c, c.panels[0], "ours", sets);
   json pcf = column_run_config(c, c.panels[0], "pcf2017", sets);
   CHECK(ours["seed"] == 7);
@@ -132,6 +132,8 @@ TEST_CASE("method columns: registry names, pending methods, parameters and --set
   CHECK(ours["method"]["type"] == "gabor");
   CHECK(ours["method"]["max_iterations"] == 3);
   CHECK(pcf["method"] == json({{"type", "pcf2017"}, {"iterations", 7}}));  // method.* keys are ours only
+  CHECK(ours["preset"] == "fast");  // a preset sets the gabor method's keys: ours only (reproduce --preset)
+  CHECK_FALSE(pcf.contains("preset"));
   CHECK(ours["exemplar"] == pcf["exemplar"]);
 
   // A bad parameter of a baseline is caught before anything runs.

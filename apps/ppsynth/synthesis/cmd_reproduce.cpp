@@ -1,4 +1,4 @@
-// `ppsynth reproduce NAME [--quick] [--out DIR] [--set key=value ...] [--seeds 95-99 [-j N] [--plan-only]]`
+// `ppsynth reproduce NAME [--quick] [--out DIR] [--preset fast] [--set key=value ...] [--seeds 95-99 [-j N] [--plan-only]]`
 // `ppsynth reproduce --list` | `--check [NAME...]` | `--rules` | `--page DIR`
 // Re-runs a published experiment (a figure, table or ablation of Huang et al. 2022) from its
 // config in configs/paper/ and writes a self-contained report (reports/NAME/index.html, plus
@@ -20,7 +20,7 @@ namespace {
 
 struct Opts {
   std::vector<std::string> names, sets, reuse, panels;
-  std::string out, seeds, sweep, page;
+  std::string out, seeds, sweep, page, preset;
   bool quick = false, list = false, check = false, force = false, plan_only = false, rules = false;
   int jobs = 1;
 };
@@ -42,6 +42,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
                  "reuse finished run directories (DIR or its subdirectories, e.g. runs/) whose resolved config equals a column's");
   app.add_option("--panels", o->panels, "run only these panels (the report says which were left out)");
   app.add_option("--set", o->sets, "override a key of every panel's run config: key.path=value (method.* keys: ours only)");
+  app.add_option("--preset", o->preset, "a named preset for ours' runs: fast (`ppsynth config --kind preset`); the baselines run as they are");
   app.add_option("--seeds", o->seeds, "every synthesized column over these seeds (\"95-99\" or \"95,97\"), as a sweep; "
                                       "the report adds the statistics over seeds");
   app.add_option("--sweep", o->sweep, "the sweep's directory (default sweeps/NAME)")->check(ppsynth::app::path_text());
@@ -83,7 +84,11 @@ ppsynth::app::RunFn setup(CLI::App& app) {
       return 0;
     }
     if (o->names.size() != 1) throw InputError("give one config name (see --list)");
-    if (!o->seeds.empty()) ppsynth::app::refuse_set_conflicts(o->sets, {{"--seeds " + o->seeds, "seed"}});
+    std::vector<std::pair<std::string, std::string>> flags;  // each flag sets a key a --set of it would override
+    if (!o->seeds.empty()) flags.emplace_back("--seeds " + o->seeds, "seed");
+    if (!o->preset.empty()) flags.emplace_back("--preset " + o->preset, "preset");
+    ppsynth::app::refuse_set_conflicts(o->sets, flags);
+    if (!o->preset.empty()) o->sets.push_back("preset=" + o->preset);
     const std::string config_file = find_reproduce_config(o->names.front());
     if (o->force) ppsynth::app::check_inputs_outside({"-o", o->out}, {{"config", config_file}});  // --force empties it
     auto config = load_reproduce_config(config_file);
