@@ -19,53 +19,28 @@
 
 namespace ppsynth {
 
-namespace {
-
-// The top-level keys of a run config; "output" and "runtime" are blocks with tables of their
-// own. The method's spec (its part's keys) and the seed (a whole number up to 2^63 - 1:
-// is_seed) stay JSON here.
-struct RunOptions {
-  std::string name;
-  std::string description;
-  std::string exemplar;
-  std::string format = "auto";
-  std::string scaling = "per-axis";
-  bool merge_classes = false;
-  json init_file;
-  json preset;
-  json seed = 95;
-  int upscale = 2;
-  OutputOptions output;
-  json method = json{{"type", "gabor"}};
-  bool snapshots = true;
-  bool evaluate = true;
-  double checkpoint_seconds = 60;
-  RuntimeOptions runtime;
-  static const ParamTable<RunOptions>& params() {
-    using O = RunOptions;
-    static const ParamTable<O> t("", {
-        param("name", &O::name, "", "the run's name (empty: the exemplar's file stem)"),
-        param("description", &O::description, "", "a line about the run, kept in its config"),
-        param("exemplar", &O::exemplar, "", "the exemplar's point file (\"shared:data/...\" under ../shared)"),
-        param("format", &O::format, "", "the exemplar's format: auto, gabor, point-synthesis, plain or json"),
-        param("scaling", &O::scaling, "", "a Point-Synthesis file's scaling: per-axis (the published) or uniform"),
-        param("merge_classes", &O::merge_classes, "", "every point as one class (positions only)"),
-        param("init_file", &O::init_file, "", "the start: one file (with a class column), or a list with one file per class"),
-        param("preset", &O::preset, "", "a named preset laid under the config's own keys (\"fast\")"),
-        param("seed", &O::seed, "", "the seed of every random draw of the run"),
-        param("upscale", &O::upscale, "int [1, 64]", "u: u^2 times the exemplar's points (unless output gives a size)"),
-        block("output", &O::output),
-        param("method", &O::method, "", "the method's spec: its type and its keys"),
-        param("snapshots", &O::snapshots, "", "plot the output after every stage"),
-        param("evaluate", &O::evaluate, "", "run the metrics on the output"),
-        param("checkpoint_seconds", &O::checkpoint_seconds, "(0, inf)", "wall time between checkpoints (and one at every stage's end)"),
-        block("runtime", &O::runtime),
-    });
-    return t;
-  }
-};
-
-}  // namespace
+const ParamTable<RunOptions>& RunOptions::params() {
+  using O = RunOptions;
+  static const ParamTable<O> t("", {
+      param("name", &O::name, "", "the run's name (empty: the exemplar's file stem)"),
+      param("description", &O::description, "", "a line about the run, kept in its config"),
+      param("exemplar", &O::exemplar, "", "the exemplar's point file (\"shared:data/...\" under ../shared)"),
+      param("format", &O::format, "", "the exemplar's format: auto, gabor, point-synthesis, plain or json"),
+      param("scaling", &O::scaling, "", "a Point-Synthesis file's scaling: per-axis (the published) or uniform"),
+      param("merge_classes", &O::merge_classes, "", "every point as one class (positions only)"),
+      param("init_file", &O::init_file, "", "the start: one file (with a class column), or a list with one file per class"),
+      param("preset", &O::preset, "", "a named preset laid under the config's own keys (\"fast\")"),
+      param("seed", &O::seed, "", "the seed of every random draw of the run"),
+      param("upscale", &O::upscale, "int [1, 64]", "u: u^2 times the exemplar's points (unless output gives a size)"),
+      block("output", &O::output),
+      param("method", &O::method, "", "the method's spec: its type and its keys"),
+      param("snapshots", &O::snapshots, "", "plot the output after every stage"),
+      param("evaluate", &O::evaluate, "", "run the metrics on the output"),
+      param("checkpoint_seconds", &O::checkpoint_seconds, "(0, inf)", "wall time between checkpoints (and one at every stage's end)"),
+      block("runtime", &O::runtime),
+  });
+  return t;
+}
 
 json run_defaults() { return RunOptions::params().defaults(); }
 

@@ -10,11 +10,38 @@
 #include <nlohmann/json.hpp>
 
 #include "core/formats/format_options.hpp"
+#include "core/output_shape.hpp"
 #include "core/point_set.hpp"
+#include "optim/run/runtime.hpp"
 
 namespace ppsynth {
 
 using json = nlohmann::json;
+
+// The top-level keys of a run config, declared once (run_config.cpp's table); "output" and
+// "runtime" are blocks with tables of their own. The method's spec (its part's keys) and the
+// seed (a whole number up to 2^63 - 1: is_seed) stay JSON here. A resolved config read
+// through the table (RunOptions::params().read, core/config/params.hpp) is what the run layer
+// reads (RunSpec::options, run_spec.hpp).
+struct RunOptions {
+  std::string name;
+  std::string description;
+  std::string exemplar;
+  std::string format = "auto";
+  std::string scaling = "per-axis";
+  bool merge_classes = false;
+  json init_file;
+  json preset;
+  json seed = 95;
+  int upscale = 2;
+  OutputOptions output;
+  json method = json{{"type", "gabor"}};
+  bool snapshots = true;
+  bool evaluate = true;
+  double checkpoint_seconds = 60;
+  RuntimeOptions runtime;
+  static const ParamTable<RunOptions>& params();
+};
 
 json run_defaults();
 

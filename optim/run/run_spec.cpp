@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "core/config/params.hpp"
 #include "core/error.hpp"
 #include "core/memory_budget.hpp"
 #include "optim/run/run_config.hpp"
@@ -12,10 +13,9 @@ namespace {
 
 // make_run_spec's refusals (run_spec.hpp), from the spec's resolved shape.
 void check_synthesis_size(const RunSpec& spec) {
-  const nlohmann::json& config = spec.config;
   const PointSet& exemplar = spec.exemplar;
   const OutputShape& shape = spec.shape;
-  const std::string key = config["output"]["size"].is_null() ? "output.points" : "output.size";
+  const std::string key = spec.options.output.size.is_null() ? "output.points" : "output.size";
   const Domain E = exemplar.domain(), out = shape.domain();
   char size[96];
   std::snprintf(size, sizeof size, "%g x %g exemplar units", shape.width, shape.height);
@@ -28,7 +28,7 @@ void check_synthesis_size(const RunSpec& spec) {
       throw config_error(key, what);
     }
     constexpr double kFit = 1 - 1e-9;  // crops as large as the output up to rounding fit (core/metrics/crops.cpp)
-    if (config["evaluate"].get<bool>() && (shape.width < E.width() * kFit || shape.height < E.height() * kFit)) {
+    if (spec.options.evaluate && (shape.width < E.width() * kFit || shape.height < E.height() * kFit)) {
       char what[320];
       std::snprintf(what, sizeof what,
                     "%s is smaller than the exemplar (%g x %g) on a side, and the run's evaluation measures "
@@ -60,12 +60,13 @@ void check_synthesis_size(const RunSpec& spec) {
 RunSpec make_run_spec(const nlohmann::json& resolved, PointSet exemplar, Format exemplar_format) {
   RunSpec s;
   s.config = resolved;
+  s.options = RunOptions::params().read(s.config);
   s.exemplar = std::move(exemplar);
   s.exemplar_format = exemplar_format;
   s.shape = resolve_output_shape(s.config, s.exemplar);
   check_synthesis_size(s);
-  s.seed = s.config["seed"].get<uint64_t>();
-  s.method = MethodRegistry::instance().create(s.config["method"], "method");
+  s.seed = s.options.seed.get<uint64_t>();
+  s.method = MethodRegistry::instance().create(s.options.method, "method");
   return s;
 }
 

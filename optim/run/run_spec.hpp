@@ -1,8 +1,10 @@
 #pragma once
 // RunSpec: one synthesis as resolved once, from a resolved run config (run_config.hpp): the
-// exemplar read (its file once, with the format it was read as), the output shape, the seed
-// and the method built. The run layer (run_synthesis.hpp), the checkpoint key and the log
-// read it instead of each reading the file, resolving the shape or building the method again.
+// exemplar read (its file once, with the format it was read as), the output shape, the seed,
+// the config's keys read through their tables (the run's options: evaluate, snapshots,
+// checkpoint_seconds, runtime) and the method built. The run layer (run_synthesis.hpp), the
+// checkpoint key and the log read it instead of each reading the file, resolving the shape,
+// reading a key of the JSON or building the method again.
 #include <cstdint>
 #include <memory>
 
@@ -12,11 +14,15 @@
 #include "core/output_shape.hpp"
 #include "core/point_set.hpp"
 #include "optim/method/method.hpp"
+#include "optim/run/run_config.hpp"
 
 namespace ppsynth {
 
 struct RunSpec {
-  nlohmann::json config;  // the resolved run config (resolve_run_config): config.json, the checkpoint key
+  // The resolved run config (resolve_run_config) as written: config.json and the checkpoint
+  // key hold it; what the run does follows `options`, read from it.
+  nlohmann::json config;
+  RunOptions options;     // config read through RunOptions' table, once
   PointSet exemplar;      // as synthesized: scaled, classes merged when the config says so
   // The format its file was read as: an exemplar in the published integer format gets its
   // output in that format too (run_store.hpp, output.gabor.txt). Plain for one given in memory.

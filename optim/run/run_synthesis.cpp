@@ -58,7 +58,7 @@ RunOutcome execute(const RunSpec& spec, RunDirectory& dir, const std::string& na
   ProgressLog progress(name, req.quick ? 1 : 10);
   LossRecorder losses;
   SnapshotWriter snaps(o.dir + "/snapshots");
-  snaps.set_enabled(r["snapshots"].get<bool>());
+  snaps.set_enabled(spec.options.snapshots);
   MarkerProgress marker_progress(dir);
   SynthesisOptions options;
   options.quick = req.quick;
@@ -72,7 +72,7 @@ RunOutcome execute(const RunSpec& spec, RunDirectory& dir, const std::string& na
   auto checkpointed = [&] { return resume_state != nullptr || checkpoints.saved(); };
   options.stop = req.stop;
   spdlog::info("[{}] {} points, {} classes -> {:.0f} points, {} ({}), seed {}", name, o.exemplar.size(), o.exemplar.num_classes(),
-               spec.shape.expected_points(o.exemplar), spec.shape.describe(), r["method"]["type"].get<std::string>(), spec.seed);
+               spec.shape.expected_points(o.exemplar), spec.shape.describe(), spec.options.method["type"].get<std::string>(), spec.seed);
   try {
     fs::create_directories(o.dir + "/snapshots");
     SynthesisResult res = synthesize(spec, options);
@@ -83,7 +83,7 @@ RunOutcome execute(const RunSpec& spec, RunDirectory& dir, const std::string& na
     o.stats = std::move(res.stats);
     o.metrics = std::move(res.metrics);
     write_run_outputs(o, name, req.quick, losses, res.seconds, t0);
-    dir.mark_complete({{"seed", r["seed"]}});
+    dir.mark_complete({{"seed", spec.seed}});
   } catch (const SynthesisInterrupted&) {
     if (checkpointed()) throw RunInterrupted(o.dir);  // the checkpoint stays for --resume
     dir.discard();  // stopped before its first checkpoint: nothing to resume, nothing kept
@@ -117,7 +117,7 @@ RunOutcome run_synthesis(const RunSpec& spec, const RunRequest& req) {
     dir.mark_running({{"quick", req.quick},
                       {"threads", at::get_num_threads()},
                       {"processor", processor_kind()},
-                      {"seed", r["seed"]},
+                      {"seed", spec.seed},
                       {"exemplar_format", format_name(spec.exemplar_format)}});
   } catch (...) {
     dir.discard();

@@ -145,15 +145,15 @@ nlohmann::json DeviceDecision::record(const DeviceCapabilities& device) const {
   return r;
 }
 
-DeviceSettings apply_device_settings(const nlohmann::json& runtime) {
-  const DeviceRequest request = parse_device(runtime.at("device"));
+DeviceSettings apply_device_settings(const RuntimeOptions& runtime) {
+  const DeviceRequest request = parse_device(runtime.device);
   DeviceSettings s;
   const bool cuda = torch::cuda::is_available();
   if (request.kind == DeviceRequest::Kind::cpu || (request.kind == DeviceRequest::Kind::automatic && !cuda)) {
     set_synthesis_device({cpu_capabilities(), "{}"});
     return s;
   }
-  const std::string asked = "\"" + runtime["device"].get<std::string>() + "\"";
+  const std::string asked = "\"" + runtime.device.get<std::string>() + "\"";
   if (!cuda)
     throw config_error("runtime.device", asked + " asks for a CUDA device, and this process sees none (a LibTorch built "
                                          "without CUDA, as Debian's, or no GPU or driver); use \"cpu\" or \"auto\"");
@@ -162,10 +162,10 @@ DeviceSettings apply_device_settings(const nlohmann::json& runtime) {
     throw config_error("runtime.device", asked + ": this process sees " + std::to_string(count) + " CUDA device" +
                                              (count == 1 ? " (cuda:0)" : "s (cuda:0 to cuda:" + std::to_string(count - 1) + ")"));
   s.device = "cuda:" + std::to_string(request.index);
-  check_runtime(runtime);
-  s.deterministic = runtime.at("deterministic").get<bool>();
+  check_runtime(RuntimeOptions::params().to_json(runtime));  // tf32's values, as a config's are checked
+  s.deterministic = runtime.deterministic;
   const DeviceCapabilities caps = cuda_capabilities(request.index);
-  const DeviceDecision decision = decide_device_settings(caps, runtime.at("tf32"), s.deterministic);
+  const DeviceDecision decision = decide_device_settings(caps, runtime.tf32, s.deterministic);
   s.tf32 = decision.tf32;
   set_synthesis_device({caps, decision.record(caps).dump()});
   auto& context = at::globalContext();

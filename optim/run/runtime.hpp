@@ -98,7 +98,7 @@ void check_runtime(const nlohmann::json& runtime);
 // Resolves "auto", refuses a CUDA device this process cannot use (InputError naming
 // runtime.device: a LibTorch without CUDA, or no such device), and sets the process-wide
 // CUDA flags (TF32, cuDNN's algorithm choice, deterministic algorithms) for the synthesis.
-DeviceSettings apply_device_settings(const nlohmann::json& runtime);
+DeviceSettings apply_device_settings(const RuntimeOptions& runtime);
 // PPSYNTH_THREADS as a user set it (1..1024), 0 when unset; InputError when malformed.
 int threads_from_environment();
 

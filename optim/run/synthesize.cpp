@@ -27,9 +27,9 @@ bool can_resume(const nlohmann::json& spec) {
 
 nlohmann::json checkpoint_key(const RunSpec& spec, bool quick) {
   const nlohmann::json& config = spec.config;
-  return {{"method", config["method"]["type"]},
+  return {{"method", spec.options.method["type"]},
           {"method_version", spec.method->version()},
-          {"seed", config["seed"]},
+          {"seed", spec.seed},
           {"quick", quick},
           {"exemplar", content_hash(format_points(spec.exemplar, Format::Plain))},
           {"config_hash", content_hash(config.dump())},
@@ -44,7 +44,7 @@ void check_checkpoint(const std::string& bytes, const std::string& source, const
 
 SynthesisResult synthesize(const RunSpec& run, const SynthesisOptions& options) {
   using Clock = std::chrono::steady_clock;
-  const nlohmann::json& spec = run.config;
+  const RunOptions& spec = run.options;
   SynthesisMethod& method = *run.method;
   SynthesisContext ctx;
   // The caller's options as they are, but a method that cannot resume neither checkpoints nor
@@ -53,12 +53,11 @@ SynthesisResult synthesize(const RunSpec& run, const SynthesisOptions& options) 
   if (!method.can_resume()) ctx.save_checkpoint = nullptr, ctx.resume_state = nullptr, ctx.stop = nullptr;
   ctx.seed = run.seed;
   ctx.output = run.shape;
-  // A config resolved before "runtime" existed (an older run directory's) runs on the CPU.
-  const DeviceSettings device = apply_device_settings(spec.value("runtime", runtime_defaults()));
+  const DeviceSettings device = apply_device_settings(spec.runtime);
   ctx.device = device.device;
   ctx.tf32 = device.tf32;
   ctx.deterministic = device.deterministic;
-  const auto from_file = options.initialization ? std::nullopt : load_initialization(spec);
+  const auto from_file = options.initialization ? std::nullopt : load_initialization(run.config);
   ctx.initialization = options.initialization ? options.initialization : from_file ? &*from_file : nullptr;
   InitialRecorder initial;
   ctx.observers.push_back(&initial);
@@ -67,11 +66,11 @@ SynthesisResult synthesize(const RunSpec& run, const SynthesisOptions& options) 
   StagesReport stages;
   ctx.stages = &stages;
   if (method.can_resume()) {
-    ctx.checkpoint_seconds = spec["checkpoint_seconds"].get<double>();
+    ctx.checkpoint_seconds = spec.checkpoint_seconds;
     ctx.checkpoint_key = checkpoint_key(run, options.quick);
     if (options.resume_state) check_checkpoint(*options.resume_state, options.resume_source, ctx.checkpoint_key);
   } else if (options.resume_state) {
-    throw InputError("the method " + spec["method"].value("type", std::string("?")) + " cannot resume a checkpoint");
+    throw InputError("the method " + spec.method.value("type", std::string("?")) + " cannot resume a checkpoint");
   }
   const auto t0 = Clock::now();
   r.output = method.synthesize(run.exemplar, ctx);
@@ -81,9 +80,9 @@ SynthesisResult synthesize(const RunSpec& run, const SynthesisOptions& options) 
   r.initialization = std::move(initial.initial);
   r.stages = std::move(stages.stages);
   if (r.output.empty())  // a rectangle of a point or two whose points all parked outside it
-    throw config_error(spec["output"]["size"].is_null() ? "output.points" : "output.size",
+    throw config_error(spec.output.size.is_null() ? "output.points" : "output.size",
                        "the synthesis left no point inside the output (" + ctx.output.describe() + "); give a larger output");
-  if (spec["evaluate"].get<bool>()) {
+  if (spec.evaluate) {
     // As `ppsynth eval` evaluates the two files (the zoom from their densities), so that a
     // run's metrics.json and eval on its output are one answer whatever the exemplar's domain.
     r.metrics = evaluate(run.exemplar, r.output, EvalOptions{});

@@ -29,6 +29,7 @@
 #include "core/memory_budget.hpp"
 #include "core/atomic_file.hpp"
 #include "core/config/config.hpp"
+#include "core/config/params.hpp"
 #include "core/processor.hpp"
 #include "models/gabor_feature_maps.hpp"
 #include "models/per_point_sum.hpp"
@@ -127,7 +128,7 @@ Subject make_subject(const Opts& o) {
     check_writable(o.json_out);
   }
   if (b.r["method"]["type"] != "gabor") throw InputError("bench: only the gabor method is benchmarked");
-  b.device = torch::Device(apply_device_settings(b.r["runtime"]).device);
+  b.device = torch::Device(apply_device_settings(RuntimeOptions::params().read(b.r["runtime"])).device);
   const json& p = b.r["method"];
   b.ex = load_exemplar(b.r);
   b.u = b.r["upscale"];

@@ -32,6 +32,13 @@ json runtime(const json& device) {
   return r;
 }
 
+// The same as a synthesis reads it (RunSpec::options.runtime).
+RuntimeOptions runtime_options(const json& device) {
+  RuntimeOptions r;
+  r.device = device;
+  return r;
+}
+
 bool cuda_here() {
   if (torch::cuda::is_available()) return true;
   WARN("skipped: this process sees no CUDA device (torch::cuda::is_available() is false)");
@@ -73,11 +80,11 @@ TEST_CASE("Without CUDA, cpu and auto run on the CPU and cuda is refused naming 
     WARN("skipped: this process sees a CUDA device, so cuda is not refused");
     return;
   }
-  CHECK(apply_device_settings(runtime("cpu")).device == "cpu");
-  CHECK(apply_device_settings(runtime("auto")).device == "cpu");
+  CHECK(apply_device_settings(runtime_options("cpu")).device == "cpu");
+  CHECK(apply_device_settings(runtime_options("auto")).device == "cpu");
   for (const char* v : {"cuda", "cuda:1"})
-    CHECK_THROWS_AS(apply_device_settings(runtime(v)), InputError);
-  CHECK_THROWS_WITH(apply_device_settings(runtime("cuda")), Contains("runtime.device") && Contains("\"cuda\" asks for a CUDA device"));
+    CHECK_THROWS_AS(apply_device_settings(runtime_options(v)), InputError);
+  CHECK_THROWS_WITH(apply_device_settings(runtime_options("cuda")), Contains("runtime.device") && Contains("\"cuda\" asks for a CUDA device"));
   // synthesize() applies it before the method starts.
   CHECK_THROWS_WITH(quick_run("cuda"), Contains("runtime.device"));
 }
@@ -107,8 +114,8 @@ TEST_CASE("On CUDA, the same config and seed give the same output, twice", "[opt
 
 TEST_CASE("On CUDA, one evaluation's loss and gradient equal the CPU's within float32 rounding", "[optim][device][cuda]") {
   if (!cuda_here()) return;
-  json ieee = runtime("cuda");
-  ieee["tf32"] = false;  // IEEE float32: on a card with TF32 the device would take it
+  RuntimeOptions ieee = runtime_options("cuda");
+  ieee.tf32 = false;  // IEEE float32: on a card with TF32 the device would take it
   apply_device_settings(ieee);  // deterministic
   const PointSet ex = test::small_exemplar(1, false);
   json p = test::method_params(json{{"type", "gabor"}, {"jitter", false}});

@@ -1,6 +1,7 @@
-// One synthesis resolves its exemplar, output shape and method once (optim/run/run_spec.hpp):
-// the run layer, the checkpoint key and the log read the one RunSpec instead of each reading
-// the file, resolving the shape or building the method again. Counted with the reader's and
+// One synthesis resolves its exemplar, output shape, options and method once
+// (optim/run/run_spec.hpp): the run layer, the checkpoint key and the log read the one RunSpec
+// instead of each reading the file, resolving the shape, reading the JSON or building the
+// method again. Counted with the reader's and
 // the resolver's process-wide counters and a method whose factory counts its creations.
 #include <catch2/catch.hpp>
 
@@ -10,7 +11,9 @@
 #include "core/output_shape.hpp"
 #include "optim/method/method.hpp"
 #include "optim/run/run_config.hpp"
+#include "optim/run/run_spec.hpp"
 #include "optim/run/run_synthesis.hpp"
+#include "optim/run/synthesize.hpp"
 #include "tests/support/scratch_dir.hpp"
 
 using namespace ppsynth;
@@ -88,4 +91,33 @@ TEST_CASE("a resumed run reads its exemplar copy once, resolves its output shape
   CHECK(before.shapes_since() == 1);
   // One to check the directory's config.json as resolve_run_config has it, one for the run.
   CHECK(before.creations_since() == 2);
+}
+
+TEST_CASE("make_run_spec reads the config's options through their table, and the run layer follows them", "[run][run_spec]") {
+  const json resolved = resolve_run_config({{"exemplar", kLines}, {"method", {{"type", "tiled_copy"}}}},
+                                           {"seed=12", "checkpoint_seconds=7", "snapshots=false", "runtime.device=auto",
+                                            "runtime.tf32=false", "runtime.deterministic=false"});
+  const PointSet ex = load_exemplar(resolved);
+  const RunSpec spec = make_run_spec(resolved, ex);
+  CHECK(spec.seed == 12);
+  CHECK(spec.options.checkpoint_seconds == 7);
+  CHECK(spec.options.evaluate);
+  CHECK_FALSE(spec.options.snapshots);
+  CHECK(spec.options.runtime.device == "auto");
+  CHECK(spec.options.runtime.tf32 == false);
+  CHECK_FALSE(spec.options.runtime.deterministic);
+  CHECK(spec.options.method == resolved["method"]);
+  CHECK(spec.config == resolved);  // what config.json and the checkpoint key are written from
+  const json key = checkpoint_key(spec, true);
+  CHECK(key["config"] == resolved);
+  CHECK(key["seed"].dump() == resolved["seed"].dump());  // the typed seed writes as the config's
+  CHECK(key["method"] == "tiled_copy");
+
+  // What the synthesis does is what the options say, whatever the JSON beside them holds.
+  RunSpec typed = spec;
+  typed.options.evaluate = false;
+  CHECK(synthesize(spec).metrics.is_object());
+  CHECK(synthesize(typed).metrics.is_null());
+  typed.options.runtime.device = "tpu";
+  CHECK_THROWS_WITH(synthesize(typed), Catch::Contains("runtime.device") && Catch::Contains("tpu"));
 }
