@@ -52,7 +52,8 @@ bool takes_float32_variant(const nlohmann::json& entry, bool bf16_units) {
   return entry.contains("without_bf16_units") && !bf16_units;
 }
 
-// The device a config names (runtime.device, the CPU by default), as this process sees it.
+// The device a config being resolved names (runtime.device, the CPU by default), as this
+// process sees it.
 DeviceCapabilities config_device(const nlohmann::json& config) {
   if (config.contains("runtime") && config["runtime"].is_object() && config["runtime"].contains("device"))
     return capabilities_of_device(config["runtime"]["device"]);
@@ -83,11 +84,11 @@ nlohmann::json apply_preset(const nlohmann::json& config) {
   return merge(fragment, config);
 }
 
-nlohmann::json preset_record(const nlohmann::json& resolved) {
-  if (!resolved.is_object() || !resolved.contains("preset") || !resolved["preset"].is_string()) return nullptr;
+nlohmann::json preset_record(const nlohmann::json& preset, const nlohmann::json& runtime_device) {
+  if (!preset.is_string()) return nullptr;
   const nlohmann::json all = presets();
-  const nlohmann::json& entry = preset_entry(all, resolved["preset"]);
-  const DeviceCapabilities device = config_device(resolved);
+  const nlohmann::json& entry = preset_entry(all, preset);
+  const DeviceCapabilities device = capabilities_of_device(runtime_device);
   const bool f32 = takes_float32_variant(entry, device.bf16());
   const std::string kind = device.describe();
   std::string reason = "one variant for every processor";
@@ -96,7 +97,7 @@ nlohmann::json preset_record(const nlohmann::json& resolved) {
   else if (entry.contains("without_bf16_units"))
     reason = f32 ? "no bf16 tensor cores known on the CUDA device (" + kind + "; they start at compute capability 8.0)"
                  : "the CUDA device's bf16 tensor cores (" + kind + ")";
-  return {{"name", resolved["preset"]}, {"variant", f32 ? "without bf16 units" : "every processor"}, {"reason", reason}};
+  return {{"name", preset}, {"variant", f32 ? "without bf16 units" : "every processor"}, {"reason", reason}};
 }
 
 }  // namespace ppsynth

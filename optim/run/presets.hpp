@@ -30,7 +30,8 @@ nlohmann::json preset_fragment(const std::string& name, bool bf16_units);
 // `config` with the fragment of its "preset" (if any) merged under it; errors name the key.
 nlohmann::json apply_preset(const nlohmann::json& config);
 // For run.json: {"name", "variant": "every processor" | "without bf16 units", "reason"} of a
-// resolved config's preset on its device; null without a preset.
-nlohmann::json preset_record(const nlohmann::json& resolved);
+// run's preset (RunOptions::preset, run_config.hpp) on its device (runtime.device); null
+// without a preset.
+nlohmann::json preset_record(const nlohmann::json& preset, const nlohmann::json& device);
 
 }  // namespace ppsynth

@@ -100,9 +100,8 @@ std::string run_name(const nlohmann::json& r) {
   return name.empty() ? fs::path(resolve_data_path(r["exemplar"])).stem().string() : name;
 }
 
-void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const LossRecorder& losses,
+void write_run_outputs(RunOutcome& o, const RunOptions& options, const std::string& name, bool quick, const LossRecorder& losses,
                        double synthesis_seconds, std::chrono::steady_clock::time_point started) {
-  const nlohmann::json& r = o.config;
   const std::string& dir = o.dir;
   write_points(dir + "/output.txt", o.output, Format::Plain);
   if (o.exemplar_format == Format::GaborInt) write_points(dir + "/output.gabor.txt", o.output, Format::GaborInt);
@@ -131,7 +130,7 @@ void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const
     method_stats["seconds_before_resume"] = o.seconds_before_resume;
   }
   nlohmann::json run = {{"name", name},
-                        {"seed", r["seed"]},
+                        {"seed", options.seed},
                         {"revision", revision()},
                         {"quick", quick},
                         // results depend on it in the last bits (reductions split across threads)
@@ -139,7 +138,7 @@ void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const
                         // and on the processor's instruction set (core/processor.hpp)
                         {"processor", processor_kind()},
                         // a preset may differ by processor class (optim/run/presets.hpp)
-                        {"preset", preset_record(r)},
+                        {"preset", preset_record(options.preset, options.runtime.device)},
                         {"synthesis_seconds", synthesis_seconds},
                         {"total_seconds", o.seconds},
                         {"peak_rss_mib", peak_resident_mib()},

@@ -20,6 +20,8 @@
 
 namespace ppsynth {
 
+struct RunOptions;  // run_config.hpp
+
 // A run as the store knows it: where, the resolved config, the points and what was measured.
 struct RunOutcome {
   std::string dir;
@@ -35,8 +37,9 @@ struct RunOutcome {
 };
 
 // Writes every output file of a finished synthesis into o.dir (o.seconds is set here: the
-// run's wall time since `started`). `losses` holds every iteration's loss.
-void write_run_outputs(RunOutcome& o, const std::string& name, bool quick, const LossRecorder& losses,
+// run's wall time since `started`); run.json's seed and preset from `options` (o.config read
+// through its table: RunSpec::options). `losses` holds every iteration's loss.
+void write_run_outputs(RunOutcome& o, const RunOptions& options, const std::string& name, bool quick, const LossRecorder& losses,
                        double synthesis_seconds, std::chrono::steady_clock::time_point started);
 
 // Reads a finished run directory back (config.json, run.json, output.txt, init.txt; the

@@ -82,7 +82,7 @@ RunOutcome execute(const RunSpec& spec, RunDirectory& dir, const std::string& na
     o.seconds_before_resume = res.seconds_before_resume;
     o.stats = std::move(res.stats);
     o.metrics = std::move(res.metrics);
-    write_run_outputs(o, name, req.quick, losses, res.seconds, t0);
+    write_run_outputs(o, spec.options, name, req.quick, losses, res.seconds, t0);
     dir.mark_complete({{"seed", spec.seed}});
   } catch (const SynthesisInterrupted&) {
     if (checkpointed()) throw RunInterrupted(o.dir);  // the checkpoint stays for --resume

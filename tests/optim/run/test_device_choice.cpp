@@ -98,11 +98,12 @@ TEST_CASE("The fast preset's variant follows the run's device, not the host CPU,
   // (whatever the host CPU's bf16 units), and the record says why.
   const nlohmann::json r = resolve_run_config(nlohmann::json{{"preset", "fast"}}, {"runtime.device=cuda"});
   CHECK(r["method"]["feature_net"]["channels"] == 64);  // the float32 variant's
-  const nlohmann::json record = preset_record(r);
+  const nlohmann::json record = preset_record(r["preset"], r["runtime"]["device"]);
   CHECK(record["variant"] == "without bf16 units");
   CHECK_THAT(record["reason"].get<std::string>(), Contains("CUDA device"));
   // On the CPU, as before: the CPU's units decide.
-  const nlohmann::json cpu = preset_record(resolve_run_config(nlohmann::json{{"preset", "fast"}}, {}));
+  const nlohmann::json on_cpu = resolve_run_config(nlohmann::json{{"preset", "fast"}}, {});
+  const nlohmann::json cpu = preset_record(on_cpu["preset"], on_cpu["runtime"]["device"]);
   CHECK(cpu["variant"] == (cpu_isa().native_bf16 ? "every processor" : "without bf16 units"));
   CHECK(capabilities_of_device("cpu").bf16() == cpu_isa().native_bf16);
   CHECK_FALSE(capabilities_of_device("auto").cuda);

@@ -56,11 +56,13 @@ TEST_CASE("the fast preset by processor class: auto precision, and its float32 v
   CHECK(with_channels_for_classes(without["feature_net"], 2, "f")["channels"].get<int>() < 120);
   // This process takes the variant of its own processor, and run.json says which and why.
   CHECK(preset_fragment("fast") == preset_fragment("fast", cpu_isa().native_bf16));
-  const json record = preset_record(resolve_run_config(json{{"preset", "fast"}}, {}));
+  const json fast = resolve_run_config(json{{"preset", "fast"}}, {});
+  const json record = preset_record(fast["preset"], fast["runtime"]["device"]);
   CHECK(record["name"] == "fast");
   CHECK(record["variant"] == (cpu_isa().native_bf16 ? "every processor" : "without bf16 units"));
   CHECK(record["reason"].get<std::string>().find(processor_kind()) != std::string::npos);
-  CHECK(preset_record(resolve_run_config(json::object(), {})).is_null());
+  const json none = resolve_run_config(json::object(), {});
+  CHECK(preset_record(none["preset"], none["runtime"]["device"]).is_null());
 }
 
 TEST_CASE("the fast preset's float32 variant: 64 filters for a one-class and a multi-class exemplar", "[optim][config][preset]") {
