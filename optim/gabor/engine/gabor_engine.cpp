@@ -150,26 +150,26 @@ GaborEngine::GaborEngine(const GaborParams& params, const PointSet& exemplar, co
   }
   for (const Stage& stage : plan_)
     if (std::find(kinds_.begin(), kinds_.end(), stage.kind) == kinds_.end()) kinds_.push_back(stage.kind);
-  // Made before the list below: what it may throw (a bad PPSYNTH_GABOR_MAPS) is not thrown
-  // from inside a braced list of JSON values.
-  json runtime = runtime_record();
-  stats_ = {{"grid_res", s_.res}, {"output_grid_res", s_.out_res}, {"output_grid_rows", s_.out_rows},
-            {"grid_res_per_sigma", s_.sigma_res}, {"output_grid_res_per_sigma", s_.sigma_out_res},
-            {"output_grid_rows_per_sigma", s_.sigma_out_rows}, {"k", s_.k}, {"sigmas", s_.sigmas},
-            {"mean_nn_distance", s_.mean_nn_distance},
-            {"map_terms", json::object()}, {"terms", json::object()}, {"runtime", std::move(runtime)}};
+  stats_.grid_res = s_.res;
+  stats_.output_grid_res = s_.out_res;
+  stats_.output_grid_rows = s_.out_rows;
+  stats_.grid_res_per_sigma = s_.sigma_res;
+  stats_.output_grid_res_per_sigma = s_.sigma_out_res;
+  stats_.output_grid_rows_per_sigma = s_.sigma_out_rows;
+  stats_.k = s_.k;
+  stats_.sigmas = s_.sigmas;
+  stats_.mean_nn_distance = s_.mean_nn_distance;
+  stats_.runtime = runtime_record();
   if (shape_.rectangle) {
     const Domain c = shape_.canvas();
-    stats_["output"] = shape_.describe();
-    stats_["canvas"] = {c.x0, c.y0, c.x1, c.y1};
-    stats_["canvas_points"] = out_.size();
-    stats_["frozen_pad_points"] = out_.size() - pad_begin_;
-    stats_["windows"] = {{"nx", layout_.nx}, {"ny", layout_.ny}, {"width", layout_.size.width}, {"height", layout_.size.height},
-                         {"margin", layout_.margin}, {"grid", {s_.out_res, s_.out_rows}}};
+    stats_.rectangle = GaborRectangle{
+        {shape_.describe(), {c.x0, c.y0, c.x1, c.y1}, out_.size()},
+        out_.size() - pad_begin_,
+        {layout_.nx, layout_.ny, layout_.size.width, layout_.size.height, layout_.margin, s_.out_res, s_.out_rows}};
   }
-  for (const auto& t : map_terms_) stats_["map_terms"][t.name] = t.weight;
-  for (const auto& t : terms_) stats_["terms"][t.name] = t.weight;
-  for (const auto& kind : kinds_) kind->describe(stats_);
+  for (const auto& t : map_terms_) stats_.map_terms[t.name] = t.weight;
+  for (const auto& t : terms_) stats_.terms[t.name] = t.weight;
+  for (const auto& kind : kinds_) kind->describe(stats_.kinds);
 }
 
 void GaborEngine::restore(const std::string& bytes) {
@@ -183,7 +183,7 @@ void GaborEngine::restore(const std::string& bytes) {
   // The time and phases of the processes before this one (0 in checkpoints without them).
   const json& ph = state_.phase_seconds;
   seconds_before_ = ph.value("wall", 0.0);
-  phases_ = Phases{ph.value("targets", 0.0), ph.value("maps_forward", 0.0), ph.value("net_forward", 0.0),
+  phases_ = GaborPhaseSeconds{ph.value("targets", 0.0), ph.value("maps_forward", 0.0), ph.value("net_forward", 0.0),
                    ph.value("loss_forward", 0.0), ph.value("backward", 0.0), ph.value("optimizer_step", 0.0)};
   std::istringstream rng(state_.rng);
   rng >> jitter_rng_;
@@ -278,25 +278,21 @@ PointSet GaborEngine::synthesized() const {
   return p;
 }
 
-json GaborEngine::runtime_record() const {
+GaborRuntime GaborEngine::runtime_record() const {
   const bool cuda = device_.is_cuda();
   // "auto" as the device resolves it (models/network_precision.hpp)
   const std::string net = resolve_network_precision(s_.feature_net.value("precision", "float32"), "method.feature_net.precision").name;
-  json r = {{"device", device_.str()},
-            // the network's arithmetic: bfloat16 as the net asks, else float32, on TF32 tensor cores where runtime.tf32 applies
-            {"precision", net != "float32" ? net : (cuda && ctx_.tf32 ? "tf32" : "float32")},
-            {"deterministic", cuda ? ctx_.deterministic : true}};
+  GaborRuntime r;
+  r.device = device_.str();
+  // the network's arithmetic: bfloat16 as the net asks, else float32, on TF32 tensor cores where runtime.tf32 applies
+  r.precision = net != "float32" ? net : (cuda && ctx_.tf32 ? "tf32" : "float32");
+  r.deterministic = cuda ? ctx_.deterministic : true;
   // what the device decided and why (optim/run/runtime.hpp's decide_device_settings)
-  if (cuda) r["choices"] = json::parse(synthesis_device().choices);
+  if (cuda) r.choices = json::parse(synthesis_device().choices);
   const std::string rasterizer = s_.options.rasterizer.value("type", "");
   if (rasterizer == "gabor" || rasterizer == "spatial")
-    r["gabor_maps"] = gabor_maps_path_name(gabor_maps_path(GaborMapsPath::automatic, device_));
+    r.gabor_maps = gabor_maps_path_name(gabor_maps_path(GaborMapsPath::automatic, device_));
   return r;
-}
-
-json GaborEngine::phase_seconds() const {
-  return {{"targets", phases_.targets}, {"maps_forward", phases_.maps}, {"net_forward", phases_.net},
-          {"loss_forward", phases_.loss}, {"backward", phases_.backward}, {"optimizer_step", phases_.step}};
 }
 
 PointSet GaborEngine::run() {
@@ -319,9 +315,10 @@ PointSet GaborEngine::run() {
     finish_stage(stage);
     save_checkpoint();  // every stage boundary, the last one included
   }
-  stats_["phase_seconds"] = phase_seconds();
-  stats_["resolved"] = pipe_->resolved();
-  if (ctx_.stats) *ctx_.stats = stats_;
+  stats_.phase_seconds = phases_;
+  const json resolved = pipe_->resolved();
+  stats_.resolved = GaborResolved{resolved["rasterizer"], resolved["feature_net"], resolved["losses"]};
+  if (ctx_.stats) *ctx_.stats = to_json(stats_);
   if (ctx_.stages) *ctx_.stages = StagesReport{state_.stages, seconds_before_};
   if (!shape_.rectangle) return out_;
   // "context": the synthesized points, all inside the rectangle (the pad is the exemplar's).
@@ -435,9 +432,9 @@ torch::Tensor GaborEngine::measure(const torch::Tensor& points, const torch::Ten
   auto feats = measured_part(pipe_->features(maps), measured_);
   const auto tc = Clock::now();
   auto l = pipe_->loss(feats);
-  phases_.maps += std::chrono::duration<double>(tb - ta).count();
-  phases_.net += std::chrono::duration<double>(tc - tb).count();
-  phases_.loss += since(tc);
+  phases_.maps_forward += std::chrono::duration<double>(tb - ta).count();
+  phases_.net_forward += std::chrono::duration<double>(tc - tb).count();
+  phases_.loss_forward += since(tc);
   return l;
 }
 
@@ -477,7 +474,7 @@ torch::Tensor GaborEngine::evaluate(const Stage& stage) {
   for (auto& t : own_terms) l = l + t.weight * state_.stage_scale * t.term->evaluate(mv, frozen_);
   const auto td = Clock::now();
   l.backward();
-  phases_.loss += std::chrono::duration<double>(td - tc).count();
+  phases_.loss_forward += std::chrono::duration<double>(td - tc).count();
   phases_.backward += since(td);
   return l;
 }
@@ -503,9 +500,9 @@ void GaborEngine::run_stage(const Stage& stage) {
   while (state_.iteration < iteration_cap(stage)) {
     const int it = state_.iteration;
     const auto ts = Clock::now();
-    const double inner_before = phases_.maps + phases_.net + phases_.loss + phases_.backward;
+    const double inner_before = phases_.maps_forward + phases_.net_forward + phases_.loss_forward + phases_.backward;
     const double lv = optimizer_->step([&] { return evaluate(stage); });
-    phases_.step += since(ts) - (phases_.maps + phases_.net + phases_.loss + phases_.backward - inner_before);
+    phases_.optimizer_step += since(ts) - (phases_.maps_forward + phases_.net_forward + phases_.loss_forward + phases_.backward - inner_before);
     if (!std::isfinite(lv))
       throw InputError("the loss became " + std::to_string(lv) + " at " + stage.label + ", iteration " + std::to_string(it));
     state_.stage_losses.push_back(lv);
@@ -581,7 +578,7 @@ void GaborEngine::save_checkpoint() {
   rng << jitter_rng_;
   state_.rng = rng.str();
   // Wall time so far over every process of the run: a resumed run reports its whole time.
-  state_.phase_seconds = phase_seconds();
+  state_.phase_seconds = to_json(phases_);
   state_.phase_seconds["wall"] = seconds_before_ + since(run_start_);
   ctx_.save_checkpoint(serialize_state(state_));
 }

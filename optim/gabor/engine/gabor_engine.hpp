@@ -29,6 +29,7 @@
 #include <memory>
 #include <random>
 
+#include "optim/gabor/engine/gabor_stats.hpp"
 #include "optim/gabor/pipeline/gabor_pipeline.hpp"
 #include "optim/gabor/resolution/gabor_resolution.hpp"
 #include "optim/gabor/stages/map_term.hpp"
@@ -47,13 +48,10 @@ class GaborEngine {
   GaborEngine(const GaborParams& params, const PointSet& exemplar, const SynthesisContext& ctx);
   // Runs the plan from the state (fresh, or restored from ctx.resume_state) to the end.
   PointSet run();
-  const json& stats() const { return stats_; }
+  const GaborStats& stats() const { return stats_; }
 
  private:
   using Clock = std::chrono::steady_clock;
-  struct Phases {  // wall time per phase, accumulated over the run
-    double targets = 0, maps = 0, net = 0, loss = 0, backward = 0, step = 0;
-  };
 
   void restore(const std::string& bytes);
   // Every index, count and flag of the restored state against the plan and the output;
@@ -70,8 +68,7 @@ class GaborEngine {
   void finish_stage(const Stage& stage);
   void save_checkpoint();
   PointSet points_in_play() const;  // the stage's moving and frozen points on its domain
-  json phase_seconds() const;       // phases_ by name (run.json's "phase_seconds")
-  json runtime_record() const;      // device, precision, determinism, maps path (run.json's "runtime")
+  GaborRuntime runtime_record() const;  // device, precision, determinism, maps path (run.json's "runtime")
   PointSet synthesized() const;     // out_ without a frozen exemplar pad, on the area where points move
   ProgressEvent event(const Stage& stage) const;
   int iteration_cap(const Stage& stage) const;  // its kind's
@@ -95,8 +92,8 @@ class GaborEngine {
   size_t pad_begin_ = 0;  // out_[pad_begin_..] is the frozen exemplar pad ("border": "context")
   SynthesisState state_;
   std::mt19937_64 jitter_rng_;
-  Phases phases_;
-  json stats_;
+  GaborPhaseSeconds phases_;  // wall time per phase, accumulated over the run
+  GaborStats stats_;
 
   // The current group and stage (rebuilt from the plan and the state).
   int group_ = -1;
