@@ -23,6 +23,7 @@
 #include "core/log.hpp"
 #include "optim/baselines/pcf2017/local_pcf.hpp"
 #include "optim/baselines/pcf2017/pcf2017_options.hpp"
+#include "optim/baselines/pcf2017/pcf2017_stats.hpp"
 #include "optim/baselines/pcf2017/pcf_synthesizer.hpp"
 #include "optim/method/method.hpp"
 
@@ -85,13 +86,11 @@ class Pcf2017Method : public SynthesisMethod {
     ev.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     ctx.stage_end(ev, out);
     if (ctx.stats) {
-      (*ctx.stats)["iterations"] = int(res.energy.size()) - 1;
-      (*ctx.stats)["energy_initial"] = res.energy.front();
-      (*ctx.stats)["energy_final"] = res.energy.back();
-      (*ctx.stats)["converged"] = res.converged;
-      (*ctx.stats)["points"] = n;
-      (*ctx.stats)["target_r_max"] = target.r_max;
-      (*ctx.stats)["seconds"] = ev.seconds;
+      Pcf2017Stats stats;
+      stats.points = n;
+      stats.seconds = ev.seconds;
+      stats.descent = Pcf2017Descent{int(res.energy.size()) - 1, res.energy.front(), res.energy.back(), res.converged, target.r_max};
+      *ctx.stats = to_json(stats);
     }
     spdlog::debug("pcf2017: E {} -> {} in {} iterations{}", res.energy.front(), res.energy.back(),
                   res.energy.size() - 1, res.converged ? " (converged)" : "");
@@ -146,7 +145,7 @@ class Pcf2017Method : public SynthesisMethod {
     DescentOptions opt = descent_;
     if (ctx.quick) opt.iterations = std::min(opt.iterations, quick_iterations_);
     const auto t_run = std::chrono::steady_clock::now();
-    nlohmann::json per_class = nlohmann::json::array();
+    std::vector<Pcf2017Class> per_class;
     for (int k = 0; k < K; ++k) {
       ProgressEvent ev;
       ev.stage = K > 1 ? "class " + std::to_string(k + 1) + "/" + std::to_string(K) + ", pcf2017 gradient descent"
@@ -159,7 +158,7 @@ class Pcf2017Method : public SynthesisMethod {
       const auto t0 = std::chrono::steady_clock::now();
       const auto since = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
       ctx.stage_begin(ev);
-      nlohmann::json cs = {{"class", k}, {"torus", {on[k].x0, on[k].y0, on[k].x1, on[k].y1}}, {"torus_points", n}};
+      Pcf2017Class cs{k, {on[k].x0, on[k].y0, on[k].x1, on[k].y1}, n, std::nullopt};
       if (has_pcf) {
         const PcfCurve target = pattern_pcf(ex_class[k], pcf_, exemplar.domain().periodic);
         DescentResult res = synthesize_stationary(target.g, pos[k], on[k], pcf_, opt, [&](int it, double E) {
@@ -170,11 +169,7 @@ class Pcf2017Method : public SynthesisMethod {
         });
         pos[k] = std::move(res.points);
         ev.loss = res.energy.back();
-        cs.update({{"iterations", int(res.energy.size()) - 1},
-                   {"energy_initial", res.energy.front()},
-                   {"energy_final", res.energy.back()},
-                   {"converged", res.converged},
-                   {"target_r_max", target.r_max}});
+        cs.descent = Pcf2017Descent{int(res.energy.size()) - 1, res.energy.front(), res.energy.back(), res.converged, target.r_max};
       } else if (!ex_class[k].empty()) {
         spdlog::warn("pcf2017: class {} has {} exemplar and {} output points, too few for a PCF; its points stay uniform",
                      k, ex_class[k].size(), n);
@@ -187,12 +182,12 @@ class Pcf2017Method : public SynthesisMethod {
     const bool crop = shape.clean_border && shape.pad > 0;
     PointSet out = crop ? on_canvas.crop(shape.domain()) : on_canvas;
     if (ctx.stats) {
-      (*ctx.stats)["output"] = shape.describe();
-      (*ctx.stats)["canvas"] = {c.x0, c.y0, c.x1, c.y1};
-      (*ctx.stats)["canvas_points"] = on_canvas.size();
-      (*ctx.stats)["points"] = out.size();
-      (*ctx.stats)["classes"] = per_class;
-      (*ctx.stats)["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_run).count();
+      Pcf2017Stats stats;
+      stats.points = out.size();
+      stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_run).count();
+      stats.rectangle = RectangleStats{shape.describe(), {c.x0, c.y0, c.x1, c.y1}, on_canvas.size()};
+      stats.classes = std::move(per_class);
+      *ctx.stats = to_json(stats);
     }
     return out;
   }

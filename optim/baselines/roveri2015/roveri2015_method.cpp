@@ -24,6 +24,7 @@
 #include "optim/baselines/roveri2015/functional.hpp"
 #include "optim/baselines/roveri2015/params.hpp"
 #include "optim/baselines/roveri2015/roveri2015_options.hpp"
+#include "optim/baselines/roveri2015/roveri2015_stats.hpp"
 #include "optim/baselines/roveri2015/patch_init.hpp"
 #include "optim/baselines/roveri2015/solver.hpp"
 #include "optim/baselines/roveri2015/synthesis_state.hpp"
@@ -115,19 +116,12 @@ class Roveri2015Method : public SynthesisMethod {
       ev.seconds = since(t_stage);
       ctx.iteration(ev);
     };
-    nlohmann::json scales = nlohmann::json::array();
+    Roveri2015Stats stats;
     cb.scale_end = [&](int, const SynthesisState& s, const ScaleReport& r) {
       ev.loss = r.energy_end;
       ev.seconds = since(t_stage);
       ctx.stage_end(ev, to_unit(s));
-      scales.push_back({{"delta", r.delta},
-                        {"energy_start", r.energy_start},
-                        {"energy_end", r.energy_end},
-                        {"points", r.points},
-                        {"added", r.added},
-                        {"removed", r.removed},
-                        {"merge_iterations", r.merge_iterations},
-                        {"seconds", r.seconds}});
+      stats.scales.push_back(r);
       spdlog::debug("roveri2015: delta {:.4f}: T {:.4g} -> {:.4g}, {} points (+{} -{}), {:.2f} s", r.delta,
                     r.energy_start, r.energy_end, r.points, r.added, r.removed, r.seconds);
     };
@@ -135,23 +129,20 @@ class Roveri2015Method : public SynthesisMethod {
     PointSet out = to_unit(st);
     if (crop) out = out.crop(shape.domain());
     if (ctx.stats) {
-      auto& j = *ctx.stats;
-      j["d_nn"] = d_nn;
-      j["sigma"] = sigma;
-      j["delta0"] = delta0;
-      j["quadrature_points"] = st.quad.size();
-      j["initial_points"] = init.size();
-      j["points"] = out.size();
+      stats.d_nn = d_nn;
+      stats.sigma = sigma;
+      stats.delta0 = delta0;
+      stats.quadrature_points = st.quad.size();
+      stats.initial_points = init.size();
+      stats.points = out.size();
       if (rect) {
-        j["target_points"] = shape.expected_points(exemplar);
-        j["output"] = shape.describe();
-        j["canvas"] = {canvas.x0, canvas.y0, canvas.x1, canvas.y1};
-        j["canvas_points"] = st.out.size();
+        stats.target_points = shape.expected_points(exemplar);
+        stats.rectangle = RectangleStats{shape.describe(), {canvas.x0, canvas.y0, canvas.x1, canvas.y1}, st.out.size()};
       } else {
-        j["target_points"] = size_t(u * u) * exemplar.size();
+        stats.target_points = static_cast<double>(size_t(u * u) * exemplar.size());
       }
-      j["scales"] = scales;
-      j["seconds"] = since(t_start);
+      stats.seconds = since(t_start);
+      *ctx.stats = to_json(stats);
     }
     return out;
   }
