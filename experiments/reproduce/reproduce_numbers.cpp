@@ -3,11 +3,14 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <stdexcept>
 
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/metrics/evaluation.hpp"
 #include "core/metrics/metric_values.hpp"
+#include "optim/baselines/pcf2017/pcf2017_stats.hpp"
+#include "optim/baselines/roveri2015/roveri2015_stats.hpp"
 #include "optim/run/run_store.hpp"
 
 namespace ppsynth {
@@ -83,7 +86,7 @@ void from_sweep(const ReproduceConfig& c, const ReproduceResult& r, ItemNumbers&
       if (kept(key)) n.per_seed[group][key][run.seed] = v;
     const RunOutcome o = load_run(run.dir);
     if (auto ov = overlap_pairs(o.metrics, "output")) n.per_seed[group]["all/overlap_pairs"][run.seed] = *ov;
-    n.per_seed[group]["run/iterations"][run.seed] = total_iterations(o.stages, o.stats);
+    n.per_seed[group]["run/iterations"][run.seed] = total_iterations(o);
     if (!n.exemplar.count(p->name)) add_exemplar(n, p->name, o.metrics);
     if (column == "ours" && !o.initialization.empty())
       add_metrics(n.per_seed[p->name + "/init"], run.seed, evaluate(o.exemplar, o.initialization, init_eval_options()),
@@ -131,19 +134,23 @@ void add_references(const ReproduceConfig& c, const ReproduceResult& r, ItemNumb
 
 }  // namespace
 
-int total_iterations(const std::vector<StageRecord>& stages, const json& stats) {
-  if (!stages.empty()) {
-    int n = 0;
-    for (const StageRecord& s : stages) n += s.iterations;
-    return n;
+int total_iterations(const RunOutcome& run) {
+  int n = 0;
+  for (const StageRecord& s : run.stages) n += s.iterations;
+  const std::string method = run.config.contains("method") ? run.config["method"].value("type", "") : "";
+  try {
+    if (method == "pcf2017") {
+      const pcf2017::Pcf2017Stats s = pcf2017::pcf2017_stats_from_json(run.stats);
+      if (s.descent) n += s.descent->iterations;
+      for (const pcf2017::Pcf2017Class& c : s.classes)
+        if (c.descent) n += c.descent->iterations;
+    } else if (method == "roveri2015") {
+      for (const roveri2015::ScaleReport& r : roveri2015::roveri2015_stats_from_json(run.stats).scales) n += r.merge_iterations;
+    }
+  } catch (const std::invalid_argument& e) {
+    throw InputError(run.dir + "/run.json: method_stats: " + e.what());
   }
-  if (!stats.is_object()) return 0;
-  if (stats.contains("scales") && stats["scales"].is_array()) {  // roveri2015: merging steps per scale
-    int n = 0;
-    for (auto& s : stats["scales"]) n += s.value("merge_iterations", 0);
-    return n;
-  }
-  return stats.value("iterations", 0);
+  return n;
 }
 
 ItemNumbers collect_item_numbers(const ReproduceConfig& c, const ReproduceResult& r) {

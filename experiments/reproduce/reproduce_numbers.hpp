@@ -6,13 +6,15 @@
 // columns (one seed). A panel's published output ("reference" file) is a group drawn once.
 #include "experiments/plan/reproduce_config.hpp"
 #include "experiments/report/reproduce_results.hpp"
+#include "optim/run/run_store.hpp"
 
 namespace ppsynth {
 
 ItemNumbers collect_item_numbers(const ReproduceConfig& config, const ReproduceResult& result);
 
-// Sum of the optimization iterations a method reported: over its stages (Gabor), else from its
-// stats (roveri2015: merging steps per scale; pcf2017: its iterations).
-int total_iterations(const std::vector<StageRecord>& stages, const nlohmann::json& stats);
+// Sum of the optimization iterations a run reported: over its stages (Gabor), else from its
+// method's typed stats (roveri2015: merging steps per scale; pcf2017: its descents' steps, every
+// class's on a rectangle). InputError naming its run.json for stats its method cannot read.
+int total_iterations(const RunOutcome& run);
 
 }  // namespace ppsynth

@@ -128,7 +128,7 @@ ColumnResult synthesize(const ReproduceConfig& c, const PanelSpec& p, const std:
   r.config = out.config;
   r.stages = out.stages;
   r.seconds = out.seconds;
-  r.iterations = total_iterations(out.stages, out.stats);
+  r.iterations = total_iterations(out);
   read_run_json(r, out.dir);
   if (pr.exemplar.empty()) pr.exemplar = out.exemplar;
   if (column == "ours") {

@@ -10,6 +10,8 @@
 #include "experiments/report/report_tables.hpp"
 #include "experiments/plan/reproduce_config.hpp"
 #include "experiments/reproduce/reproduce_runner.hpp"
+#include "optim/baselines/pcf2017/pcf2017_stats.hpp"
+#include "optim/baselines/roveri2015/roveri2015_stats.hpp"
 #include "optim/run/run_synthesis.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
@@ -323,9 +325,37 @@ TEST_CASE("report cells and config lookup", "[apps][reproduce]") {
   CHECK(format_cell(json(3)) == "3");
   CHECK(format_cell(json(nullptr)) == "n/a");
   CHECK(format_cell(json("0.66, 0.65")) == "0.66, 0.65");
-  CHECK(total_iterations({StageRecord{"a", 4}, StageRecord{"b", 3}}, json::object()) == 7);
-  CHECK(total_iterations({}, json{{"iterations", 30}}) == 30);
-  CHECK(total_iterations({}, json{{"scales", {{{"merge_iterations", 5}}, {{"merge_iterations", 2}}}}}) == 7);
   CHECK_THROWS_WITH(find_reproduce_config("fig99"), Catch::Contains("fig99") && Catch::Contains("fig05"));
   CHECK(fs::path(find_reproduce_config("fig05")).filename() == "fig05.json");
+}
+
+TEST_CASE("a run's iterations, from its stages or its method's typed stats", "[apps][reproduce][method_stats]") {
+  const auto run_of = [](const char* method, json stats) {
+    RunOutcome o;
+    o.dir = "runs/x";
+    o.config = {{"method", {{"type", method}}}};
+    o.stats = std::move(stats);
+    return o;
+  };
+  RunOutcome staged = run_of("gabor", json::object());
+  staged.stages = {StageRecord{"a", 4}, StageRecord{"b", 3}};
+  CHECK(total_iterations(staged) == 7);
+  pcf2017::Pcf2017Stats pcf;
+  pcf.descent = pcf2017::Pcf2017Descent{30, 2.0, 0.1, false, 0.2};
+  CHECK(total_iterations(run_of("pcf2017", to_json(pcf))) == 30);
+  // A rectangle: every class's descent (a class too small for a PCF has none).
+  pcf.descent.reset();
+  pcf.rectangle = RectangleStats{"3 x 1 exemplar units, clean border", {0, 0, 3, 1}, 50};
+  pcf.classes = {{0, {0, 0, 3, 1}, 40, pcf2017::Pcf2017Descent{30, 2.0, 0.1, false, 0.2}},
+                 {1, {0, 0, 3, 1}, 2, std::nullopt},
+                 {2, {0, 0, 3, 2}, 8, pcf2017::Pcf2017Descent{12, 1.0, 0.5, true, 0.4}}};
+  CHECK(total_iterations(run_of("pcf2017", to_json(pcf))) == 42);
+  roveri2015::Roveri2015Stats rov;
+  rov.scales = {{0.3, 2, 1, 78, 0, 0, 5, 0.5}, {0.2, 1, 0.5, 78, 0, 0, 2, 0.5}};
+  CHECK(total_iterations(run_of("roveri2015", to_json(rov))) == 7);
+  CHECK(total_iterations(run_of("tiled_copy", nullptr)) == 0);
+  json bad = to_json(rov);
+  bad["scales"][1]["merge_iterations"] = "two";
+  CHECK_THROWS_MATCHES(total_iterations(run_of("roveri2015", bad)), InputError,
+                       Catch::Matchers::Message("runs/x/run.json: method_stats: 'scales[1].merge_iterations' is not an integer"));
 }
