@@ -183,8 +183,8 @@ void GaborEngine::restore(const std::string& bytes) {
   // The time and phases of the processes before this one (0 in checkpoints without them).
   const json& ph = state_.phase_seconds;
   seconds_before_ = ph.value("wall", 0.0);
-  phases_ = GaborPhaseSeconds{ph.value("targets", 0.0), ph.value("maps_forward", 0.0), ph.value("net_forward", 0.0),
-                   ph.value("loss_forward", 0.0), ph.value("backward", 0.0), ph.value("optimizer_step", 0.0)};
+  phases_ = GaborPhaseSeconds{ph.value("targets", 0.0),      ph.value("maps_forward", 0.0), ph.value("net_forward", 0.0),
+                              ph.value("loss_forward", 0.0), ph.value("backward", 0.0),     ph.value("optimizer_step", 0.0)};
   std::istringstream rng(state_.rng);
   rng >> jitter_rng_;
   if (!rng) throw checkpoint_error(source, "an unreadable generator state");
