@@ -28,6 +28,7 @@
 #include "core/shell_quote.hpp"
 #include "optim/run/checkpoint_store.hpp"
 #include "models/device_capabilities.hpp"
+#include "optim/run/run_options_of.hpp"
 #include "optim/run/runtime.hpp"
 #include "experiments/execute/sweep_runs.hpp"
 
@@ -62,9 +63,9 @@ std::vector<std::string> task_environment(int threads, int card) {
 }
 
 // Whether a row's runtime.device is a CUDA device here, and whether it may be any card.
-void note_device(const SweepRow& row, bool cuda_here, LocalWork& work) {
-  const nlohmann::json rt = row.config.value("runtime", nlohmann::json::object());
-  const std::string device = rt.is_object() && rt.contains("device") && rt["device"].is_string() ? rt["device"].get<std::string>() : "cpu";
+// `source`: where the row's config was read, for its errors.
+void note_device(const SweepRow& row, const std::string& source, bool cuda_here, LocalWork& work) {
+  const std::string device = run_options_of(row.config, source).options.runtime.device.get<std::string>();  // checked there
   const bool cuda = device.rfind("cuda", 0) == 0 || (device == "auto" && cuda_here);
   if (!cuda) return;
   work.on_cuda = true;
@@ -188,7 +189,8 @@ ExecutionSummary execute_local(const std::string& sweep_dir, const LocalExecutio
       ++sum.skipped;
     } else {
       queue.push_back(i);
-      note_device(m.rows[i], !machine.card_memory_bytes.empty(), work);
+      note_device(m.rows[i], (fs::path(sweep_dir) / "manifest.json").string() + " rows[" + std::to_string(i) + "].config",
+                  !machine.card_memory_bytes.empty(), work);
     }
   }
   work.rows = queue.size();

@@ -17,6 +17,7 @@
 #include "core/run_directory.hpp"
 #include "core/run_json.hpp"
 #include "experiments/plan/sweep_plan.hpp"
+#include "optim/run/run_options_of.hpp"
 #include "optim/run/run_store.hpp"
 
 namespace fs = std::filesystem;
@@ -59,12 +60,13 @@ EvalOptions eval_options(const GatherOptions& g, const json& config, const Point
 }
 
 // What a run recorded of itself (seed, quick, processor): its run.json once it has finished,
-// else its directory's marker (written when it started; run_dir_marker checks its types).
+// else its config's seed and its directory's marker (written when it started; run_dir_marker
+// checks its types).
 RunRecord recorded(const std::string& dir, const nlohmann::json& config) {
   if (fs::exists(dir + "/run.json")) return read_run_record(dir + "/run.json");
   const nlohmann::json m = run_dir_marker(dir);
   RunRecord r;
-  r.seed = config["seed"].get<uint64_t>();
+  r.seed = run_options_of(config, dir + "/config.json").seed;
   if (m.is_object()) {
     r.quick = m.value("quick", false);
     r.processor = m.value("processor", std::string());
@@ -81,7 +83,7 @@ nlohmann::json run_group_key(const std::string& dir, const nlohmann::json& confi
 Found loose_run(const std::string& dir, bool finished) {
   const nlohmann::json config = read_run_config(dir + "/config.json");
   const nlohmann::json key = run_group_key(dir, config);
-  return {dir, json_id(key), run_name(config) + " (" + config["method"]["type"].get<std::string>() + ")", key, finished};
+  return {dir, json_id(key), run_name(config) + " (" + run_options_of(config, dir + "/config.json").method_type + ")", key, finished};
 }
 
 // Groups of one label but other settings (runs made outside a sweep with `--set upscale=3`;

@@ -13,6 +13,7 @@
 #include "core/atomic_file.hpp"
 #include "core/render/plot_points.hpp"
 #include "core/report/html_report.hpp"
+#include "optim/run/run_options_of.hpp"
 
 namespace fs = std::filesystem;
 
@@ -134,10 +135,11 @@ json add_panel_section(HtmlReport& rep, const ReproduceConfig& c, const Reproduc
     }
     if (col.run_dir.empty()) continue;  // init / reference: in the plots and tables above
     const std::string run = dir + "/" + col.run_dir;
+    const TypedRunOptions run_options = run_options_of(col.config, run + "/config.json");
     rep.add_heading(s.name + " / " + col.column, 3);
     rep.add_key_values({{"run directory", col.run_dir},
-                        {"method", col.config.contains("method") ? col.config["method"].value("type", "?") : "?"},
-                        {"seed", col.config.contains("seed") ? col.config["seed"].dump() : "-"},
+                        {"method", run_options.method_type},
+                        {"seed", std::to_string(run_options.seed)},
                         {"iterations (all stages)", std::to_string(col.iterations)},
                         {"synthesis wall time", seconds_text(col.synthesis_seconds)},
                         {"run wall time (with plots and metrics)", seconds_text(col.seconds)}});
@@ -213,7 +215,7 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
   std::set<std::string> seeds;
   for (auto& p : r.panels)
     for (auto& col : p.columns)
-      if (col.config.contains("seed")) seeds.insert(col.config["seed"].dump());
+      if (!col.run_dir.empty()) seeds.insert(std::to_string(run_options_of(col.config, dir + "/" + col.run_dir + "/config.json").seed));
   std::string seed_text;
   for (auto& s : seeds) seed_text += (seed_text.empty() ? "" : ", ") + s;
   std::time_t now = std::time(nullptr);

@@ -11,6 +11,7 @@
 #include "core/metrics/metric_values.hpp"
 #include "optim/baselines/pcf2017/pcf2017_stats.hpp"
 #include "optim/baselines/roveri2015/roveri2015_stats.hpp"
+#include "optim/run/run_options_of.hpp"
 #include "optim/run/run_store.hpp"
 
 namespace ppsynth {
@@ -94,14 +95,19 @@ void from_sweep(const ReproduceConfig& c, const ReproduceResult& r, ItemNumbers&
   }
 }
 
+// A synthesized column's seed: its run's.
+uint64_t column_seed(const ReproduceResult& r, const ColumnResult& col) {
+  return run_options_of(col.config, r.dir + "/" + col.run_dir + "/config.json").seed;
+}
+
 void from_panels(const ReproduceResult& r, ItemNumbers& n) {
   for (const PanelResult& pr : r.panels) {
-    uint64_t ours_seed = 0;
+    uint64_t ours_seed = 0;  // the initialization's: the one "ours" started from
     for (const ColumnResult& col : pr.columns)
-      if (col.column == "ours" && col.config.contains("seed")) ours_seed = col.config["seed"].get<uint64_t>();
+      if (col.column == "ours" && !col.run_dir.empty()) ours_seed = column_seed(r, col);
     for (const ColumnResult& col : pr.columns) {
       if (col.status != "ok" || col.column == "reference") continue;
-      const uint64_t seed = col.column == "init" ? ours_seed : col.config.value("seed", uint64_t{0});
+      const uint64_t seed = col.column == "init" ? ours_seed : column_seed(r, col);
       auto& group = n.per_seed[pr.name + "/" + col.column];
       add_metrics(group, seed, col.metrics, pr.name + "/" + col.column);
       if (!col.run_dir.empty()) {
@@ -137,7 +143,7 @@ void add_references(const ReproduceConfig& c, const ReproduceResult& r, ItemNumb
 int total_iterations(const RunOutcome& run) {
   int n = 0;
   for (const StageRecord& s : run.stages) n += s.iterations;
-  const std::string method = run.config.contains("method") ? run.config["method"].value("type", "") : "";
+  const std::string method = run_options_of(run.config, run.dir + "/config.json").method_type;
   try {
     if (method == "pcf2017") {
       const pcf2017::Pcf2017Stats s = pcf2017::pcf2017_stats_from_json(run.stats);

@@ -14,7 +14,8 @@ ItemNumbers collect_item_numbers(const ReproduceConfig& config, const ReproduceR
 
 // Sum of the optimization iterations a run reported: over its stages (Gabor), else from its
 // method's typed stats (roveri2015: merging steps per scale; pcf2017: its descents' steps, every
-// class's on a rectangle). InputError naming its run.json for stats its method cannot read.
+// class's on a rectangle). InputError naming its run.json for stats its method cannot read,
+// its config.json for a malformed method type (optim/run/run_options_of.hpp).
 int total_iterations(const RunOutcome& run);
 
 }  // namespace ppsynth

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <map>
 
 #include "experiments/report/report_writer.hpp"
@@ -25,6 +24,7 @@
 #include "core/log.hpp"
 #include "core/metrics/evaluation.hpp"
 #include "core/run_directory.hpp"
+#include "core/run_json.hpp"
 #include "core/render/plot_curves.hpp"
 #include "core/render/plot_points.hpp"
 
@@ -81,16 +81,6 @@ void plot_pcf_comparison(const std::string& path, const PanelResult& pr) {
   if (have_ex) plot_curves(path, cp, 640, 380);
 }
 
-void read_run_json(ColumnResult& c, const std::string& run_dir) {
-  std::ifstream in(run_dir + "/run.json");
-  if (!in) return;
-  try {
-    json r = json::parse(in);
-    c.synthesis_seconds = r.value("synthesis_seconds", 0.0);
-  } catch (...) {
-  }
-}
-
 ColumnResult synthesize(const ReproduceConfig& c, const PanelSpec& p, const std::string& column, const ReproduceOptions& o,
                         const std::string& generated_exemplar, const std::string& report_dir, PanelResult& pr,
                         PointSet& ours_init, std::string& ours_init_source) {
@@ -129,7 +119,7 @@ ColumnResult synthesize(const ReproduceConfig& c, const PanelSpec& p, const std:
   r.stages = out.stages;
   r.seconds = out.seconds;
   r.iterations = total_iterations(out);
-  read_run_json(r, out.dir);
+  r.synthesis_seconds = read_run_record(out.dir + "/run.json").synthesis_seconds;
   if (pr.exemplar.empty()) pr.exemplar = out.exemplar;
   if (column == "ours") {
     ours_init = out.initialization;

@@ -333,7 +333,7 @@ TEST_CASE("a run's iterations, from its stages or its method's typed stats", "[a
   const auto run_of = [](const char* method, json stats) {
     RunOutcome o;
     o.dir = "runs/x";
-    o.config = {{"method", {{"type", method}}}};
+    o.config = resolve_run_config(json{{"exemplar", "x.txt"}, {"method", {{"type", method}}}}, {});
     o.stats = std::move(stats);
     return o;
   };

@@ -26,10 +26,10 @@
 #include "apps/ppsynth/output_files.hpp"
 #include "optim/run/checkpoint_store.hpp"
 #include "optim/run/run_config.hpp"
+#include "optim/run/run_options_of.hpp"
 #include "core/memory_budget.hpp"
 #include "core/atomic_file.hpp"
 #include "core/config/config.hpp"
-#include "core/config/params.hpp"
 #include "core/processor.hpp"
 #include "models/gabor_feature_maps.hpp"
 #include "models/per_point_sum.hpp"
@@ -103,6 +103,7 @@ struct Opts {
 // end; per-sigma grids make the coarser ones cheaper), on the config's device.
 struct Subject {
   json r;                      // the resolved run config
+  TypedRunOptions run;         // r read through its table
   torch::Device device = torch::kCPU;
   PointSet ex, start;
   GaborSettings s;
@@ -121,18 +122,19 @@ Subject make_subject(const Opts& o) {
   if (!o.device.empty()) c["runtime"]["device"] = o.device;
   Subject b;
   b.r = resolve_run_config(c, o.sets);
+  b.run = run_options_of(b.r, o.config.empty() ? "bench's config" : o.config);
   // Before any work (the initializer alone can take a minute): the figures' file must be
   // writable, and neither the config nor the exemplar. An earlier --json is replaced.
   if (!o.json_out.empty()) {
-    app::check_output_files({{"--json", o.json_out}}, {{"config", o.config}, {"exemplar", b.r["exemplar"].get<std::string>()}}, /*force=*/true);
+    app::check_output_files({{"--json", o.json_out}}, {{"config", o.config}, {"exemplar", b.run.options.exemplar}}, /*force=*/true);
     check_writable(o.json_out);
   }
-  if (b.r["method"]["type"] != "gabor") throw InputError("bench: only the gabor method is benchmarked");
-  b.device = torch::Device(apply_device_settings(RuntimeOptions::params().read(b.r["runtime"])).device);
-  const json& p = b.r["method"];
+  if (b.run.method_type != "gabor") throw InputError("bench: only the gabor method is benchmarked");
+  b.device = torch::Device(apply_device_settings(b.run.options.runtime).device);
+  const json& p = b.run.options.method;
   b.ex = load_exemplar(b.r);
-  b.u = b.r["upscale"];
-  const uint64_t seed = b.r["seed"];
+  b.u = b.run.options.upscale;
+  const uint64_t seed = b.run.seed;
   b.t0 = Clock::now();
   OutputShape shape;  // the paper's u x u output: the bench times its iteration
   shape.upscale = b.u;
@@ -334,13 +336,13 @@ Floor convolution_floor(const Subject& b, int map_channels, int reps) {
 
 // Prints the figures and returns them as the --json document.
 json report(const Subject& b, const SetupTimes& setup, const PhaseTimes& it, const RunIterationTimes& run, const Floor& floor) {
-  json out = {{"exemplar", b.r["exemplar"]}, {"device", b.device.str()}, {"points", b.ex.size()}, {"output_points", b.start.size()},
+  json out = {{"exemplar", b.run.options.exemplar}, {"device", b.device.str()}, {"points", b.ex.size()}, {"output_points", b.start.size()},
               {"grid", b.s.sigma_res[b.bench_sigma]}, {"output_grid", b.R}, {"k", b.s.k}, {"threads", at::get_num_threads()}};
   const MachineReport machine = machine_report(0, 0);  // the floors are this config's, below
   std::printf("%s\n", machine.text().c_str());
   out["machine"] = machine.to_json();
   std::printf("ppsynth bench: %s  (%zu -> %zu points, grid %d -> %d, k %d, %d threads, %s)\n",
-              b.r["exemplar"].get<std::string>().c_str(), b.ex.size(), b.start.size(), b.s.sigma_res[b.bench_sigma], b.R, b.s.k,
+              b.run.options.exemplar.c_str(), b.ex.size(), b.start.size(), b.s.sigma_res[b.bench_sigma], b.R, b.s.k,
               at::get_num_threads(), b.device.str().c_str());
   std::printf("%-42s %10s %10s\n", "phase", "min [s]", "median [s]");
   json jp = json::array();
@@ -416,7 +418,7 @@ app::RunFn setup(CLI::App& app) {
   return [o]() {
     configure_runtime();  // threads, allocator, the Gabor maps' path, as a synthesis has them
     Subject b = make_subject(*o);
-    std::mt19937_64 rng(b.r["seed"].get<uint64_t>());
+    std::mt19937_64 rng(b.run.seed);
     const SetupTimes setup = time_setup(b, o->skip_setup);
     const PhaseTimes iteration = time_phases(b, o->reps, rng);
     const RunIterationTimes run = time_run_iterations(b, o->reps);
