@@ -13,7 +13,9 @@
 #
 # Runs land in OUT/runs/<exemplar>_<preset>_<shape>_<copies>; a finished one is read again,
 # not rerun, so an interrupted benchmark resumes where it stopped. The table goes to stdout
-# and OUT/scaling.tsv. PPSYNTH_THREADS sets the threads (default 2).
+# and OUT/scaling.tsv. PPSYNTH_THREADS sets the threads (default 2); PPSYNTH_PYTHON the python3
+# that sizes the outputs and prints the table (default Debian's /usr/bin/python3; a GPU
+# machine of the device tool has only its torch venv's python3).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 usage='usage: scripts/bench_scaling.sh OUT [--copies "4 16 64 256 1024"] [--shapes "square wide"] [--presets "fast default"] [--exemplars "lines poisson_n64c2_point"] [--iterations N] [-- SYNTHESIZE ARGS...]'
@@ -50,11 +52,15 @@ done
 bin="${PPSYNTH_BIN:-$here/build/ppsynth}"
 [ -x "$bin" ] || { echo "bench_scaling: $bin not built (run scripts/setup.sh)" >&2; exit 1; }
 export PPSYNTH_THREADS=${PPSYNTH_THREADS:-2}
+python=${PPSYNTH_PYTHON:-/usr/bin/python3}
+# GNU time's line in each run's log where it is installed (run.json has the times either way).
+timer=()
+[ -x /usr/bin/time ] && timer=(/usr/bin/time -f "%e s wall, %M KiB peak")
 mkdir -p "$out/runs"
 
 # The output's sides in exemplar sides: `copies` exemplar areas, square or twice as wide as high.
 sides() {
-  /usr/bin/python3 -c 'import math, sys; n = float(sys.argv[1])
+  "$python" -c 'import math, sys; n = float(sys.argv[1])
 print("%.6g %.6g" % ((math.sqrt(n), math.sqrt(n)) if sys.argv[2] == "square" else (math.sqrt(2 * n), math.sqrt(n / 2))))' "$1" "$2"
 }
 
@@ -69,7 +75,7 @@ for ex in $exemplars; do
         preset_arg=()
         [ "$preset" != default ] && preset_arg=(--preset "$preset")
         echo "== $ex, $preset, $shape, $c copies ($w x $h exemplar sides)" >&2
-        /usr/bin/time -f "%e s wall, %M KiB peak" "$bin" synthesize "$config" "${preset_arg[@]}" --size "$w" "$h" \
+        "${timer[@]}" "$bin" synthesize "$config" "${preset_arg[@]}" --size "$w" "$h" \
           --set method.max_iterations="$iterations" --set evaluate=false --set snapshots=false \
           --out "$run" -q "${extra[@]}" 2> "$out/runs/${ex}_${preset}_${shape}_${c}.log" >&2 ||
           { echo "bench_scaling: the run failed; see $out/runs/${ex}_${preset}_${shape}_${c}.log" >&2; exit 1; }
@@ -78,7 +84,7 @@ for ex in $exemplars; do
   done
 done
 
-/usr/bin/python3 - "$out" <<'EOF'
+"$python" - "$out" <<'EOF'
 import csv, json, os, sys
 out = sys.argv[1]
 runs = sorted(d for d in os.listdir(os.path.join(out, "runs")) if os.path.isfile(os.path.join(out, "runs", d, "run.json")))

@@ -4,7 +4,8 @@
 #   .deps/debs/    the header-only Debian packages ppsynth builds with, as .deb files
 #                  (apt-get download: nanoflann, nlohmann-json, CLI11, Catch2, spdlog, fmt)
 #   .deps/root/    their headers, unpacked (usr/include): cmake -DPPSYNTH_DEPS_DIR=$PWD/.deps/root
-#   .deps/shared/  the exemplars scripts/gpu_check.sh synthesizes (PPSYNTH_SHARED there)
+#   .deps/shared/  the exemplars scripts/gpu_check.sh and scripts/bench_scaling.sh synthesize
+#                  (PPSYNTH_SHARED there)
 #   .deps/real_data/amacrine.txt  spatstat's amacrine, scripts/gpu_check.sh's --preset fast
 #                  target, when not there already: copied from CARRY_REAL_DATA/amacrine.txt
 #                  when set, else exported by scripts/spatstat_export.R (R with spatstat)
@@ -17,7 +18,7 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="$here/.deps"
 shared="${PPSYNTH_SHARED:-$here/../shared}"
 packages=(libnanoflann-dev nlohmann-json3-dev libcli11-dev catch2 libspdlog-dev libfmt-dev)
-exemplars=(data/exemplars/gabor-paper/lines.txt)
+exemplars=(data/exemplars/gabor-paper/lines.txt data/exemplars/gabor-paper/poisson_n64c2_point.txt)
 
 # Its own folders only, rebuilt from scratch: .deps/real_data (docs/lab/verdict/gpu_real_data.sh's
 # exemplars and runs) is the user's and stays.

@@ -5,7 +5,9 @@
 #   gpu_python             the python3 that imports torch (its LibTorch is what we build with)
 #   gpu_describe DEVICE    lines on the machine: cores, compilers, torch, the GPU (fails on cuda
 #                          without nvidia-smi)
-#   gpu_build OUT BUILD    configure and build ppsynth and ppsynth_tests in BUILD against the
+#   gpu_build OUT BUILD [TARGET...]
+#                          configure and build the targets (default: ppsynth and ppsynth_tests;
+#                          ppsynth alone saves about a minute) in BUILD against the
 #                          wheel's LibTorch, with the headers carried in .deps/root
 #                          (scripts/carry_deps.sh) and without cairo; OUT/configure.log and
 #                          OUT/build.log; prints ppsynth's configure lines; non-zero on failure
@@ -37,6 +39,9 @@ gpu_describe() {
 
 gpu_build() {
   local out=$1 build=$2 py torch_prefix
+  shift 2
+  local targets=("$@")
+  [ ${#targets[@]} -gt 0 ] || targets=(ppsynth ppsynth_tests)
   py="$(gpu_python)" || return 1
   [ -f "$gpu_here/.deps/root/usr/include/nanoflann.hpp" ] ||
     { echo "no .deps/root: run scripts/carry_deps.sh on a Debian machine and carry .deps" >&2; return 1; }
@@ -52,8 +57,8 @@ gpu_build() {
     -DPPSYNTH_DEPS_DIR="$gpu_here/.deps/root" -DPPSYNTH_WITH_CAIRO=OFF -DPPSYNTH_PYTHON=OFF "${cuda_flags[@]}" \
     > "$out/configure.log" 2>&1 || { tail -n 40 "$out/configure.log"; echo "configure failed (configure.log)" >&2; return 1; }
   grep "ppsynth:" "$out/configure.log"
-  echo "build: ppsynth, ppsynth_tests ($(nproc) jobs)"
-  cmake --build "$build" -j "$(nproc)" --target ppsynth ppsynth_tests > "$out/build.log" 2>&1 ||
+  echo "build: ${targets[*]} ($(nproc) jobs)"
+  cmake --build "$build" -j "$(nproc)" --target "${targets[@]}" > "$out/build.log" 2>&1 ||
     { grep -m 20 -A 5 "error" "$out/build.log"; tail -n 20 "$out/build.log"; echo "build failed (build.log)" >&2; return 1; }
   echo "built"
 }

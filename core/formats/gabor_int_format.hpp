@@ -37,7 +37,8 @@ PointSet parse_gabor_int(const std::string& text, const std::string& source, con
 // Prints `ps` in the Gabor format. Positions are first mapped onto the unit square if the
 // domain is another rectangle, then rounded to 1e-4 (lossy for arbitrary doubles).
 // Labels: the PointSet's class labels when they are K distinct positive integers, else
-// 1000*(k+1). The header is written when K > 1.
+// 1000*(k+1). The header is written when K > 1, and for one class whose label equals the row's
+// field count - 1 (a row "2 X Y" would otherwise read back as the header "2 classes: X, Y").
 std::string print_gabor_int(const PointSet& ps);
 
 // True when every line of `text` has the Gabor shape: integer fields only, an optional

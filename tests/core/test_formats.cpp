@@ -122,6 +122,25 @@ TEST_CASE("gabor integer round trip keeps labels and 1e-4 values", "[formats]") 
   CHECK(read_points(t.path("nolabel.txt")).class_label(0) == 1000);
 }
 
+TEST_CASE("gabor writer keeps a single class whose rows have the header's shape", "[formats]") {
+  // Found by fuzz_gabor_int: "1 2\n2 5 5\n" was written back as "2 5 5", which reads as the
+  // header "2 classes: 5, 5". The same holds for label 3 with one attribute column.
+  const PointSet two = parse_points("1 2\n2 5 5\n", "fuzz.txt", ReadOptions{Format::GaborInt});
+  const std::string text = format_points(two, Format::GaborInt);
+  CHECK(text == "1 2\n2 5 5\n");
+  require_equal(two, parse_points(text, "back.txt", ReadOptions{Format::GaborInt}));
+  PointSet three;
+  three.set_class_labels({3});
+  three.add_attribute("attr0");
+  three.add({0.25, 0.5}, 0, {0.5});
+  ReadOptions ro{Format::GaborInt};
+  ro.attribute_names = {"attr0"};
+  require_equal(three, parse_points(format_points(three, Format::GaborInt), "back3.txt", ro));
+  // Labels that cannot look like a header still get no header line.
+  three.set_class_labels({1000});
+  CHECK(format_points(three, Format::GaborInt).rfind("1000 2500", 0) == 0);
+}
+
 TEST_CASE("point-synthesis round trip and axis scaling", "[formats]") {
   TempDir t;
   PointSet ps;
