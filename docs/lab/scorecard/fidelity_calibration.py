@@ -29,7 +29,6 @@ and distance, of patterns with any row out of band, and flagged a copy, with exa
     distance pooled (how the default band was chosen), then the rates over the draws after D
     only (held out).
 """
-import math
 import os
 import subprocess
 import sys
@@ -37,6 +36,16 @@ import sys
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
 sys.path.insert(0, os.environ.get("PPSYNTH_PYTHON", os.path.join(ROOT, "build", "python")))  # PPSYNTH_PYTHON: a copy of the module
 import ppsynth  # noqa: E402
+import numpy as np  # noqa: E402
+from scipy.stats import binomtest  # noqa: E402
+
+
+def clopper_pearson(k, n):
+    """Exact (Clopper-Pearson) 95 % interval of a binomial rate k / n; (0, 1) when n is 0."""
+    if n == 0:
+        return 0.0, 1.0
+    ci = binomtest(k, n).proportion_ci(confidence_level=0.95, method="exact")
+    return ci.low, ci.high
 
 SPATSTAT = ["strauss", "hardcore", "matern", "thomas", "lgcp", "multitype"]
 KINDS = ("same", "csr", "ssi", "tiled")
@@ -71,28 +80,6 @@ def score(exemplar, output, zoom):
             lines.append((name, "-", None, None, row.get("within"), clustering))
     return lines, sc["novelty"].get("share"), sc["novelty"].get("copy")
 
-
-def clopper_pearson(k, n):
-    """Exact 95 % interval of a binomial rate k / n (bisection on the binomial tails, in logs)."""
-    def pmf(i, p):
-        if p <= 0 or p >= 1:
-            return float(i == (0 if p <= 0 else n))
-        return math.exp(math.lgamma(n + 1) - math.lgamma(i + 1) - math.lgamma(n - i + 1) + i * math.log(p) +
-                        (n - i) * math.log1p(-p))
-
-    def solve(f, target, rising):
-        lo, hi = 0.0, 1.0
-        for _ in range(60):
-            mid = (lo + hi) / 2
-            if (f(mid) < target) == rising:
-                lo = mid
-            else:
-                hi = mid
-        return (lo + hi) / 2
-
-    lower = 0.0 if k == 0 else solve(lambda p: sum(pmf(i, p) for i in range(k, n + 1)), 0.025, True)
-    upper = 1.0 if k == n else solve(lambda p: sum(pmf(i, p) for i in range(0, k + 1)), 0.025, False)
-    return lower, upper
 
 
 def rate(k, n):
@@ -152,12 +139,6 @@ def summarize(records):
         print("  %-6s %-8s out of band / flagged: %s" % (kind, what, rate(k, n)))
 
 
-def quantile(v, q):
-    v = sorted(v)
-    h = (len(v) - 1) * q
-    lo = math.floor(h)
-    return v[lo] + (h - lo) * (v[min(lo + 1, len(v) - 1)] - v[lo])
-
 
 def rejudge(records):
     """BAND and CHOOSE applied to the records (see the docstring)."""
@@ -172,8 +153,8 @@ def rejudge(records):
         d = int(choose)
         same = [r[5] / r[10] ** exponent for r in records if r[1] == "same" and r[2] <= d and r[5] is not None]
         print("independent realizations' spreads / clustering^%g over draws up to %d: %d values, 95th percentile %.3f, "
-              "90th %.3f, 99th %.3f\n" % (exponent, d, len(same), quantile(same, 0.95), quantile(same, 0.9),
-                                         quantile(same, 0.99)))
+              "90th %.3f, 99th %.3f\n" % (exponent, d, len(same), np.quantile(same, 0.95), np.quantile(same, 0.9),
+                                         np.quantile(same, 0.99)))
         records = [r for r in records if r[2] > d]
     return records
 

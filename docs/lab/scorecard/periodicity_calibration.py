@@ -30,7 +30,6 @@ copies: minimum), and the false-alarm rate at the default threshold and at lower
 every kind that is not a copy, with exact (Clopper-Pearson) 95 % intervals; --summary prints
 the same of tables written before, pooled.
 """
-import math
 import os
 import subprocess
 import sys
@@ -38,6 +37,16 @@ import sys
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "build", "python"))
 import ppsynth  # noqa: E402
+import numpy as np  # noqa: E402
+from scipy.stats import binomtest  # noqa: E402
+
+
+def clopper_pearson(k, n):
+    """Exact (Clopper-Pearson) 95 % interval of a binomial rate k / n; (0, 1) when n is 0."""
+    if n == 0:
+        return 0.0, 1.0
+    ci = binomtest(k, n).proportion_ci(confidence_level=0.95, method="exact")
+    return ci.low, ci.high
 
 SPATSTAT = ["strauss", "hardcore", "matern", "thomas", "lgcp", "multitype"]
 # name: (generator, exemplar points, generator parameters)
@@ -76,34 +85,6 @@ def cases(dirpath, process, draw, tiled):
     return out
 
 
-def clopper_pearson(k, n):
-    """Exact 95 % interval of a binomial rate k / n (bisection on the binomial tails, in logs)."""
-    def pmf(i, p):
-        if p <= 0 or p >= 1:
-            return float(i == (0 if p <= 0 else n))
-        return math.exp(math.lgamma(n + 1) - math.lgamma(i + 1) - math.lgamma(n - i + 1) + i * math.log(p) +
-                        (n - i) * math.log1p(-p))
-
-    def solve(f, target, rising):
-        lo, hi = 0.0, 1.0
-        for _ in range(60):
-            mid = (lo + hi) / 2
-            if (f(mid) < target) == rising:
-                lo = mid
-            else:
-                hi = mid
-        return (lo + hi) / 2
-
-    lower = 0.0 if k == 0 else solve(lambda p: sum(pmf(i, p) for i in range(k, n + 1)), 0.025, True)
-    upper = 1.0 if k == n else solve(lambda p: sum(pmf(i, p) for i in range(0, k + 1)), 0.025, False)
-    return lower, upper
-
-
-def quantile(v, q):
-    v = sorted(v)
-    h = (len(v) - 1) * q
-    lo = math.floor(h)
-    return v[lo] + (h - lo) * (v[min(lo + 1, len(v) - 1)] - v[lo])
 
 
 def summarize(summary):
@@ -114,8 +95,8 @@ def summarize(summary):
         ratios = [r for r, _ in rows]
         flagged = sum(bool(p) for _, p in rows)
         extreme = min(ratios) if kind in COPIES else max(ratios)
-        print("| %s | %s | %d | %d | %.3g | %.3g | %.3g |" % (process, kind, len(rows), flagged, quantile(ratios, 0.5),
-                                                        quantile(ratios, 0.99), extreme))
+        print("| %s | %s | %d | %d | %.3g | %.3g | %.3g |" % (process, kind, len(rows), flagged, np.quantile(ratios, 0.5),
+                                                        np.quantile(ratios, 0.99), extreme))
         if kind not in COPIES:
             nulls += ratios
     if nulls:
