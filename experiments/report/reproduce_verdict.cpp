@@ -136,16 +136,32 @@ CheckResult judge_better(const RuleCheck& k, const ItemNumbers& n) {
   return r;
 }
 
+// The check's group series and the value `spec` names (target_value: a number, the exemplar's
+// value or another group's median), as judge_target and judge_threshold compare them; r reads
+// "no data" when either is missing.
+struct Compared {
+  Series g;
+  std::optional<double> t;
+  std::string text;  // how the value reads in the numbers
+};
+std::optional<Compared> compared(const RuleCheck& k, const ItemNumbers& n, const json& spec, CheckResult& r) {
+  Compared c{series(n, k.group, k.metric), std::nullopt, ""};
+  c.t = target_value(n, spec, k.group, k.metric, c.text);
+  if (c.g.empty() || !c.t) {
+    r.state = "no data";
+    r.numbers = "no numbers for " + (c.g.empty() ? k.group : c.text);
+    return std::nullopt;
+  }
+  return c;
+}
+
 CheckResult judge_target(const RuleCheck& k, const ItemNumbers& n) {
   CheckResult r{describe_check(k), "fail", ""};
-  const Series g = series(n, k.group, k.metric);
-  std::string text;
-  const auto t = target_value(n, k.target, k.group, k.metric, text);
-  if (g.empty() || !t) {
-    r.state = "no data";
-    r.numbers = "no numbers for " + (g.empty() ? k.group : text);
-    return r;
-  }
+  const auto c = compared(k, n, k.target, r);
+  if (!c) return r;
+  const Series& g = c->g;
+  const std::optional<double>& t = c->t;
+  const std::string& text = c->text;
   const double m = g.median();
   const std::string seeds = g.fixed ? "" : " (" + std::to_string(g.by_seed.size()) + " seeds)";
   char b[64];
@@ -164,14 +180,11 @@ CheckResult judge_target(const RuleCheck& k, const ItemNumbers& n) {
 
 CheckResult judge_threshold(const RuleCheck& k, const ItemNumbers& n) {
   CheckResult r{describe_check(k), "fail", ""};
-  const Series g = series(n, k.group, k.metric);
-  std::string text;
-  const auto t = target_value(n, k.value, k.group, k.metric, text);
-  if (g.empty() || !t) {
-    r.state = "no data";
-    r.numbers = "no numbers for " + (g.empty() ? k.group : text);
-    return r;
-  }
+  const auto c = compared(k, n, k.value, r);
+  if (!c) return r;
+  const Series& g = c->g;
+  const std::optional<double>& t = c->t;
+  const std::string& text = c->text;
   auto meets = [&](double v) {
     return k.op == "<" ? v < *t : k.op == "<=" ? v <= *t : k.op == ">" ? v > *t : v >= *t;
   };
