@@ -1,0 +1,75 @@
+// method.revisit (optim/gabor/stages/revisit/revisit_stage.hpp): after every class's sigma
+// stages, one stage per class where that class moves again beside all the others. Off by
+// default (the paper's plan); on a one-class exemplar its stage moves nothing.
+#include <catch2/catch.hpp>
+
+#include "optim/gabor/stages/revisit/revisit_stage.hpp"
+#include "optim/method/method.hpp"
+#include "tests/support/gabor_runs.hpp"
+#include "tests/support/same_bits.hpp"
+#include "tests/support/small_exemplar.hpp"
+
+using namespace ppsynth;
+
+namespace {
+
+json revisit_method(const json& revisit) {
+  return {{"type", "gabor"},
+          {"border_relax", {{"iterations", 0}}},
+          {"revisit", revisit},
+          {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 3}, {"num_sigmas", 2}}}};
+}
+
+// The positions of class `k` in `ps`, in order.
+std::vector<Vec2> class_points(const PointSet& ps, int k) {
+  std::vector<Vec2> v;
+  for (size_t i = 0; i < ps.size(); ++i)
+    if (ps.cls(i) == k) v.push_back(ps[i]);
+  return v;
+}
+
+bool same_positions(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i].x != b[i].x || a[i].y != b[i].y) return false;
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("revisit: after every class's sigma stages, each class moves again beside the others", "[optim][stage_kinds][revisit]") {
+  const PointSet ex = test::small_exemplar(2, false);
+  const auto off = test::checkpointed_run(revisit_method(json::object()), ex, 7);
+  const auto on = test::checkpointed_run(revisit_method({{"iterations", 3}}), ex, 7);
+  // Off (the default): the paper's plan, 2 classes x 2 sigmas.
+  REQUIRE(off.report.stages.size() == 4);
+  // On: the same four stages, then one revisit per class, in the class order.
+  REQUIRE(on.report.stages.size() == 6);
+  for (size_t i = 0; i < 4; ++i) CHECK(on.report.stages[i].stage == off.report.stages[i].stage);
+  CHECK(on.report.stages[4].stage == "class 1/2 (id 0), revisit");
+  CHECK(on.report.stages[5].stage == "class 2/2 (id 1), revisit");
+  for (size_t i = 4; i < 6; ++i) {
+    CHECK(on.report.stages[i].iterations >= 1);
+    CHECK(on.report.stages[i].iterations <= 3);
+  }
+  // The revisit moves class 0 after class 1 was placed: class 0 is no longer where its own
+  // stages left it (the run without revisit ends there).
+  CHECK_FALSE(same_positions(class_points(on.output, 0), class_points(off.output, 0)));
+}
+
+TEST_CASE("revisit moves nothing on a one-class exemplar", "[optim][stage_kinds][revisit]") {
+  const PointSet ex = test::small_exemplar(1, false);
+  const auto off = test::checkpointed_run(revisit_method(json::object()), ex, 7);
+  const auto on = test::checkpointed_run(revisit_method({{"iterations", 3}}), ex, 7);
+  REQUIRE(on.report.stages.size() == off.report.stages.size() + 1);
+  CHECK(on.report.stages.back().stage == "revisit");
+  CHECK(test::same_bits(on.output, off.output));
+}
+
+TEST_CASE("revisit's options are checked where it declares them", "[optim][stage_kinds][revisit]") {
+  CHECK(MethodRegistry::instance().entry("gabor").defaults["revisit"] == RevisitOptions::params().defaults());
+  CHECK(RevisitOptions::params().defaults()["iterations"] == 0);
+  CHECK_THROWS_WITH(test::method_params(revisit_method({{"iterations", -1}})), Catch::Contains("method.revisit.iterations"));
+  CHECK_THROWS_WITH(test::method_params(revisit_method({{"lr", 0}})), Catch::Contains("method.revisit.lr"));
+  CHECK_THROWS_WITH(test::method_params(revisit_method({{"rounds", 2}})), Catch::Contains("method.revisit.rounds"));
+}
