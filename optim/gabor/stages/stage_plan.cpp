@@ -61,6 +61,9 @@ SynthesisPlan class_sigma_plan(const PointSet& exemplar, const GaborSettings& s,
       }
     }
   }
+  // Kind by kind (their groups), each over the classes in order: every class's relax ends
+  // before any class is revisited.
+  std::stable_sort(after_all.begin(), after_all.end(), [](const Stage& a, const Stage& b) { return a.group < b.group; });
   plan.insert(plan.end(), after_all.begin(), after_all.end());
   return plan;
 }

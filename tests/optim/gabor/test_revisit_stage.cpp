@@ -57,6 +57,18 @@ TEST_CASE("revisit: after every class's sigma stages, each class moves again bes
   CHECK_FALSE(same_positions(class_points(on.output, 0), class_points(off.output, 0)));
 }
 
+TEST_CASE("revisit stages follow every class's border relax", "[optim][stage_kinds][revisit]") {
+  const PointSet ex = test::small_exemplar(2, false);
+  json method = revisit_method({{"iterations", 2}});
+  method["border_relax"] = {{"iterations", 2}, {"parked", 0}};
+  const auto run = test::checkpointed_run(method, ex, 7);
+  REQUIRE(run.report.stages.size() == 8);
+  CHECK(run.report.stages[4].stage == "class 1/2 (id 0), border relax");
+  CHECK(run.report.stages[5].stage == "class 2/2 (id 1), border relax");
+  CHECK(run.report.stages[6].stage == "class 1/2 (id 0), revisit");
+  CHECK(run.report.stages[7].stage == "class 2/2 (id 1), revisit");
+}
+
 TEST_CASE("revisit moves nothing on a one-class exemplar", "[optim][stage_kinds][revisit]") {
   const PointSet ex = test::small_exemplar(1, false);
   const auto off = test::checkpointed_run(revisit_method(json::object()), ex, 7);
