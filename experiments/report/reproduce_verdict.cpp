@@ -141,17 +141,18 @@ CheckResult judge_better(const RuleCheck& k, const ItemNumbers& n) {
 // "no data" when either is missing.
 struct Compared {
   Series g;
-  std::optional<double> t;
+  double t = 0;
   std::string text;  // how the value reads in the numbers
 };
 std::optional<Compared> compared(const RuleCheck& k, const ItemNumbers& n, const json& spec, CheckResult& r) {
-  Compared c{series(n, k.group, k.metric), std::nullopt, ""};
-  c.t = target_value(n, spec, k.group, k.metric, c.text);
-  if (c.g.empty() || !c.t) {
+  Compared c{series(n, k.group, k.metric), 0, ""};
+  const std::optional<double> t = target_value(n, spec, k.group, k.metric, c.text);
+  if (c.g.empty() || !t) {
     r.state = "no data";
     r.numbers = "no numbers for " + (c.g.empty() ? k.group : c.text);
     return std::nullopt;
   }
+  c.t = *t;
   return c;
 }
 
@@ -159,21 +160,18 @@ CheckResult judge_target(const RuleCheck& k, const ItemNumbers& n) {
   CheckResult r{describe_check(k), "fail", ""};
   const auto c = compared(k, n, k.target, r);
   if (!c) return r;
-  const Series& g = c->g;
-  const std::optional<double>& t = c->t;
-  const std::string& text = c->text;
-  const double m = g.median();
-  const std::string seeds = g.fixed ? "" : " (" + std::to_string(g.by_seed.size()) + " seeds)";
+  const double m = c->g.median(), t = c->t;
+  const std::string seeds = c->g.fixed ? "" : " (" + std::to_string(c->g.by_seed.size()) + " seeds)";
   char b[64];
   if (k.type == "within") {
-    const double off = std::fabs(m - *t), allowed = k.tolerance * std::fabs(*t);
-    std::snprintf(b, sizeof b, "%.1f %%", *t != 0 ? 100 * off / std::fabs(*t) : (off == 0 ? 0.0 : INFINITY));
+    const double off = std::fabs(m - t), allowed = k.tolerance * std::fabs(t);
+    std::snprintf(b, sizeof b, "%.1f %%", t != 0 ? 100 * off / std::fabs(t) : (off == 0 ? 0.0 : INFINITY));
     r.state = off <= allowed ? "pass" : "fail";
-    r.numbers = k.group + " median " + num(m) + seeds + " against " + text + ": off by " + b;
+    r.numbers = k.group + " median " + num(m) + seeds + " against " + c->text + ": off by " + b;
   } else {
-    const double bound = k.higher_is_better ? (1 - k.tolerance) * *t : (1 + k.tolerance) * *t;
+    const double bound = k.higher_is_better ? (1 - k.tolerance) * t : (1 + k.tolerance) * t;
     r.state = (k.higher_is_better ? m >= bound : m <= bound) ? "pass" : "fail";
-    r.numbers = k.group + " median " + num(m) + seeds + " against " + text + (k.higher_is_better ? ", bound >= " : ", bound <= ") + num(bound);
+    r.numbers = k.group + " median " + num(m) + seeds + " against " + c->text + (k.higher_is_better ? ", bound >= " : ", bound <= ") + num(bound);
   }
   return r;
 }
@@ -183,16 +181,15 @@ CheckResult judge_threshold(const RuleCheck& k, const ItemNumbers& n) {
   const auto c = compared(k, n, k.value, r);
   if (!c) return r;
   const Series& g = c->g;
-  const std::optional<double>& t = c->t;
-  const std::string& text = c->text;
+  const double t = c->t;
   auto meets = [&](double v) {
-    return k.op == "<" ? v < *t : k.op == "<=" ? v <= *t : k.op == ">" ? v > *t : v >= *t;
+    return k.op == "<" ? v < t : k.op == "<=" ? v <= t : k.op == ">" ? v > t : v >= t;
   };
   size_t met = 0, total = 0;
   if (g.fixed) total = 1, met = meets(*g.fixed);
   for (auto& [seed, v] : g.by_seed) ++total, met += meets(v);
   r.state = met >= needed(k.min_share, total) ? "pass" : "fail";
-  r.numbers = k.group + " median " + num(g.median()) + "; " + std::to_string(met) + "/" + std::to_string(total) + " seeds " + k.op + " " + text;
+  r.numbers = k.group + " median " + num(g.median()) + "; " + std::to_string(met) + "/" + std::to_string(total) + " seeds " + k.op + " " + c->text;
   return r;
 }
 
