@@ -132,10 +132,11 @@ std::string print_gabor_int(const PointSet& ps_in) {
 
   auto to_int = [](double v) { return std::llround(v * kGaborIntScale); };
   std::ostringstream out;
-  // A single-class file has no header, unless its rows would read as one: a row "L X Y ATTR..."
-  // with L == its field count - 1 has the header's shape (label 2 with no attribute, 3 with one).
-  const bool row_looks_like_header = static_cast<long long>(labels[0]) == 2 + static_cast<long long>(ps.num_attributes());
-  if (K > 1 || row_looks_like_header) {
+  // A single-class file has no header, unless its rows would read as one (is_header, the
+  // reader's rule: label 2 with no attribute, 3 with one).
+  std::vector<long long> first_row(3 + ps.num_attributes(), 0);
+  first_row[0] = labels[0];
+  if (K > 1 || is_header(first_row)) {
     out << K;
     for (int l : labels) out << ' ' << l;
     out << '\n';

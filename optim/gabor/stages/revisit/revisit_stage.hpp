@@ -1,5 +1,5 @@
 #pragma once
-// method.revisit (not in the paper; issue 64's "alternating passes"): the paper synthesizes
+// method.revisit (not in the paper; alternating passes over the classes): the paper synthesizes
 // classes one after another and never moves a class again, so class 0 is placed without the
 // classes after it. A revisit stage follows every class's sigma stages (and any border relax):
 // one stage per class, in the class order, at the finest sigma, where that class's points move
