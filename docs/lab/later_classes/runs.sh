@@ -7,7 +7,8 @@
 #   own     mc + the class_own map term at weight 1
 #   half    mc + the class_own map term at weight 0.5
 #   allown  all + the class_own map term at weight 1
-#   rev     own + method.revisit.iterations 100 (each class moves again after all are placed)
+#   rev     own + method.revisit.iterations 100 (each class moves again after all are placed;
+#           before 2026-11-30 it ran 0 iterations on this rectangle output: a bug, mended)
 # (each tag sets both keys, so the tags mean the same whatever the defaults are)
 # Then per run: docs/lab/later_classes/stage_rows.py DIR/ama1x_TAG_sSEED EXEMPLAR 2.5635 1
 set -euo pipefail

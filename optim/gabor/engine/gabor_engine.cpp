@@ -331,7 +331,7 @@ PointSet GaborEngine::run() {
 void GaborEngine::enter_group(const Stage& stage) {
   group_ = stage.group;
   geometry_ = stage.geometry;
-  const int K = exemplar_.num_classes(), class_step = group_ % K;  // window plans: K groups per window
+  const int K = exemplar_.num_classes(), class_step = group_ % K;  // window plans: a multiple of K groups per window
   if (s_.options.fresh_net_per_class && group_ > 0)
     pipe_->redraw_network(class_network_seed(ctx_.seed, class_step));
   // A group continues one optimization: its points and positions come from the checkpoint
@@ -548,10 +548,9 @@ void GaborEngine::finish_stage(const Stage& stage) {
   state_.optimizer.clear();
   optimizer_.reset();
   start_ = StageStart();
-  if (state_.stage >= static_cast<int>(plan_.size()) || plan_[state_.stage].group != stage.group) {
-    geometry_->group_done(out_, moving_idx_, state_.final_points);
-    state_.moving = torch::Tensor();
-  }
+  const bool last = state_.stage >= static_cast<int>(plan_.size());
+  if (last || plan_[state_.stage].group != stage.group) state_.moving = torch::Tensor();
+  if (last || plan_[state_.stage].geometry != stage.geometry) geometry_->stages_done(out_, state_.final_points);
   if (ev.window_ends) geometry_->window_done();
 }
 

@@ -17,7 +17,7 @@ void ClassOwnMapTerm::begin_run(const MapTermRun& run) {
 void ClassOwnMapTerm::begin_group(const MapTermGroup& g) {
   const Stage& stage = g.stage;
   if (!active(stage)) return;
-  if (fresh_net_)  // as the joint pipeline's (window plans: K groups per window)
+  if (fresh_net_)  // as the joint pipeline's (window plans: a multiple of K groups per window)
     pipe_->redraw_network(class_network_seed(seed_, stage.group % exemplar_->num_classes()));
   const size_t own = exemplar_->subset_class(stage.own_class).size();
   pipe_->set_neighbors(settings_.options.k_per_stage ? static_cast<int>(std::min<size_t>(settings_.k, own)) : settings_.k);

@@ -120,9 +120,13 @@ PointSet WindowGeometry::pattern(const torch::Tensor& local, int64_t frozen, con
   return ps;
 }
 
-void WindowGeometry::group_done(const PointSet& out, const std::vector<size_t>& moving, std::vector<uint8_t>& final_points) const {
-  for (size_t i : moving)  // the window's own part is done: no later window moves it
-    if (inside(w_.interior, out[i])) final_points[i] = 1;
+void WindowGeometry::stages_done(const PointSet& out, std::vector<uint8_t>& final_points) const {
+  // The window's own part is done: no later window moves it. Marked when the window's last
+  // stage ends, not its class's: a revisit stage moves a class again after the other classes
+  // (every point not final inside the interior was moved by one of the window's groups: its
+  // movable part holds the interior, and frozen pad points are final from the start).
+  for (size_t i = 0; i < out.size(); ++i)
+    if (!final_points[i] && inside(w_.interior, out[i])) final_points[i] = 1;
 }
 
 // The heap kept for speed within a window (optim/run/runtime.hpp) must not grow window after window.

@@ -60,8 +60,10 @@ class StageGeometry {
   // points move.
   virtual PointSet pattern(const torch::Tensor& local, int64_t frozen, const std::vector<int>& classes,
                            const Domain& moving_area) const = 0;
-  // The group ended: its points that no later group moves get final_points[i] = 1.
-  virtual void group_done(const PointSet& out, const std::vector<size_t>& moving, std::vector<uint8_t>& final_points) const = 0;
+  // The geometry's last stage ended (a window: its classes' stages and the after-all stages,
+  // the revisit, that move them again): its points that no later stage moves get
+  // final_points[i] = 1.
+  virtual void stages_done(const PointSet& out, std::vector<uint8_t>& final_points) const = 0;
   // The window's last stage ended.
   virtual void window_done() const = 0;
 };
@@ -82,7 +84,7 @@ class TorusGeometry : public StageGeometry {
   std::vector<double> part_inside(const Domain&) const override { return {}; }
   PointSet pattern(const torch::Tensor& local, int64_t frozen, const std::vector<int>& classes,
                    const Domain& moving_area) const override;
-  void group_done(const PointSet&, const std::vector<size_t>&, std::vector<uint8_t>&) const override {}
+  void stages_done(const PointSet&, std::vector<uint8_t>&) const override {}
   void window_done() const override {}
 };
 
@@ -105,7 +107,7 @@ class WindowGeometry : public StageGeometry {
   std::vector<double> part_inside(const Domain& output) const override;
   PointSet pattern(const torch::Tensor& local, int64_t frozen, const std::vector<int>& classes,
                    const Domain& moving_area) const override;
-  void group_done(const PointSet& out, const std::vector<size_t>& moving, std::vector<uint8_t>& final_points) const override;
+  void stages_done(const PointSet& out, std::vector<uint8_t>& final_points) const override;
   void window_done() const override;  // its buffers go back to the kernel
 
  private:

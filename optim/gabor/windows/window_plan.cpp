@@ -57,12 +57,16 @@ WindowLayout window_layout(const Domain& canvas, const Domain& moving_area, cons
 SynthesisPlan window_plan(const PointSet& exemplar, const GaborSettings& s, const WindowLayout& layout) {
   const std::vector<std::vector<size_t>> none(exemplar.num_classes());
   const SynthesisPlan per_window = class_sigma_plan(exemplar, s, none);
+  // Each window's groups after the previous window's: K class groups, then the after-all kinds'
+  // (the revisit) in groups of K of their own.
+  int groups = 0;
+  for (const Stage& st : per_window) groups = std::max(groups, st.group + 1);
   SynthesisPlan plan;
   for (const auto& w : layout.windows) {
     const auto geometry = std::make_shared<WindowGeometry>(w);
     for (Stage st : per_window) {
       if (w.count > 1) st.label = "window " + std::to_string(w.index + 1) + "/" + std::to_string(w.count) + ", " + st.label;
-      st.group += w.index * exemplar.num_classes();
+      st.group += w.index * groups;
       st.geometry = geometry;
       plan.push_back(std::move(st));
     }

@@ -3,8 +3,10 @@
 // default (the paper's plan); on a one-class exemplar its stage moves nothing.
 #include <catch2/catch.hpp>
 
+#include "core/output_shape.hpp"
 #include "optim/gabor/stages/revisit/revisit_stage.hpp"
 #include "optim/method/method.hpp"
+#include "optim/run/run_config.hpp"
 #include "tests/support/gabor_runs.hpp"
 #include "tests/support/same_bits.hpp"
 #include "tests/support/small_exemplar.hpp"
@@ -33,6 +35,26 @@ bool same_positions(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
   for (size_t i = 0; i < a.size(); ++i)
     if (a[i].x != b[i].x || a[i].y != b[i].y) return false;
   return true;
+}
+
+// A rectangle of 3 x 1.5 exemplar units at 16 positions a unit, on windows of `pixels`
+// positions (24: 2 x 1 windows and more; 96: one grid), margins 0.3.
+struct RectangleRun {
+  PointSet output;
+  StagesReport report;
+};
+RectangleRun rectangle_run(const PointSet& ex, int pixels, const json& revisit) {
+  json spec = revisit_method(revisit);
+  spec["window"] = {{"pixels", pixels}, {"margin", 0.3}};
+  auto method = MethodRegistry::instance().create(spec, "method");
+  RectangleRun run;
+  SynthesisContext ctx;
+  ctx.quick = true;
+  ctx.seed = 3;
+  ctx.output = resolve_output_shape(resolve_run_config(json{{"output", {{"size", {3, 1.5}}}}}, {}), ex);
+  ctx.stages = &run.report;
+  run.output = method->synthesize(ex, ctx);
+  return run;
 }
 
 }  // namespace
@@ -84,4 +106,29 @@ TEST_CASE("revisit's options are checked where it declares them", "[optim][stage
   CHECK_THROWS_WITH(test::method_params(revisit_method({{"iterations", -1}})), Catch::Contains("method.revisit.iterations"));
   CHECK_THROWS_WITH(test::method_params(revisit_method({{"lr", 0}})), Catch::Contains("method.revisit.lr"));
   CHECK_THROWS_WITH(test::method_params(revisit_method({{"rounds", 2}})), Catch::Contains("method.revisit.rounds"));
+}
+
+// A class's points inside a window's interior used to be final once its own stages ended, so
+// a rectangle's revisit found nothing to move and ran no iteration. They are final when the
+// window's last stage ends: the revisit moves them, on one grid and window by window.
+TEST_CASE("revisit moves every class again on a rectangle, on one grid and window by window", "[optim][windows][revisit]") {
+  const PointSet ex = test::small_exemplar(2, false);
+  for (const int pixels : {96, 24}) {
+    CAPTURE(pixels);
+    const auto off = rectangle_run(ex, pixels, json::object());
+    const auto on = rectangle_run(ex, pixels, {{"iterations", 3}});
+    int revisits = 0, windows = 0;
+    for (const auto& st : on.report.stages) {
+      if (st.stage.find("sigma 1/2") != std::string::npos && st.stage.find("class 1/2") != std::string::npos) ++windows;
+      if (st.stage.find("revisit") == std::string::npos) continue;
+      CAPTURE(st.stage);
+      CHECK(st.iterations >= 1);
+      ++revisits;
+    }
+    CHECK(revisits == 2 * windows);  // one per class in every window
+    CHECK((pixels == 96 ? windows == 1 : windows > 1));
+    // The revisit moved points (the stages before it are the same: only it can differ; the
+    // count too, as the crop to the rectangle keeps what the moves left inside).
+    CHECK_FALSE(test::same_bits(on.output, off.output));
+  }
 }
