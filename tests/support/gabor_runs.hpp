@@ -19,9 +19,11 @@ struct CheckpointedRun {
   StagesReport report;  // the stages, typed
 };
 
-// `method_spec` on the paper's u x u square with --quick, seed `seed`, a checkpoint at every iteration.
+// `method_spec` with --quick, seed `seed`, a checkpoint at every iteration; on `output` when
+// given, else on the paper's u x u square.
 inline CheckpointedRun checkpointed_run(const json& method_spec, const PointSet& ex, uint64_t seed,
-                                        const std::string* resume = nullptr, const std::atomic<bool>* stop = nullptr) {
+                                        const std::string* resume = nullptr, const std::atomic<bool>* stop = nullptr,
+                                        const OutputShape* output = nullptr) {
   auto method = MethodRegistry::instance().create(method_spec, "method");
   REQUIRE(method->can_resume());
   CheckpointedRun run;
@@ -34,6 +36,7 @@ inline CheckpointedRun checkpointed_run(const json& method_spec, const PointSet&
   ctx.save_checkpoint = [&](const std::string& bytes) { run.checkpoints.push_back(bytes); };
   ctx.resume_state = resume;
   ctx.stop = stop;
+  if (output) ctx.output = *output;
   run.output = method->synthesize(ex, ctx);
   return run;
 }

@@ -39,22 +39,11 @@ bool same_positions(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
 
 // A rectangle of 3 x 1.5 exemplar units at 16 positions a unit, on windows of `pixels`
 // positions (24: 2 x 1 windows and more; 96: one grid), margins 0.3.
-struct RectangleRun {
-  PointSet output;
-  StagesReport report;
-};
-RectangleRun rectangle_run(const PointSet& ex, int pixels, const json& revisit) {
+test::CheckpointedRun rectangle_run(const PointSet& ex, int pixels, const json& revisit) {
   json spec = revisit_method(revisit);
   spec["window"] = {{"pixels", pixels}, {"margin", 0.3}};
-  auto method = MethodRegistry::instance().create(spec, "method");
-  RectangleRun run;
-  SynthesisContext ctx;
-  ctx.quick = true;
-  ctx.seed = 3;
-  ctx.output = resolve_output_shape(resolve_run_config(json{{"output", {{"size", {3, 1.5}}}}}, {}), ex);
-  ctx.stages = &run.report;
-  run.output = method->synthesize(ex, ctx);
-  return run;
+  const OutputShape shape = resolve_output_shape(resolve_run_config(json{{"output", {{"size", {3, 1.5}}}}}, {}), ex);
+  return test::checkpointed_run(spec, ex, 3, nullptr, nullptr, &shape);
 }
 
 }  // namespace
