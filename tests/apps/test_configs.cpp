@@ -110,6 +110,7 @@ TEST_CASE("the paper's choices where the defaults differ are pinned once, in con
   const json published = ppsynth::load_config((kConfigs / "methods" / "gabor_published.json").string());
   CHECK(published["method"]["border_relax"]["iterations"] == 0);
   CHECK(published["method"]["map_terms"]["class_own"]["weight"] == 0);  // a later class on the joint maps alone
+  CHECK(published["method"]["revisit"]["iterations"] == 0);             // no class moves again once the next begins
   for (auto& f : json_files(kConfigs / "runs")) {
     INFO(f.string());
     std::ifstream in(f);
@@ -122,6 +123,7 @@ TEST_CASE("the paper's choices where the defaults differ are pinned once, in con
   CHECK(lines["method"]["border_relax"]["iterations"] == 0);  // through the parent
   const json two = ppsynth::resolve_run_config(ppsynth::load_config((kConfigs / "runs" / "poisson_n64c2_point.json").string()), {});
   CHECK(two["method"]["map_terms"]["class_own"]["weight"] == 0);
+  CHECK(two["method"]["revisit"]["iterations"] == 0);
 }
 
 TEST_CASE("every paper config (configs/paper) reproduces with --quick", "[apps][configs][reproduce]") {

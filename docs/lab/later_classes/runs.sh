@@ -8,8 +8,9 @@
 #   half    mc + the class_own map term at weight 0.5
 #   allown  all + the class_own map term at weight 1
 #   rev     own + method.revisit.iterations 100 (each class moves again after all are placed;
-#           before 2026-11-30 it ran 0 iterations on this rectangle output: a bug, mended)
-# (each tag sets both keys, so the tags mean the same whatever the defaults are)
+#           before 2026-11-30 it ran 0 iterations on this rectangle output: a bug, mended;
+#           the default since the tenth session)
+# (each tag sets all three keys, so the tags mean the same whatever the defaults are)
 # Then per run: docs/lab/later_classes/stage_rows.py DIR/ama1x_TAG_sSEED EXEMPLAR 2.5635 1
 set -euo pipefail
 dir=${1:?usage: runs.sh DIR "TAG:SEED ..."}
@@ -22,11 +23,11 @@ for job in $jobs; do
   d=$dir/ama1x_${tag}_s$s
   [[ -f $d/output.txt ]] && continue
   case $tag in
-    all) extra=(--set method.convergence.rows=all --set method.map_terms.class_own.weight=0);;
-    mc) extra=(--set method.convergence.rows=moving_class --set method.map_terms.class_own.weight=0);;
-    own) extra=(--set method.convergence.rows=moving_class --set method.map_terms.class_own.weight=1);;
-    half) extra=(--set method.convergence.rows=moving_class --set method.map_terms.class_own.weight=0.5);;
-    allown) extra=(--set method.convergence.rows=all --set method.map_terms.class_own.weight=1);;
+    all) extra=(--set method.convergence.rows=all --set method.map_terms.class_own.weight=0 --set method.revisit.iterations=0);;
+    mc) extra=(--set method.convergence.rows=moving_class --set method.map_terms.class_own.weight=0 --set method.revisit.iterations=0);;
+    own) extra=(--set method.convergence.rows=moving_class --set method.map_terms.class_own.weight=1 --set method.revisit.iterations=0);;
+    half) extra=(--set method.convergence.rows=moving_class --set method.map_terms.class_own.weight=0.5 --set method.revisit.iterations=0);;
+    allown) extra=(--set method.convergence.rows=all --set method.map_terms.class_own.weight=1 --set method.revisit.iterations=0);;
     rev) extra=(--set method.convergence.rows=moving_class --set method.map_terms.class_own.weight=1 --set method.revisit.iterations=100);;
     *) echo "runs.sh: unknown tag $tag" >&2; exit 2;;
   esac

@@ -67,6 +67,9 @@ class StageKind {
   // A class-end kind: its stages follow every class's sigma stages, each a group of its own
   // measuring every class (true), or each last in its own class's group (false).
   virtual bool after_all_classes() const { return false; }
+  // Whether the plan holds its stages for an exemplar of `classes` classes (a kind that moves
+  // a class beside the others has nothing to do with one).
+  virtual bool acts_on(int /*classes*/) const { return true; }
   virtual nlohmann::json optimizer(nlohmann::json spec, const GaborSettings& /*settings*/) const { return spec; }
   virtual StageStart start(const StageStartView& /*view*/) const { return {}; }
   // Its point terms (weights in the stage's loss units, as method.terms'), and their entry in

@@ -42,6 +42,7 @@ SynthesisPlan class_sigma_plan(const PointSet& exemplar, const GaborSettings& s,
       if (j + 1 < s.sigmas.size()) continue;
       int own_groups = 0;  // after-all kinds so far: each takes K groups of its own
       for (const auto& kind : class_end) {  // the finest sigma's settings
+        if (!kind->acts_on(K)) continue;
         Stage end = stage;
         end.label = of_class + kind->label();
         end.kind = kind;

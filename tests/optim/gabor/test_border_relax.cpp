@@ -40,9 +40,11 @@ BorderRelaxSettings relax_options(const GaborSettings& s) {
 
 // parked 0: every class is relaxed, parked or not (tiny runs park less than the bound).
 // after "class": each class's relax right after its sigma stages (the default "all": below).
+// No revisit: the relax's stages are the only ones after the sigma stages.
 json relaxed_method(int iterations, double separation = 1.0, double parked = 0) {
   return json{{"type", "gabor"},
               {"border_relax", {{"iterations", iterations}, {"band", 1.0}, {"separation", separation}, {"parked", parked}, {"after", "class"}}},
+              {"revisit", {{"iterations", 0}}},
               {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 5}, {"num_sigmas", 2}}}};
 }
 

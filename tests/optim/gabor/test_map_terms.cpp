@@ -53,7 +53,7 @@ TEST_CASE("A map term registered in a test file acts in a synthesis", "[optim][m
   ctx.quick = true;
   ctx.seed = 4;
   auto run = [&](nlohmann::json terms, nlohmann::json relax = {{"iterations", 0}}) {
-    nlohmann::json spec = {{"type", "gabor"}, {"map_terms", terms}, {"border_relax", relax}};
+    nlohmann::json spec = {{"type", "gabor"}, {"map_terms", terms}, {"border_relax", relax}, {"revisit", {{"iterations", 0}}}};
     return MethodRegistry::instance().create(spec, "method")->synthesize(ex, ctx);
   };
   const auto plain = run(nlohmann::json::object());

@@ -72,7 +72,8 @@ PPSYNTH_REGISTER_STAGE_KIND("test_trail", TrailOptions::params(), "a test's stag
 
 json trail_method(const json& trail) {
   return {{"type", "gabor"},
-          {"border_relax", {{"iterations", 0}}},
+          {"border_relax", {{"iterations", 0}}},  // the built-in class-end kinds off: the paper's plan
+          {"revisit", {{"iterations", 0}}},
           {"test_trail", trail},
           {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 3}, {"num_sigmas", 2}}}};
 }

@@ -56,7 +56,8 @@ PPSYNTH_REGISTER_STAGE_KIND("test_left_half", LeftHalfOptions::params(), "a test
 
 PointSet run(const PointSet& ex, test::StageEnds& ends, StagesReport* stages) {
   const json method = {{"type", "gabor"},
-                       {"border_relax", {{"iterations", 0}}},
+                       {"border_relax", {{"iterations", 0}}},  // the built-in class-end kinds off: the paper's plan
+                       {"revisit", {{"iterations", 0}}},
                        {"quick", {{"res", 16}, {"channels", 4}, {"max_iterations", 5}, {"num_sigmas", 2}}}};
   SynthesisContext ctx;
   ctx.quick = true;

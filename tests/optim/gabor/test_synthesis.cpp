@@ -40,9 +40,9 @@ TEST_CASE("Quick 2-class synthesis keeps classes and attributes and freezes earl
   ctx.seed = 3;
   Recorder rec;
   ctx.observers = {&rec};
-  // The paper's plan: the border relax after every class moves class 0's band again
-  // (tests/optim/gabor/test_border_relax.cpp).
-  auto out = gabor({{"border_relax", {{"iterations", 0}}}})->synthesize(ex, ctx);
+  // The paper's plan: the border relax and the revisit after every class move class 0 again
+  // (tests/optim/gabor/test_border_relax.cpp, test_revisit_stage.cpp).
+  auto out = gabor({{"border_relax", {{"iterations", 0}}}, {"revisit", {{"iterations", 0}}}})->synthesize(ex, ctx);
   REQUIRE(out.size() == 4 * ex.size());
   auto counts = out.class_counts();
   CHECK(counts[0] == 64);
@@ -80,9 +80,13 @@ TEST_CASE("The per-class map term (map_terms.class_own) acts on the later classe
   ctx.seed = 3;
   FirstLossPerStage paper_seen, own_seen;
   ctx.observers = {&paper_seen};
-  auto paper = gabor(json{{"map_terms", {{"class_own", {{"weight", 0.0}}}}}})->synthesize(ex, ctx);
+  // In the sequential pass (no revisit: there class 0 moves again, with the term).
+  const json sequential = {{"revisit", {{"iterations", 0}}}};
+  json paper_spec = sequential;
+  paper_spec["map_terms"] = {{"class_own", {{"weight", 0.0}}}};
+  auto paper = gabor(paper_spec)->synthesize(ex, ctx);
   ctx.observers = {&own_seen};
-  auto with_own = gabor()->synthesize(ex, ctx);  // on by default
+  auto with_own = gabor(sequential)->synthesize(ex, ctx);  // on by default
   REQUIRE(paper.size() == with_own.size());
   // Class 0 (the first stage, where joint = own) is untouched; class 1 moves differently.
   double class1_diff = 0;

@@ -288,11 +288,13 @@ TEST_CASE("terms beside the paper's in windows: separation and class_own act, re
   CHECK(separated.stats["terms"]["separation"].get<double>() == 10.0);
   CHECK_FALSE(same_bits(separated.output, plain.output));
   // class_own: class 0 (first in the order: its joint maps are its own) moves as without it,
-  // in every window; class 1 moves otherwise. (A published border: the canvas is the output,
-  // so its points are the canvas's, in the same order.)
+  // in every window of the sequential pass (no revisit, where class 0 moves again with the
+  // term); class 1 moves otherwise. (A published border: the canvas is the output, so its
+  // points are the canvas's, in the same order.)
   const OutputShape exact = shape_of(json{{"size", {2.5, 1.2}}, {"border", "published"}}, ex);
-  const json own = {{"map_terms", {{"class_own", {{"weight", 1.0}}}}}};
-  const Run plain_exact = synthesize(ex, exact, 20, 3, nullptr, false, "grid", json{{"map_terms", {{"class_own", {{"weight", 0.0}}}}}});
+  const json own = {{"map_terms", {{"class_own", {{"weight", 1.0}}}}}, {"revisit", {{"iterations", 0}}}};
+  const Run plain_exact = synthesize(ex, exact, 20, 3, nullptr, false, "grid",
+                                     json{{"map_terms", {{"class_own", {{"weight", 0.0}}}}}, {"revisit", {{"iterations", 0}}}});
   const Run with_own = synthesize(ex, exact, 20, 3, nullptr, false, "grid", own);
   REQUIRE(with_own.output.size() == plain_exact.output.size());
   size_t class1_moved = 0;

@@ -46,8 +46,9 @@ TEST_CASE("A point term registered in a test file acts in a synthesis", "[optim]
   ctx.quick = true;
   ctx.seed = 4;
   auto run = [&](nlohmann::json terms) {
-    // The paper's plan: one group of stages per class (the border relax would add one more each).
-    nlohmann::json spec = {{"type", "gabor"}, {"terms", terms}, {"border_relax", {{"iterations", 0}}}};
+    // The paper's plan: one group of stages per class (the border relax and the revisit would
+    // add more).
+    nlohmann::json spec = {{"type", "gabor"}, {"terms", terms}, {"border_relax", {{"iterations", 0}}}, {"revisit", {{"iterations", 0}}}};
     return MethodRegistry::instance().create(spec, "method")->synthesize(ex, ctx);
   };
   const auto plain = run(nlohmann::json::object());

@@ -27,16 +27,9 @@ nlohmann::json RevisitStage::optimizer(nlohmann::json spec, const GaborSettings&
   return spec;
 }
 
-StageStart RevisitStage::start(const StageStartView& v) const {
+StageStart RevisitStage::start(const StageStartView&) const {
   StageStart st;
-  // With one class there is nothing placed after it to revisit it beside: the class's own
-  // finest stage has ended on its best iterate already.
-  if (v.stage.target_classes.size() < 2) {
-    st.moving_mask = torch::zeros({static_cast<int64_t>(v.moving.size()), 1}, torch::kBool);
-    st.note = "one class: nothing to revisit";
-  } else {
-    st.note = "every point of the class moves again, beside every other class";
-  }
+  st.note = "every point of the class moves again, beside every other class";
   return st;
 }
 
