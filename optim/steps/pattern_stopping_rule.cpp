@@ -124,6 +124,27 @@ class PatternStoppingRule : public StoppingRule {
     return verdict;
   }
 
+  // The checks' PCF MSEs in order (the first at the stage's start where the stage ends on its
+  // best) and, ending on the best, the iteration it ended on (-1: its start) and the measure
+  // that chose it where that is not the first (the plane rectangle of a torus, the crops).
+  nlohmann::json summary(const std::vector<double>& record) const override {
+    nlohmann::json s = {{"check_every", check_every_}};
+    const size_t stride = end_on_best_ ? 2 : 1;
+    std::vector<double> watched, seen;
+    for (size_t i = 0; i + stride - 1 < record.size(); i += stride) {
+      watched.push_back(record[i]);
+      if (end_on_best_) seen.push_back(record[i + 1]);
+    }
+    s["pcf_mse"] = watched;
+    if (end_on_best_ && !seen.empty()) {
+      // the first of equal minima, as judge() keeps it; check i is iteration i * check_every - 1
+      const auto best = std::min_element(seen.begin(), seen.end()) - seen.begin();
+      s["ended_on_iteration"] = static_cast<int>(best) * check_every_ - 1;
+      if (seen != watched) s["pcf_mse_chosen_by"] = seen;
+    }
+    return s;
+  }
+
  private:
   // One PCF the rule measures of a stage moving a class among others: class a's own (a == b)
   // or the cross PCF from a to b, with the exemplar's curve whole and as a unit-square crop.

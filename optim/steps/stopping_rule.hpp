@@ -19,6 +19,8 @@
 #include <memory>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "core/point_set.hpp"
 #include "core/registry.hpp"
 
@@ -56,6 +58,13 @@ class StoppingRule {
   // `record` is this rule's memory of the stage so far (empty at the stage's start;
   // checkpointed).
   virtual StopVerdict judge(const StageView& view, std::vector<double>& record) = 0;
+  // What the rule saw of a finished stage, from its `record`, for the stage's line of
+  // run.json (empty: nothing to add). Why: whether a stage ended on its start, or where its
+  // best came, says what a cheaper rule would have cut; the record alone can say it.
+  virtual nlohmann::json summary(const std::vector<double>& record) const {
+    (void)record;
+    return nlohmann::json::object();
+  }
 };
 
 using StoppingRuleRegistry = Registry<StoppingRule>;

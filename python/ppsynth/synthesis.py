@@ -70,7 +70,9 @@ class Stage:
         Its wall time.
     details : dict
         What the method and the stage's kind recorded of it: the class, sigma and number of
-        neighbors of a Gabor stage; a border relax's ``parked_over_uniform`` and ``relaxed``.
+        neighbors of a Gabor stage; a border relax's ``parked_over_uniform`` and ``relaxed``;
+        under the pattern stopping rule, ``stopping_rule`` (each check's PCF MSE and the
+        iteration the stage ended on, -1 for its start).
     """
     stage: str
     iterations: int

@@ -535,6 +535,10 @@ void GaborEngine::finish_stage(const Stage& stage) {
   StageRecord record{stage.label, state_.iteration, state_.stage_losses.empty() ? 0.0 : state_.stage_losses.back(), ev.seconds,
                      {{"class", stage.own_class}, {"sigma", stage.sigma}, {"k", stage.k}}};
   record.details.update(start_.record);  // what the kind decided (the relax: its share, relaxed or not)
+  if (stage.kind->judged()) {              // what the stopping rule saw (a stage that ran, judged)
+    nlohmann::json seen = rule_->summary(state_.stage_watch);
+    if (!seen.empty() && state_.iteration > 0) record.details["stopping_rule"] = std::move(seen);
+  }
   state_.stages.push_back(std::move(record));
   ctx_.stage_end(ev, out_);
   // The next stage starts: a fresh optimizer and convergence window; a new group also

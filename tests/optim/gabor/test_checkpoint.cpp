@@ -4,6 +4,7 @@
 // or a one-ulp position change in the restored state.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -133,6 +134,37 @@ TEST_CASE("a stage that ends on its best iterate ends there, and resumes to the 
     INFO("checkpoint " << i);
     CHECK(same_bits(synthesize(ex, &best.checkpoints[i], nullptr, spec).output, best.output));
   }
+}
+
+TEST_CASE("a judged stage's record says what the pattern rule saw and the iterate it ended on, resumed or not",
+          "[optim][checkpoint]") {
+  json spec = kQuickMethod;
+  spec["quick"]["max_iterations"] = 60;
+  spec["quick"]["num_sigmas"] = 1;
+  spec["convergence"] = {{"type", "pattern"}, {"window", 1000}, {"check_every", 5}, {"min_iterations", 0}};
+  spec["border_relax"] = {{"iterations", 0}};
+  const PointSet ex = test::small_exemplar(1, false);
+  const Run last = synthesize(ex, nullptr, nullptr, spec);
+  const json& on_last = last.report.stages[0].details.at("stopping_rule");
+  CHECK(on_last.at("check_every") == 5);
+  CHECK(on_last.at("pcf_mse").size() == 12);  // iterations 4, 9, ..., 59: the start is no candidate
+  CHECK_FALSE(on_last.contains("ended_on_iteration"));
+
+  spec["convergence"]["end_on"] = "best";
+  const Run best = synthesize(ex, nullptr, nullptr, spec);
+  const json& on_best = best.report.stages[0].details.at("stopping_rule");
+  const auto measures = on_best.at("pcf_mse").get<std::vector<double>>();
+  REQUIRE(measures.size() == 13);  // the start, then every 5th iteration
+  CHECK(measures[1] == on_last.at("pcf_mse")[0].get<double>());  // the same trajectory, the same checks
+  // The torus is chosen on the plane rectangle (a second list); the stage ended on its minimum.
+  const auto chosen = on_best.at("pcf_mse_chosen_by").get<std::vector<double>>();
+  REQUIRE(chosen.size() == measures.size());
+  const int first_min = static_cast<int>(std::min_element(chosen.begin(), chosen.end()) - chosen.begin());
+  CHECK(on_best.at("ended_on_iteration") == first_min * 5 - 1);
+  CHECK(on_best.at("ended_on_iteration").get<int>() < 59);  // the test above: this trajectory's best is not its last
+  // A stage resumed midway reads the same from the checkpointed record.
+  const Run resumed = synthesize(ex, &best.checkpoints[20], nullptr, spec);
+  CHECK(resumed.report.stages[0].details.at("stopping_rule") == on_best);
 }
 
 TEST_CASE("the stop flag saves a checkpoint and throws; resuming from it finishes the run", "[optim][checkpoint]") {
