@@ -2,6 +2,7 @@
 options), answers the verdict's own `passed`, and stops on Ctrl-C."""
 import json
 import os
+import resource
 import signal
 import subprocess
 import sys
@@ -67,21 +68,34 @@ SCRIPT = textwrap.dedent("""
 """)
 
 
+def _cpu_seconds(pid):
+    # The process's user + system time so far (/proc/PID/stat fields 14 and 15, in clock ticks).
+    with open(f"/proc/{pid}/stat") as f:
+        fields = f.read().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
 @pytest.mark.parametrize("delay", [0.5, 4.0])
 def test_ctrl_c_stops_evaluate_within_a_second(delay):
-    # A minute of work (60,000 against 240,000 points); SIGINT at two moments of it.
+    # A minute of work (60,000 against 240,000 points); SIGINT at two moments of it. What is
+    # bounded is the CPU time the child spends after the signal, not the wall time: on a
+    # loaded machine (2 cores, load 5) the wall time to exit reached 8 s while the child
+    # itself worked well under a second.
+    children_before = resource.getrusage(resource.RUSAGE_CHILDREN)
     p = subprocess.Popen([sys.executable, "-c", SCRIPT], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                          env={**os.environ, "PPSYNTH_THREADS": "1"})
     try:
         assert p.stdout.readline().strip() == "evaluating"
         time.sleep(delay)
-        sent = time.monotonic()
+        at_signal = _cpu_seconds(p.pid)
         p.send_signal(signal.SIGINT)
-        stdout, stderr = p.communicate(timeout=30)
-        stopped = time.monotonic() - sent
+        stdout, stderr = p.communicate(timeout=60)
     finally:
         p.kill()
         p.wait()
+    children_after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    total = (children_after.ru_utime + children_after.ru_stime) - (children_before.ru_utime + children_before.ru_stime)
     assert p.returncode == 7, stderr
     assert "KeyboardInterrupt after" in stdout
-    assert stopped < 3.0  # a second to answer, and the interpreter's exit
+    print(f"CPU after the signal: {total - at_signal:.2f} s (child total {total:.2f} s)")
+    assert total - at_signal < 2.0  # a second of its own work to answer, and the interpreter's exit
