@@ -3,6 +3,7 @@
 
   /usr/bin/python3 docs/lab/scorecard/real_data_scorecard.py WORK EXEMPLARS FITTED "SEEDS" [RUNS ...]
   e.g. ... /tmp/rs /tmp/real/exemplars /tmp/fid/real/fitted "95 96 97 98 99" /tmp/s5/real /tmp/l64/runs
+  SETS="redwood longleaf" in the environment judges those sets only.
 
 Per set (cells redwood japanesepines swedishpines longleaf amacrine) and kind, over the seeds:
   fitted      FITTED/SET_dNNN.txt, draws 1..len(SEEDS) (docs/lab/verdict/spatstat_fitted.R)
@@ -25,7 +26,8 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "..")
 sys.path.insert(0, os.environ.get("PPSYNTH_PYTHON", os.path.join(ROOT, "build", "python")))
 import ppsynth  # noqa: E402
 
-SETS = ("cells", "redwood", "japanesepines", "swedishpines", "longleaf", "amacrine")
+ALL_SETS = ("cells", "redwood", "japanesepines", "swedishpines", "longleaf", "amacrine")
+SETS = tuple(s for s in ALL_SETS if s in os.environ.get("SETS", " ".join(ALL_SETS)).split())
 BIN = os.environ.get("PPSYNTH_BIN", os.path.join(ROOT, "build", "ppsynth"))
 
 
