@@ -13,14 +13,22 @@ def name(r):
     return 'all' if r['row'] == 'all' else ('class %d' % r['class'] if r['row'] == 'class' else 'pair %d-%d' % (r['ci'], r['cj']))
 
 
-def evaluate(ex, points, zoom=None):
+def evaluate(ex, points, zoom=None, scorecard=False):
     """Each row's verdict p, sup L distance (mean spacings) and PCF MSE of `points` against `ex`
-    (zoom: output units per exemplar unit; None: eval's, from the densities)."""
-    r = subprocess.run(['nice', BIN, 'eval', '-q', '--exemplar', ex, '--output', points, '--json', '--no-curves', '--no-scorecard']
+    (zoom: output units per exemplar unit; None: eval's, from the densities). With `scorecard`,
+    also the scorecard's fidelity per row: 'spreads' (L distance over the sub-window spread,
+    None where it cannot judge) and 'within' (within its band)."""
+    r = subprocess.run(['nice', BIN, 'eval', '-q', '--exemplar', ex, '--output', points, '--json', '--no-curves']
+                       + ([] if scorecard else ['--no-scorecard'])
                        + ([] if zoom is None else ['--zoom', str(zoom)]), capture_output=True, text=True, check=True)
     m = json.loads(r.stdout)
     rows = collections.defaultdict(dict)
     for x in m['verdict']['rows']: rows[name(x)]['p'] = x['p']
+    if scorecard:
+        for x in m['scorecard']['fidelity']['rows']:
+            if x['row'] not in ('all', 'class', 'pair'): continue
+            rows[name(x)]['spreads'] = x.get('l', {}).get('spreads')
+            rows[name(x)]['within'] = x.get('l', {}).get('within')
     for x in m['second_order']['rows']: rows[name(x)]['L'] = x['l_sup_spacings']
     rows['all']['pcf'] = m['all']['pcf_mse']
     for i, c in enumerate(m['classes']): rows['class %d' % i]['pcf'] = c['pcf_mse']
