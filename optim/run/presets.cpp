@@ -4,6 +4,7 @@
 #include "core/config/defaults_catalog.hpp"
 #include "core/error.hpp"
 #include "core/processor.hpp"
+#include "models/feature_net.hpp"
 #include "optim/run/runtime.hpp"
 
 namespace ppsynth {
@@ -60,6 +61,26 @@ DeviceCapabilities config_device(const nlohmann::json& config) {
   return cpu_capabilities();
 }
 
+// The preset's network keys tune the default "random" network (its precision, its filter
+// count). A config that names another network ("identity": Fig. 12b's Gabor maps alone;
+// "fixed_bank": Fig. 10's banks) has no such knobs: the preset leaves out the keys that
+// network does not declare, so a preset applies to every ablation panel, while a key the
+// user writes that the network lacks is still refused by name.
+nlohmann::json only_what_the_network_takes(nlohmann::json fragment, const nlohmann::json& config) {
+  if (!fragment.contains("method") || !fragment["method"].contains("feature_net") || !config.contains("method") ||
+      !config["method"].is_object() || !config["method"].contains("feature_net"))
+    return fragment;
+  const nlohmann::json& net = config["method"]["feature_net"];
+  if (!net.is_object() || !net.contains("type") || !net["type"].is_string()) return fragment;
+  const auto& registry = FeatureNetRegistry::instance();
+  if (!registry.contains(net["type"].get<std::string>())) return fragment;  // the registry names the error when the net is made
+  const nlohmann::json& declared = registry.entry(net["type"].get<std::string>()).defaults;
+  nlohmann::json& keys = fragment["method"]["feature_net"];
+  for (auto it = keys.begin(); it != keys.end();) it = declared.contains(it.key()) ? std::next(it) : keys.erase(it);
+  if (keys.empty()) fragment["method"].erase("feature_net");
+  return fragment;
+}
+
 }  // namespace
 
 nlohmann::json preset_fragment(const std::string& name, bool bf16_units) {
@@ -81,7 +102,7 @@ nlohmann::json apply_preset(const nlohmann::json& config) {
       config["method"].value("type", "gabor") != "gabor")
     throw config_error("preset", "preset '" + name.get<std::string>() + "' sets the gabor method's parameters; this config's method is '" +
                                      config["method"]["type"].get<std::string>() + "'");
-  return merge(fragment, config);
+  return merge(only_what_the_network_takes(fragment, config), config);
 }
 
 nlohmann::json preset_record(const nlohmann::json& preset, const nlohmann::json& runtime_device) {

@@ -28,6 +28,9 @@ nlohmann::json presets();
 nlohmann::json preset_fragment(const std::string& name);
 nlohmann::json preset_fragment(const std::string& name, bool bf16_units);
 // `config` with the fragment of its "preset" (if any) merged under it; errors name the key.
+// Where the config names a feature network other than the default one, the preset's network
+// keys that network does not declare are left out (an ablation's "identity" net has no
+// precision to set).
 nlohmann::json apply_preset(const nlohmann::json& config);
 // For run.json: {"name", "variant": "every processor" | "without bf16 units", "reason"} of a
 // run's preset (RunOptions::preset, run_config.hpp) on its device (runtime.device); null

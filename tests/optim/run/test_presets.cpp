@@ -89,3 +89,28 @@ TEST_CASE("presets: unknown names and other methods are errors naming the key", 
                     Catch::Contains("preset") && Catch::Contains("tiled_copy"));
   CHECK_THROWS_WITH(preset_fragment("fastest"), Catch::Contains("preset"));
 }
+
+TEST_CASE("presets on an ablation's other network: the keys it lacks are left out, the user's are still refused", "[optim][config][preset]") {
+  // Fig. 12b's "identity" net and Fig. 10's "fixed_bank" declare no precision or filter count:
+  // the fast preset still applies to those panels (before, the run stopped on
+  // 'method.feature_net.precision': unknown key).
+  for (const bool bf16_units : {true, false}) {
+    INFO("bf16 units " << bf16_units);
+    CHECK(preset_fragment("fast", bf16_units)["method"]["feature_net"].contains("precision"));
+  }
+  const json identity = resolve_run_config(json{{"preset", "fast"}, {"method", {{"feature_net", {{"type", "identity"}}}}}}, {});
+  CHECK(identity["method"]["feature_net"] == json{{"type", "identity"}});
+  CHECK(identity["method"]["convergence"]["type"] == preset_fragment("fast")["method"]["convergence"]["type"]);  // the rest of the preset holds
+  CHECK(identity["method"]["grid"]["per_sigma"] == true);
+  CHECK_NOTHROW(FeatureNetRegistry::instance().resolve(identity["method"]["feature_net"], "method.feature_net"));
+  const json bank = resolve_run_config(json{{"preset", "fast"}, {"method", {{"feature_net", {{"type", "fixed_bank"}, {"bank", "sobel"}}}}}}, {});
+  CHECK_FALSE(bank["method"]["feature_net"].contains("precision"));
+  CHECK_NOTHROW(FeatureNetRegistry::instance().resolve(bank["method"]["feature_net"], "method.feature_net"));
+  // The default network keeps the preset's keys.
+  const json random = resolve_run_config(json{{"preset", "fast"}, {"method", {{"feature_net", {{"type", "random"}}}}}}, {});
+  CHECK(random["method"]["feature_net"]["precision"] == "auto");
+  // A key the user writes that the network lacks is refused, naming it.
+  const json own = resolve_run_config(json{{"preset", "fast"}, {"method", {{"feature_net", {{"type", "identity"}, {"precision", "auto"}}}}}}, {});
+  CHECK_THROWS_WITH(FeatureNetRegistry::instance().resolve(own["method"]["feature_net"], "method.feature_net"),
+                    Catch::Contains("method.feature_net.precision"));
+}
