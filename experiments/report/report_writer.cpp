@@ -218,6 +218,8 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
       if (!col.run_dir.empty()) seeds.insert(std::to_string(run_options_of(col.config, dir + "/" + col.run_dir + "/config.json").seed));
   std::string seed_text;
   for (auto& s : seeds) seed_text += (seed_text.empty() ? "" : ", ") + s;
+  // Over seeds the pictures are one seed's runs, the numbers every seed's: say both.
+  if (!o.seeds.empty()) seed_text = o.seeds + " (the pictures: seed " + (seed_text.empty() ? "-" : seed_text) + ")";
   std::time_t now = std::time(nullptr);
   char date[64];
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));

@@ -229,6 +229,8 @@ TEST_CASE("over seeds: each seed's runs, their initializations, a generated exem
   CHECK(report["verdict"]["checks"][0]["numbers"].get<std::string>().find("wins") != std::string::npos);
   // The report's panel is the sweep's seed-3 run (one generated exemplar file for both), not a third run.
   CHECK(report["panels"][0]["columns"][0]["source"].get<std::string>().find("reused from") != std::string::npos);
+  // The page's header names every seed and the one its pictures show (it said "seed(s) 3").
+  CHECK(read_file_text((d / "report" / "index.html").string()).find("3-4 (the pictures: seed 3)") != std::string::npos);
 
   // Another sweep of the same runs takes them from the first, seed by seed, without running any.
   r = ppsynth::test::run_ppsynth(base + " -o " + (d / "report2").string() + " --sweep " + (d / "sweep2").string() + " --reuse " +
