@@ -25,7 +25,8 @@ json figure_defaults() {
   return json{{"name", ""},           {"title", ""},        {"claim", ""},         {"paper_ref", ""},
               {"description", ""},    {"kind", "figure"},   {"methods", {"ours"}}, {"method_params", nullptr},
               {"pending_methods", json::array()},           {"panels", json::array()},
-              {"tables", json::array()},                     {"rule", nullptr}};
+              {"tables", json::array()},                     {"rule", nullptr},
+              {"diagnosis", {{"text", ""}, {"published_code", ""}, {"see", ""}}}};
 }
 
 json panel_defaults() {
@@ -259,6 +260,7 @@ ReproduceConfig parse_reproduce_config(const json& config, const std::string& so
       c.tables.push_back(ts);
     }
     if (!f["rule"].is_null()) c.rule = parse_reproduce_rule(f["rule"], rule_columns(c));
+    c.diagnosis = f["diagnosis"];
     return c;
   } catch (const InputError& e) {
     if (source.empty()) throw;

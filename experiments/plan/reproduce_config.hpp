@@ -24,6 +24,9 @@
 //     "tables": [ {"type": "comparison" | "relative_radius" | "runtime", "name", "caption",
 //                  "methods", "paper": {...}} ] }   each also written as CSV and Markdown.
 //     "rule": {...}   how the gathered numbers decide the verdict (reproduce_rule.hpp)
+//     "diagnosis": {"text", "published_code", "see"}   written after the runs, where the
+//                  verdict falls short: why, the published code's own number on the item,
+//                  and the lab page that measured it; shown under the verdict
 //
 // Method columns: "ours" = the panel's run as configured; "init" = the initialization ours
 // started from; "reference" = the panel's "reference" file (the published code's output);
@@ -68,6 +71,7 @@ struct ReproduceConfig {
   std::vector<PanelSpec> panels;
   std::vector<TableSpec> tables;
   ReproduceRule rule;  // kind "" when the config states none
+  json diagnosis;      // {"text", "published_code", "see"}: strings, "" when not written
   json raw;  // the config after "parent" resolution (written into the report)
 };
 

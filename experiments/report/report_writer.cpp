@@ -237,6 +237,7 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
   const json verdict = verdict_json(judge_item(c.rule, r.numbers));
   const json numbers = numbers_json(r.numbers);
   add_verdict_section(rep, verdict);
+  add_diagnosis_section(rep, c.diagnosis);
   add_numbers_table(rep, numbers, shown_metrics(c.rule),
                     "Our numbers per group: median [min - max] (seeds)" + std::string(r.sweep_dir.empty() ? ", one seed" : " over the seeds") +
                         "; 'init' is the initialization each seed's 'ours' started from, 'reference' the published code's output");
@@ -274,7 +275,8 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
                  {"config", c.source}, {"quick", r.quick}, {"revision", revision()}, {"seconds", r.seconds},
                  {"overrides", o.overrides}, {"seeds", o.seeds}, {"sweep", r.sweep_dir},
                  {"figure", fs::exists(dir + "/figure.png") ? "figure.png" : ""},
-                 {"rule", c.raw.contains("rule") ? c.raw["rule"] : json(nullptr)}, {"verdict", verdict}, {"numbers", numbers},
+                 {"rule", c.raw.contains("rule") ? c.raw["rule"] : json(nullptr)}, {"verdict", verdict}, {"diagnosis", c.diagnosis},
+                 {"numbers", numbers},
                  {"panels", json::array()}, {"tables", json::array()}};
   for (auto& t : c.tables) report["tables"].push_back(t.name);
 

@@ -171,6 +171,7 @@ size_t write_reproduce_page(const std::string& dir) {
                         {"report", it.dir + "/index.html"},
                         {"revision", str(r, "revision")}});
     add_verdict_section(rep, v, 3);
+    add_diagnosis_section(rep, r.contains("diagnosis") ? r["diagnosis"] : json(), 4);
     const auto metrics = shown_metrics(r.contains("rule") ? r["rule"] : json());
     const json numbers = r.contains("numbers") ? r["numbers"] : json::object();
     add_numbers_table(rep, numbers, metrics,
@@ -191,6 +192,7 @@ size_t write_reproduce_page(const std::string& dir) {
     std::vector<std::vector<std::string>> checks;
     for (auto& k : v["checks"]) checks.push_back({k.value("check", ""), k.value("state", ""), k.value("numbers", "")});
     if (!checks.empty()) md += table_markdown({"check", "result", "numbers"}, checks) + "\n";
+    md += diagnosis_markdown(r.contains("diagnosis") ? r["diagnosis"] : json());
     md += numbers_markdown(numbers, metrics);
     for (auto& [file, caption] : pictures(it, dir)) md += "\n![" + caption + "](" + file + ")\n";
   }

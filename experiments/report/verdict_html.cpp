@@ -79,6 +79,39 @@ void add_verdict_section(HtmlReport& rep, const json& verdict, int level) {
   if (!rows.empty()) rep.add_table({"check", "result", "the numbers that decided it"}, rows);
 }
 
+namespace {
+
+std::vector<std::pair<std::string, std::string>> diagnosis_lines(const json& d) {
+  std::vector<std::pair<std::string, std::string>> lines;
+  if (!d.is_object()) return lines;
+  const char* labels[][2] = {{"text", "Why"}, {"published_code", "The published code on this item"}, {"see", "Measured in"}};
+  for (auto& l : labels)
+    if (d.contains(l[0]) && d[l[0]].is_string() && !d[l[0]].get<std::string>().empty()) lines.push_back({l[1], d[l[0]]});
+  return lines;
+}
+
+}  // namespace
+
+void add_diagnosis_section(HtmlReport& rep, const json& diagnosis, int level) {
+  const auto lines = diagnosis_lines(diagnosis);
+  if (lines.empty()) return;
+  rep.add_heading("What we know about this verdict (written after the runs)", level);
+  std::string html = "<ul>\n";
+  for (auto& [label, text] : lines) {
+    const bool path = label == std::string("Measured in");
+    html += "<li><b>" + html_escape(label) + ".</b> " + (path ? "<code>" + html_escape(text) + "</code> (in the ppsynth repository)" : html_escape(text)) + "</li>\n";
+  }
+  rep.add_html(html + "</ul>\n");
+}
+
+std::string diagnosis_markdown(const json& diagnosis) {
+  const auto lines = diagnosis_lines(diagnosis);
+  if (lines.empty()) return "";
+  std::string md = "**What we know about this verdict** (written after the runs):\n\n";
+  for (auto& [label, text] : lines) md += "- **" + label + ".** " + (label == std::string("Measured in") ? "`" + text + "`" : text) + "\n";
+  return md + "\n";
+}
+
 void add_numbers_table(HtmlReport& rep, const json& numbers, const std::vector<std::string>& metrics, const std::string& caption) {
   const auto rows = numbers_rows(numbers, metrics);
   if (rows.empty()) return;

@@ -25,6 +25,10 @@ std::string spread_cell(const nlohmann::json& groups, const std::string& group, 
 std::string verdict_badge(const std::string& verdict);
 // verdict_json()'s object: the verdict, the statement, the checks table.
 void add_verdict_section(HtmlReport& rep, const nlohmann::json& verdict, int level = 2);
+// A config's "diagnosis" (reproduce_config.hpp; written after the runs): why the verdict falls
+// short, the published code's number, the lab page; nothing when it holds no text.
+void add_diagnosis_section(HtmlReport& rep, const nlohmann::json& diagnosis, int level = 2);
+std::string diagnosis_markdown(const nlohmann::json& diagnosis);
 // numbers_json()'s object as a table (rows: groups with any of `metrics`).
 void add_numbers_table(HtmlReport& rep, const nlohmann::json& numbers, const std::vector<std::string>& metrics,
                        const std::string& caption);

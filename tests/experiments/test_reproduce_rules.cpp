@@ -63,6 +63,18 @@ ReproduceRule rule_of(const json& rule) { return parse_reproduce_config(config_w
 
 }  // namespace
 
+TEST_CASE("a diagnosis block: three strings, unknown keys and other types refused by key path", "[reproduce_rules]") {
+  json c = config_with_rule(better_rule());
+  c["diagnosis"] = {{"text", "why"}, {"published_code", "0.0155"}, {"see", "docs/lab/x/README.md"}};
+  CHECK(parse_reproduce_config(c, "", ".").diagnosis["published_code"] == "0.0155");
+  c["diagnosis"]["seee"] = "typo";
+  CHECK_THAT(error_of(c), Catch::Contains("diagnosis.seee"));
+  c["diagnosis"].erase("seee");
+  c["diagnosis"]["text"] = 3;
+  CHECK_THAT(error_of(c), Catch::Contains("diagnosis.text"));
+  CHECK(parse_reproduce_config(config_with_rule(better_rule()), "", ".").diagnosis["text"] == "");  // none written
+}
+
 TEST_CASE("a rule block is checked: unknown keys and bad values name the key path", "[reproduce_rules]") {
   CHECK(error_of(config_with_rule(better_rule())).empty());
   json r = better_rule();
@@ -213,7 +225,8 @@ TEST_CASE("over seeds: each seed's runs, their initializations, a generated exem
                  {"run", {{"seed", 3}, {"method", {{"type", "gabor"}}}}}}}},  // the panel shows seed 3's runs
               {"rule",
                {{"statement", "ours beats its start"},
-                {"checks", {{{"type", "better"}, {"metric", "all/pcf_mse"}, {"group", "a/ours"}, {"than", {"a/init"}}, {"min_share", 0.5}}}}}}};
+                {"checks", {{{"type", "better"}, {"metric", "all/pcf_mse"}, {"group", "a/ours"}, {"than", {"a/init"}}, {"min_share", 0.5}}}}}},
+              {"diagnosis", {{"text", "a diagnosis written after the runs"}}}};
   const std::string file = (d / "gen.json").string();
   std::ofstream(file) << fig.dump(2);
   const std::string base = "reproduce " + file + " --quick --seeds 3-4";
@@ -231,6 +244,8 @@ TEST_CASE("over seeds: each seed's runs, their initializations, a generated exem
   CHECK(report["panels"][0]["columns"][0]["source"].get<std::string>().find("reused from") != std::string::npos);
   // The page's header names every seed and the one its pictures show (it said "seed(s) 3").
   CHECK(read_file_text((d / "report" / "index.html").string()).find("3-4 (the pictures: seed 3)") != std::string::npos);
+  CHECK(read_file_text((d / "report" / "index.html").string()).find("a diagnosis written after the runs") != std::string::npos);
+  CHECK(report["diagnosis"]["text"] == "a diagnosis written after the runs");
 
   // Another sweep of the same runs takes them from the first, seed by seed, without running any.
   r = ppsynth::test::run_ppsynth(base + " -o " + (d / "report2").string() + " --sweep " + (d / "sweep2").string() + " --reuse " +
@@ -261,8 +276,17 @@ TEST_CASE("the page puts every report's verdict beside the claim, and replaces o
   report("table1", "table", "not reproduced");
   report("fig10", "figure", "partly");
   report("fig03", "figure", "pictures");
+  {  // table1's config wrote a diagnosis after its runs; fig10's has none (older reports lack the key)
+    json r = json::parse(read_file_text((d / "table1" / "report.json").string()));
+    r["diagnosis"] = {{"text", "coincident pairs at the finest sigma"}, {"published_code", "not run: 2 h a run"}, {"see", "docs/lab/close_pairs/README.md"}};
+    std::ofstream(d / "table1" / "report.json") << r.dump();
+  }
   CHECK(write_reproduce_page(d.string()) == 3);
   const std::string html = read_file_text((d / "index.html").string());
+  CHECK_THAT(html, Catch::Contains("coincident pairs at the finest sigma") && Catch::Contains("not run: 2 h a run") &&
+                       Catch::Contains("docs/lab/close_pairs/README.md"));
+  CHECK(html.find("What we know") > html.find("table1: table1 title"));  // under table1 only
+  CHECK_THAT(read_file_text((d / "index.md").string()), Catch::Contains("- **The published code on this item.** not run: 2 h a run"));
   CHECK_THAT(html, Catch::Contains("claim of table1") && Catch::Contains("not reproduced") && Catch::Contains("rule of fig10") &&
                        Catch::Contains("0.01 [0.009 - 0.011] (2)") && Catch::Contains("0.02 (drawn once)"));
   CHECK(html.find("fig03: fig03 title") < html.find("fig10: fig10 title"));    // figures in number order
