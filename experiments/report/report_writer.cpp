@@ -218,8 +218,18 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
       if (!col.run_dir.empty()) seeds.insert(std::to_string(run_options_of(col.config, dir + "/" + col.run_dir + "/config.json").seed));
   std::string seed_text;
   for (auto& s : seeds) seed_text += (seed_text.empty() ? "" : ", ") + s;
-  // Over seeds the pictures are one seed's runs, the numbers every seed's: say both.
-  if (!o.seeds.empty()) seed_text = o.seeds + " (the pictures: seed " + (seed_text.empty() ? "-" : seed_text) + ")";
+  // Over seeds the pictures are one seed's runs, the numbers every seed's: say both. And the
+  // command's own time is then mostly gathering: say what the sweep's runs took as well.
+  std::string time_text = seconds_text(r.seconds);
+  if (!o.seeds.empty()) {
+    seed_text = o.seeds + " (the pictures: seed " + (seed_text.empty() ? "-" : seed_text) + ")";
+    double runs_seconds = 0;
+    for (const auto& run : r.seeds.runs)
+      for (const auto& [key, value] : run.values)
+        if (key == "run/seconds") runs_seconds += value;
+    time_text += " for this command; " + std::to_string(r.seeds.runs.size()) + " runs in the sweep took " + seconds_text(runs_seconds) +
+                 " together";
+  }
   std::time_t now = std::time(nullptr);
   char date[64];
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
@@ -231,7 +241,7 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
                                        : "full settings"},
                       {"revision", revision()},
                       {"seed(s)", seed_text.empty() ? "-" : seed_text},
-                      {"total wall time", seconds_text(r.seconds)},
+                      {"total wall time", time_text},
                       {"written", date}});
 
   const json verdict = verdict_json(judge_item(c.rule, r.numbers));

@@ -245,6 +245,7 @@ TEST_CASE("over seeds: each seed's runs, their initializations, a generated exem
   // The page's header names every seed and the one its pictures show (it said "seed(s) 3").
   CHECK(read_file_text((d / "report" / "index.html").string()).find("3-4 (the pictures: seed 3)") != std::string::npos);
   CHECK(read_file_text((d / "report" / "index.html").string()).find("a diagnosis written after the runs") != std::string::npos);
+  CHECK(read_file_text((d / "report" / "index.html").string()).find("2 runs in the sweep took") != std::string::npos);
   CHECK(report["diagnosis"]["text"] == "a diagnosis written after the runs");
 
   // Another sweep of the same runs takes them from the first, seed by seed, without running any.
