@@ -77,6 +77,15 @@ std::string checks_passed(const json& v) {
   return n ? std::to_string(pass) + "/" + std::to_string(n) : "-";
 }
 
+// The --set overrides a report ran with ("preset=fast"), or the configs' own settings.
+std::string overrides_text(const json& r) {
+  std::string t;
+  if (r.contains("overrides") && r["overrides"].is_array())
+    for (auto& o : r["overrides"])
+      if (o.is_string()) t += (t.empty() ? "" : ", ") + o.get<std::string>();
+  return t.empty() ? "the configs' own" : t;
+}
+
 std::string seeds_text(const json& r) {
   const std::string s = str(r, "seeds");
   return s.empty() ? "one (the config's)" : s;
@@ -169,6 +178,7 @@ size_t write_reproduce_page(const std::string& dir) {
                         {"seeds", seeds_text(r)},
                         {"mode", r.value("quick", false) ? "QUICK" : "full settings"},
                         {"report", it.dir + "/index.html"},
+                        {"settings", overrides_text(r)},
                         {"revision", str(r, "revision")}});
     add_verdict_section(rep, v, 3);
     add_diagnosis_section(rep, r.contains("diagnosis") ? r["diagnosis"] : json(), 4);
