@@ -81,12 +81,19 @@ void add_verdict_section(HtmlReport& rep, const json& verdict, int level) {
 
 namespace {
 
-std::vector<std::pair<std::string, std::string>> diagnosis_lines(const json& d) {
-  std::vector<std::pair<std::string, std::string>> lines;
+struct DiagnosisLine {
+  std::string label, text;
+  bool path;  // "see": a file of the repository, shown as code
+};
+
+std::vector<DiagnosisLine> diagnosis_lines(const json& d) {
+  std::vector<DiagnosisLine> lines;
   if (!d.is_object()) return lines;
-  const char* labels[][2] = {{"text", "Why"}, {"published_code", "The published code on this item"}, {"see", "Measured in"}};
-  for (auto& l : labels)
-    if (d.contains(l[0]) && d[l[0]].is_string() && !d[l[0]].get<std::string>().empty()) lines.push_back({l[1], d[l[0]]});
+  const struct { const char* key; const char* label; } fields[] = {
+      {"text", "Why"}, {"published_code", "The published code on this item"}, {"see", "Measured in"}};
+  for (const auto& f : fields)
+    if (d.contains(f.key) && d[f.key].is_string() && !d[f.key].get<std::string>().empty())
+      lines.push_back({f.label, d[f.key].get<std::string>(), std::string(f.key) == "see"});
   return lines;
 }
 
@@ -97,10 +104,9 @@ void add_diagnosis_section(HtmlReport& rep, const json& diagnosis, int level) {
   if (lines.empty()) return;
   rep.add_heading("What we know about this verdict (written after the runs)", level);
   std::string html = "<ul>\n";
-  for (auto& [label, text] : lines) {
-    const bool path = label == std::string("Measured in");
-    html += "<li><b>" + html_escape(label) + ".</b> " + (path ? "<code>" + html_escape(text) + "</code> (in the ppsynth repository)" : html_escape(text)) + "</li>\n";
-  }
+  for (const auto& l : lines)
+    html += "<li><b>" + html_escape(l.label) + ".</b> " +
+            (l.path ? "<code>" + html_escape(l.text) + "</code> (in the ppsynth repository)" : html_escape(l.text)) + "</li>\n";
   rep.add_html(html + "</ul>\n");
 }
 
@@ -108,7 +114,7 @@ std::string diagnosis_markdown(const json& diagnosis) {
   const auto lines = diagnosis_lines(diagnosis);
   if (lines.empty()) return "";
   std::string md = "**What we know about this verdict** (written after the runs):\n\n";
-  for (auto& [label, text] : lines) md += "- **" + label + ".** " + (label == std::string("Measured in") ? "`" + text + "`" : text) + "\n";
+  for (const auto& l : lines) md += "- **" + l.label + ".** " + (l.path ? "`" + l.text + "`" : l.text) + "\n";
   return md + "\n";
 }
 
