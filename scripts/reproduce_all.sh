@@ -19,6 +19,18 @@
 # A report already in OUT_DIR/NAME is replaced (--force): this script made it.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
+if [[ "${1:-}" == "-h" || "${1:-}" == "--help" ]]; then
+  sed -n '2,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "$0"
+  exit 0
+fi
+# The two positional arguments come first: an option in their place (`--seeds 95-99` before
+# OUT_DIR) would otherwise become a directory named after it and start the whole plan there.
+for positional in "${1:-}" "${2:-}"; do
+  if [[ "$positional" == -* ]]; then
+    echo "reproduce_all: '$positional' where OUT_DIR and PPSYNTH_BINARY go; the options come after them (--help)" >&2
+    exit 2
+  fi
+done
 out="${1:-reports}"
 bin="${2:-$root/build/ppsynth}"
 shift $(( $# >= 2 ? 2 : $# ))
@@ -36,6 +48,12 @@ if [[ ! -x "$bin" ]]; then
   echo "reproduce_all: no ppsynth binary at $bin (build it, or pass its path as the 2nd argument)" >&2
   exit 2
 fi
+for name in $only; do
+  if [[ ! -f "$root/configs/paper/$name.json" ]]; then
+    echo "reproduce_all: --only names '$name', which is not a config in configs/paper" >&2
+    exit 2
+  fi
+done
 mkdir -p "$out"
 start=$(date +%s)
 summary=()
