@@ -16,6 +16,10 @@
 # and OUT/scaling.tsv. PPSYNTH_THREADS sets the threads (default 2); PPSYNTH_PYTHON the python3
 # that sizes the outputs and prints the table (default Debian's /usr/bin/python3; a GPU
 # machine of the device tool has only its torch venv's python3).
+
+# One brace group, read whole before it runs: bash reads a script as it goes, so a `git pull`
+# during an hours-long run would otherwise splice the new text into the running one.
+{
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 usage='usage: scripts/bench_scaling.sh OUT [--copies "4 16 64 256 1024"] [--shapes "square wide"] [--presets "fast default"] [--exemplars "lines poisson_n64c2_point"] [--iterations N] [-- SYNTHESIZE ARGS...]'
@@ -141,3 +145,5 @@ for x in rows:
           (x["exemplar"], x["preset"], x["shape"], x["copies"], x["points"], x["grid"], x["windows"], x["window_grid"],
            x["stages"], x["finest_s"], x["every_s"], x["us_per_point"], x["ratio"], x["peak_mib"]))
 EOF
+exit
+}

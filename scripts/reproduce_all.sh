@@ -17,10 +17,14 @@
 # Full settings take hours on a CPU; --quick is a smoke run. A config that fails is reported
 # and the others still run; the page shows what exists; the exit status is 1 when any failed.
 # A report already in OUT_DIR/NAME is replaced (--force): this script made it.
+
+# One brace group, read whole before it runs: bash reads a script as it goes, so a `git pull`
+# during an hours-long run would otherwise splice the new text into the running one.
+{
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 if [[ "${1:-}" == "-h" || "${1:-}" == "--help" ]]; then
-  sed -n '2,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "$0"
+  awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"
   exit 0
 fi
 # The two positional arguments come first: an option in their place (`--seeds 95-99` before
@@ -88,3 +92,5 @@ if [[ ${#failed[@]} -gt 0 ]]; then
   echo "FAILED: ${failed[*]}" >&2
   exit 1
 fi
+exit
+}
