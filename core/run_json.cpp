@@ -81,6 +81,7 @@ RunRecord parse_run_record(const nlohmann::json& j, const std::string& source) {
   }
   seconds("synthesis_seconds", r.synthesis_seconds);
   seconds("total_seconds", r.total_seconds);
+  seconds("cpu_seconds", r.cpu_seconds);
   if (has("method_stats")) {
     if (!j["method_stats"].is_object()) throw key_error(source, "method_stats", "expected an object");
     r.method_stats = j["method_stats"];

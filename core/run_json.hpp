@@ -40,6 +40,7 @@ struct RunRecord {
   int threads = 0;          // 0: not recorded
   std::string processor;    // "": not recorded
   double synthesis_seconds = 0, total_seconds = 0;
+  double cpu_seconds = 0;   // the synthesis's CPU time (0: not recorded, runs before 2026-11-30)
   nlohmann::json method_stats = nlohmann::json::object();
 };
 RunRecord parse_run_record(const nlohmann::json& run, const std::string& source);

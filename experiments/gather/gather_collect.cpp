@@ -257,6 +257,7 @@ GatherResult collect_runs(const std::vector<std::string>& dirs, const GatherOpti
     run.seed = info.seed;
     run.processor = info.processor;
     run.values.push_back({"run/seconds", info.total_seconds});
+    if (info.cpu_seconds > 0) run.values.push_back({"run/cpu_seconds", info.cpu_seconds});  // 0: not recorded
     r.runs.push_back(std::move(run));
   }
   for (const int stage : options.stages) gather_stage(found, stage, options, r);

@@ -50,6 +50,7 @@ struct ColumnResult {
   std::vector<StageRecord> stages;  // a staged method's stages (the report's per-stage table)
   double seconds = 0;         // wall time of the run (synthesis + its outputs)
   double synthesis_seconds = 0;
+  double cpu_seconds = 0;     // the synthesis's CPU time (0: the run did not record it)
   int iterations = 0;         // optimization iterations over all stages
 };
 

@@ -24,7 +24,7 @@ using json = nlohmann::json;
 // p-values, ...) stays in the runs' own metrics.json and the gather.
 bool kept(const std::string& key) {
   static const std::set<std::string> names = {"pcf_mse", "wasserstein", "chamfer", "relative_radius", "min_distance_normalized",
-                                              "close_pair_share", "l_sup", "overlap_pairs", "seconds", "iterations"};
+                                              "close_pair_share", "l_sup", "overlap_pairs", "seconds", "cpu_seconds", "iterations"};
   const size_t slash = key.rfind('/');
   return slash != std::string::npos && names.count(key.substr(slash + 1));
 }
@@ -112,6 +112,7 @@ void from_panels(const ReproduceResult& r, ItemNumbers& n) {
       add_metrics(group, seed, col.metrics, pr.name + "/" + col.column);
       if (!col.run_dir.empty()) {
         group["run/seconds"][seed] = col.seconds;
+        if (col.cpu_seconds > 0) group["run/cpu_seconds"][seed] = col.cpu_seconds;  // 0: not recorded
         group["run/iterations"][seed] = col.iterations;
       }
     }

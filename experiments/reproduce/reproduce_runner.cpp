@@ -118,6 +118,7 @@ ColumnResult synthesize(const ReproduceConfig& c, const PanelSpec& p, const std:
   r.config = out.config;
   r.stages = out.stages;
   r.seconds = out.seconds;
+  r.cpu_seconds = out.cpu_seconds;
   r.iterations = total_iterations(out);
   r.synthesis_seconds = read_run_record(out.dir + "/run.json").synthesis_seconds;
   if (pr.exemplar.empty()) pr.exemplar = out.exemplar;

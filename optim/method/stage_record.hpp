@@ -27,6 +27,7 @@ struct StageRecord {
 struct StagesReport {
   std::vector<StageRecord> stages;   // in order; a resumed run's earlier stages included
   double seconds_before_resume = 0;  // the wall time of the processes before a resume, up to their last checkpoint
+  double cpu_seconds_before_resume = 0;  // their CPU time (core/process_cpu.hpp), likewise; -1: unknown
 };
 
 // run.json's form: one flat object of the four fields and the details'.

@@ -140,6 +140,8 @@ void write_run_outputs(RunOutcome& o, const RunOptions& options, const std::stri
                         // a preset may differ by processor class (optim/run/presets.hpp)
                         {"preset", preset_record(options.preset, options.runtime.device)},
                         {"synthesis_seconds", synthesis_seconds},
+                        // the synthesis's CPU time: what its work cost, whatever ran beside it
+                        {"cpu_seconds", o.cpu_seconds},
                         {"total_seconds", o.seconds},
                         {"peak_rss_mib", peak_resident_mib()},
                         {"method_stats", method_stats}};
@@ -168,6 +170,7 @@ RunOutcome load_run(const std::string& dir) {
     o.stats.erase("seconds_before_resume");
   }
   o.seconds = run.total_seconds;
+  o.cpu_seconds = run.cpu_seconds;
   o.exemplar = run_exemplar(dir, o.config);
   o.output = read_points(dir + "/output.txt");
   if (fs::exists(dir + "/init.txt")) o.initialization = read_points(dir + "/init.txt");

@@ -30,6 +30,7 @@ struct RunOutcome {
   nlohmann::json stats, metrics, config;  // stats: the rest of run.json's method_stats
   double seconds = 0;
   double seconds_before_resume = 0;  // the part of `seconds` spent before a resume
+  double cpu_seconds = 0;            // the synthesis's CPU time, every process of it (run.json's cpu_seconds)
   // The exemplar file's format, detected when the run began (the run directory's marker keeps
   // it for a resume, whose machine may not have the file): an exemplar in the published
   // integer format gets its output in that format too (output.gabor.txt).

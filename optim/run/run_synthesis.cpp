@@ -80,6 +80,7 @@ RunOutcome execute(const RunSpec& spec, RunDirectory& dir, const std::string& na
     o.initialization = std::move(res.initialization);
     o.stages = std::move(res.stages);
     o.seconds_before_resume = res.seconds_before_resume;
+    o.cpu_seconds = res.cpu_seconds;
     o.stats = std::move(res.stats);
     o.metrics = std::move(res.metrics);
     write_run_outputs(o, spec.options, name, req.quick, losses, res.seconds, t0);

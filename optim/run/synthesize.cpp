@@ -5,6 +5,7 @@
 #include "core/checkpoint_file.hpp"
 #include "core/content_hash.hpp"
 #include "core/formats/point_io.hpp"
+#include "core/process_cpu.hpp"
 #include "core/metrics/evaluation.hpp"
 #include "optim/run/run_config.hpp"
 #include "optim/run/runtime.hpp"
@@ -73,10 +74,13 @@ SynthesisResult synthesize(const RunSpec& run, const SynthesisOptions& options) 
     throw InputError("the method " + spec.method.value("type", std::string("?")) + " cannot resume a checkpoint");
   }
   const auto t0 = Clock::now();
+  const double cpu0 = process_cpu_seconds();
   r.output = method.synthesize(run.exemplar, ctx);
   // A resumed run's time includes its earlier processes' (up to their last checkpoint).
   r.seconds_before_resume = stages.seconds_before_resume;
   r.seconds = std::chrono::duration<double>(Clock::now() - t0).count() + r.seconds_before_resume;
+  // 0 (not recorded) when the processes before a resume did not keep theirs.
+  if (stages.cpu_seconds_before_resume >= 0) r.cpu_seconds = process_cpu_seconds() - cpu0 + stages.cpu_seconds_before_resume;
   r.initialization = std::move(initial.initial);
   r.stages = std::move(stages.stages);
   if (r.output.empty())  // a rectangle of a point or two whose points all parked outside it

@@ -30,6 +30,10 @@ struct SynthesisResult {
   nlohmann::json metrics;            // evaluate(exemplar, output) when the spec asks, else null
   double seconds = 0;                // wall time of the synthesis (metrics excluded), over every process of a resumed run
   double seconds_before_resume = 0;  // the part of `seconds` spent by the processes before a resume
+  // CPU time of the synthesis (core/process_cpu.hpp), over every process of a resumed run:
+  // unlike `seconds` it does not grow when other work shares the cores. 0: not known (resumed
+  // from a checkpoint that did not keep it).
+  double cpu_seconds = 0;
 };
 
 // Runs the spec's method on its exemplar. Same spec, seed, exemplar and thread count give the

@@ -81,6 +81,9 @@ TEST_CASE("SIGINT mid-stage: exit 130, the resume command printed, --resume fini
   CHECK(info["total_seconds"].get<double>() >= info["synthesis_seconds"].get<double>());
   const auto ref = nlohmann::json::parse(ppsynth::read_file_text(d / "ref" / "run.json"));
   CHECK(ref["method_stats"].value("seconds_before_resume", -1.0) == 0);
+  // The CPU time too: the interrupted process's (its checkpoint kept it) and this one's.
+  CHECK(ref.value("cpu_seconds", 0.0) > 0);
+  CHECK(info.value("cpu_seconds", 0.0) > 0);
   // A finished run has nothing to resume.
   auto done = run_ppsynth("synthesize --resume " + run);
   CHECK(done.status == 2);

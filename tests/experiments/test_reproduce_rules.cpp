@@ -238,6 +238,9 @@ TEST_CASE("over seeds: each seed's runs, their initializations, a generated exem
   CHECK(groups["a/ours"]["all/pcf_mse"]["seeds"] == json{3, 4});
   CHECK(groups["a/init"]["all/pcf_mse"]["seeds"] == json{3, 4});  // each seed's initialization
   CHECK(groups["a/ours"]["run/iterations"]["min"].get<double>() > 0);
+  // Each seed's CPU time, beside its wall time: what a timing rule judges a loaded sweep by.
+  CHECK(groups["a/ours"]["run/cpu_seconds"]["seeds"] == json{3, 4});
+  CHECK(groups["a/ours"]["run/cpu_seconds"]["min"].get<double>() > 0);
   REQUIRE(report["verdict"]["checks"].size() == 1);
   CHECK(report["verdict"]["checks"][0]["numbers"].get<std::string>().find("wins") != std::string::npos);
   // The report's panel is the sweep's seed-3 run (one generated exemplar file for both), not a third run.

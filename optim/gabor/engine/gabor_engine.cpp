@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/checkpoint_file.hpp"
+#include "core/process_cpu.hpp"
 #include "models/device_capabilities.hpp"
 #include "models/gabor_feature_maps.hpp"
 #include "models/network_precision.hpp"
@@ -183,6 +184,7 @@ void GaborEngine::restore(const std::string& bytes) {
   // The time and phases of the processes before this one (0 in checkpoints without them).
   const json& ph = state_.phase_seconds;
   seconds_before_ = ph.value("wall", 0.0);
+  cpu_before_ = ph.contains("cpu") ? ph["cpu"].get<double>() : -1;  // a checkpoint from before it was kept: unknown
   phases_ = GaborPhaseSeconds{ph.value("targets", 0.0),      ph.value("maps_forward", 0.0), ph.value("net_forward", 0.0),
                               ph.value("loss_forward", 0.0), ph.value("backward", 0.0),     ph.value("optimizer_step", 0.0)};
   std::istringstream rng(state_.rng);
@@ -297,6 +299,7 @@ GaborRuntime GaborEngine::runtime_record() const {
 
 PointSet GaborEngine::run() {
   run_start_ = Clock::now();
+  cpu_at_start_ = process_cpu_seconds();
   // The start as `--init` takes it back: a frozen exemplar pad is not part of it.
   ctx_.start(shape_.exemplar_pad ? synthesized() : out_);
   if (ctx_.resume_state) restore(*ctx_.resume_state);
@@ -319,7 +322,7 @@ PointSet GaborEngine::run() {
   const json resolved = pipe_->resolved();
   stats_.resolved = GaborResolved{resolved["rasterizer"], resolved["feature_net"], resolved["losses"]};
   if (ctx_.stats) *ctx_.stats = to_json(stats_);
-  if (ctx_.stages) *ctx_.stages = StagesReport{state_.stages, seconds_before_};
+  if (ctx_.stages) *ctx_.stages = StagesReport{state_.stages, seconds_before_, cpu_before_};
   if (!shape_.rectangle) return out_;
   // "context": the synthesized points, all inside the rectangle (the pad is the exemplar's).
   // "clean": the canvas's border band (the pad) holds the points that parked on its border.
@@ -583,6 +586,7 @@ void GaborEngine::save_checkpoint() {
   // Wall time so far over every process of the run: a resumed run reports its whole time.
   state_.phase_seconds = to_json(phases_);
   state_.phase_seconds["wall"] = seconds_before_ + since(run_start_);
+  if (cpu_before_ >= 0) state_.phase_seconds["cpu"] = cpu_before_ + process_cpu_seconds() - cpu_at_start_;
   ctx_.save_checkpoint(serialize_state(state_));
 }
 

@@ -109,6 +109,8 @@ class GaborEngine {
   std::unique_ptr<PositionOptimizer> optimizer_;
   Clock::time_point stage_start_, last_checkpoint_, run_start_;
   double seconds_before_ = 0;  // wall time of the processes before a resume (from the checkpoint)
+  double cpu_before_ = 0;      // their CPU time (from the checkpoint; -1: unknown, a checkpoint without it)
+  double cpu_at_start_ = 0;    // this process's CPU time when the run began
 };
 
 }  // namespace ppsynth

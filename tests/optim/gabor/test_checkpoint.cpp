@@ -374,3 +374,26 @@ TEST_CASE("L-BFGS's state resumes bit for bit too", "[optim][checkpoint]") {
     CHECK(same_bits(synthesize(ex, &whole.checkpoints[i], nullptr, spec).output, whole.output));
   }
 }
+
+TEST_CASE("a checkpoint keeps the run's CPU time; a resume adds it, or says it is unknown when the checkpoint has none",
+          "[optim][checkpoint][cpu_seconds]") {
+  const PointSet ex = test::small_exemplar(2, false);
+  const Run whole = synthesize(ex);
+  CHECK(whole.report.cpu_seconds_before_resume == 0);  // nothing before an uninterrupted run
+  const std::string& mid = whole.checkpoints[whole.checkpoints.size() / 2];
+  const SynthesisState st = deserialize_state(mid, "test");
+  REQUIRE(st.phase_seconds.contains("cpu"));
+  const double cpu = st.phase_seconds["cpu"].get<double>();
+  CHECK(cpu > 0);  // a run's work up to the checkpoint: something, however little
+  CHECK(synthesize(ex, &mid).report.cpu_seconds_before_resume == cpu);
+  // A checkpoint made before the CPU time was kept (2026-11-30) resumes as before, its CPU time unknown:
+  // -1, which the run records as "not recorded" (0), never as a small number that a timing rule would pass.
+  SynthesisState old = st;
+  old.phase_seconds.erase("cpu");
+  const std::string old_bytes = serialize_state(old);
+  const Run resumed = synthesize(ex, &old_bytes);
+  CHECK(resumed.report.cpu_seconds_before_resume == -1);
+  CHECK(same_bits(resumed.output, whole.output));
+  for (size_t i = 0; i < resumed.checkpoints.size(); ++i)  // and it stays unknown through later resumes
+    CHECK_FALSE(deserialize_state(resumed.checkpoints[i], "test").phase_seconds.contains("cpu"));
+}
