@@ -25,6 +25,7 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/run_directory.hpp"
+#include "core/run_json.hpp"
 #include "core/shell_quote.hpp"
 #include "optim/run/checkpoint_store.hpp"
 #include "models/device_capabilities.hpp"
@@ -242,7 +243,15 @@ ExecutionSummary execute_local(const std::string& sweep_dir, const LocalExecutio
     const SweepRow& row = m.rows[i];
     if (code == 0) {
       ++sum.done;
-      spdlog::info("[{}] {}: done ({:.0f} s)", row.id, row.label, s);
+      double cpu = 0;  // the run's CPU time: what its work cost, however many ran beside it
+      try {
+        cpu = read_run_record((fs::path(sweep_dir) / row.dir / "run.json").string()).cpu_seconds;
+      } catch (const InputError&) {
+      }
+      if (cpu > 0)
+        spdlog::info("[{}] {}: done ({:.0f} s; CPU {:.0f} s)", row.id, row.label, s, cpu);
+      else
+        spdlog::info("[{}] {}: done ({:.0f} s)", row.id, row.label, s);
     } else if (code == 130 || code == 143) {
       ++sum.interrupted;
       // Stopped before its first checkpoint, a row has nothing to resume: say so, not "kept".

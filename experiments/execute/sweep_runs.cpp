@@ -47,8 +47,13 @@ std::vector<RowStatus> sweep_status(const std::string& sweep_dir, const SweepMan
       case RunDirState::Complete: {
         s.state = RowState::Done;
         try {
-          char buf[32];
-          std::snprintf(buf, sizeof buf, "%.1f s", read_run_record(dir + "/run.json").total_seconds);
+          const RunRecord run = read_run_record(dir + "/run.json");
+          char buf[64];
+          // The CPU time beside the wall time: runs sharing the cores inflate only the latter.
+          if (run.cpu_seconds > 0)
+            std::snprintf(buf, sizeof buf, "%.1f s (CPU %.1f s)", run.total_seconds, run.cpu_seconds);
+          else
+            std::snprintf(buf, sizeof buf, "%.1f s", run.total_seconds);
           s.detail = buf;
         } catch (const InputError& e) {
           s.detail = e.what();

@@ -58,8 +58,11 @@ TEST_CASE("a sweep planned, interrupted, run by local tasks, followed and gather
   INFO(run.output);
   REQUIRE(run.status == 0);
   CHECK_THAT(run.output, Catch::Contains("4 done now, 0 failed"));
+  // Each run's wall time and its CPU time (which runs sharing the cores do not inflate).
+  CHECK(std::regex_search(run.output, std::regex(": done \\([0-9]+ s; CPU [0-9]+ s\\)")));
   status = run_ppsynth("sweep status " + dir);
   CHECK_THAT(status.output, Catch::Contains("4 done, 0 running, 0 interrupted, 0 failed, 0 pending"));
+  CHECK(std::regex_search(status.output, std::regex("[0-9.]+ s \\(CPU [0-9.]+ s\\)")));
   CHECK_THAT(run_ppsynth("sweep run " + dir + " --local").output, Catch::Contains("0 done now, 0 failed, 0 interrupted, 4 done"));
 
   // Every run equals the run `synthesize` makes alone (one thread, as the tasks ran).
