@@ -247,6 +247,7 @@ ExecutionSummary execute_local(const std::string& sweep_dir, const LocalExecutio
       try {
         cpu = read_run_record((fs::path(sweep_dir) / row.dir / "run.json").string()).cpu_seconds;
       } catch (const InputError&) {
+        // an unreadable run.json is `sweep status`'s to report; this line then gives the wall time alone
       }
       if (cpu > 0)
         spdlog::info("[{}] {}: done ({:.0f} s; CPU {:.0f} s)", row.id, row.label, s, cpu);
