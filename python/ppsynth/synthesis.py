@@ -128,6 +128,10 @@ class Result:
         ``evaluate(exemplar, output)`` when the config's ``"evaluate"`` is on, else None.
     seconds : float
         Wall time of the synthesis (for a resumed run, of the whole run).
+    cpu_seconds : float or None
+        CPU time of the synthesis, all threads (for a resumed run, of the whole run): unlike
+        ``seconds`` it does not grow when other work shares the cores. None when not known
+        (resumed from a checkpoint written before CPU time was kept).
     threads : int
         LibTorch's thread count: the output depends on it in the last bits.
     processor : str
@@ -147,6 +151,7 @@ class Result:
     stats: dict
     metrics: Optional[Evaluation]
     seconds: float
+    cpu_seconds: Optional[float]
     threads: int
     processor: str
     config: dict
@@ -277,7 +282,13 @@ def synthesize(exemplar=None, config: ConfigLike = None, seed: Optional[int] = N
                            "" if checkpoint_dir is None else os.fspath(checkpoint_dir), int(threads))
     return Result(PointSet._from_native(r["output"]), PointSet._from_native(r["initialization"]), ex,
                   [Stage(**st) for st in r["stages"]], _losses(r["losses"]), r["stats"],
-                  _evaluation_or_none(r["metrics"]), r["seconds"], r["threads"], r["processor"], spec, r["resumed"])
+                  _evaluation_or_none(r["metrics"]), r["seconds"], _cpu_or_none(r["cpu_seconds"]), r["threads"],
+                  r["processor"], spec, r["resumed"])
+
+
+def _cpu_or_none(cpu_seconds: float) -> Optional[float]:
+    """The native layer's CPU time: 0 means not recorded (a resume from an older checkpoint)."""
+    return cpu_seconds if cpu_seconds > 0 else None
 
 
 def _losses(rows) -> Losses:
@@ -305,7 +316,8 @@ def _run_result(r: dict, resumed: bool) -> Result:
     return Result(PointSet._from_native(r["output"]), PointSet._from_native(r["initialization"]),
                   PointSet._from_native(r["exemplar"]), [Stage(**st) for st in r["stages"]], _losses_of_run(r["dir"]),
                   r["stats"],
-                  _evaluation_or_none(r["metrics"]), r["seconds"], int(record.get("threads", 0)),
+                  _evaluation_or_none(r["metrics"]), r["seconds"], _cpu_or_none(r["cpu_seconds"]),
+                  int(record.get("threads", 0)),
                   str(record.get("processor", "")), r["config"], resumed, r["dir"])
 
 

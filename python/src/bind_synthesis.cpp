@@ -179,6 +179,7 @@ py::dict outcome_dict(const RunOutcome& o) {
   d["metrics"] = pyjson::from_json(o.metrics);
   d["config"] = pyjson::from_json(o.config);
   d["seconds"] = o.seconds;
+  d["cpu_seconds"] = o.cpu_seconds;  // 0: not recorded (synthesis.py makes it None)
   return d;
 }
 
@@ -236,6 +237,7 @@ py::dict synthesize_in_memory(const py::dict& exemplar_py, const py::object& con
   d["stats"] = pyjson::from_json(r.stats);
   d["metrics"] = pyjson::from_json(r.metrics);
   d["seconds"] = r.seconds;
+  d["cpu_seconds"] = r.cpu_seconds;  // 0: not recorded (synthesis.py makes it None)
   d["threads"] = used_threads;
   d["processor"] = processor_kind();
   d["resumed"] = resume_state.has_value();

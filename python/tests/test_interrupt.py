@@ -42,6 +42,8 @@ def test_keyboard_interrupt_then_resume_equals_uninterrupted(tmp_path):
     again = ppsynth.synthesize(EXEMPLAR, seed=5, quick=True, threads=1, overrides={"evaluate": False},
                                checkpoint_dir=tmp_path / "ck")
     assert again.resumed
+    # The CPU time spent before the interrupt was kept in the checkpoint and added.
+    assert again.cpu_seconds is not None and again.cpu_seconds > 0
     np.testing.assert_array_equal(again.output.positions, whole.output.positions)
     np.testing.assert_array_equal(again.losses.loss, whole.losses.loss)
     assert not (tmp_path / "ck").exists()  # a finished synthesis removes its checkpoint (and the folder it made)
@@ -69,3 +71,4 @@ def test_run_directory_interrupted_then_resumed(tmp_path):
     assert (tmp_path / "cut" / "output.txt").read_bytes() == (tmp_path / "whole" / "output.txt").read_bytes()
     assert not (tmp_path / "cut" / "checkpoint.bin").exists()
     assert r.dir == str(tmp_path / "cut")
+    assert r.resumed and r.cpu_seconds is not None and r.cpu_seconds > 0

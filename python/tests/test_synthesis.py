@@ -51,6 +51,8 @@ def test_run_equals_the_command_file_for_file(tmp_path):
     run_cmd = json.loads((tmp_path / "cmd" / "run.json").read_text())
     assert run_py["seed"] == run_cmd["seed"] == 7 and run_py["threads"] == run_cmd["threads"] == 1
     assert run_py["processor"] == run_cmd["processor"] != ""
+    # The CPU time is run.json's, and recorded (a quick run still spends some).
+    assert r.cpu_seconds is not None and r.cpu_seconds == run_py["cpu_seconds"] > 0
     assert r.metrics.all.pcf_mse == json.loads((tmp_path / "cmd" / "metrics.json").read_text())["all"]["pcf_mse"]
 
 
@@ -65,6 +67,7 @@ def test_synthesize_in_memory_equals_the_command(tmp_path):
     assert np.all(np.isfinite(r.losses.loss))
     assert r.metrics.all.pcf.r.shape == (100,)
     assert r.config["seed"] == 11 and r.threads == 1 and not r.resumed
+    assert r.cpu_seconds is not None and r.cpu_seconds > 0
     record = json.loads((tmp_path / "cmd" / "run.json").read_text())
     assert r.processor == record["processor"]
     # The stages, typed, with what run.json shows of each beside the four fields.
