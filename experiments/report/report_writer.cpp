@@ -222,13 +222,16 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
   // command's own time is then mostly gathering: say what the sweep's runs took as well.
   std::string time_text = seconds_text(r.seconds);
   if (!o.seeds.empty()) {
-    seed_text = o.seeds + " (the pictures: seed " + (seed_text.empty() ? "-" : seed_text) + ")";
-    double runs_seconds = 0;
-    for (const auto& run : r.seeds.runs)
-      for (const auto& [key, value] : run.values)
-        if (key == "run/seconds") runs_seconds += value;
-    time_text += " for this command; " + std::to_string(r.seeds.runs.size()) + " runs in the sweep took " + seconds_text(runs_seconds) +
-                 " together";
+    // A figure of maps alone (fig03) runs nothing: its pictures are the exemplar's, whatever the seeds.
+    seed_text = o.seeds + (seed_text.empty() ? " (no runs: the pictures are the exemplar's)" : " (the pictures: seed " + seed_text + ")");
+    if (!r.seeds.runs.empty()) {
+      double runs_seconds = 0;
+      for (const auto& run : r.seeds.runs)
+        for (const auto& [key, value] : run.values)
+          if (key == "run/seconds") runs_seconds += value;
+      time_text += " for this command; " + std::to_string(r.seeds.runs.size()) + " runs in the sweep took " +
+                   seconds_text(runs_seconds) + " together";
+    }
   }
   std::time_t now = std::time(nullptr);
   char date[64];
@@ -268,17 +271,20 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
     rep.add_image(dir + "/figure.png", "Exemplar and outputs side by side (figure.png)");
   }
 
-  rep.add_heading("Tables");
+  // A figure without synthesis panels (maps alone) has no metrics: no table of headers only.
+  const ReportTable mt = metrics_table(c, r);
+  if (!c.tables.empty() || !mt.rows.empty()) rep.add_heading("Tables");
   for (auto& t : c.tables) {
     ReportTable tab = build_table(t, c, r);
     write_table_files(tab, dir);
     rep.add_heading(tab.name, 3);
     add_wide_table(rep, tab, "  [" + tab.name + ".csv, " + tab.name + ".md]");
   }
-  ReportTable mt = metrics_table(c, r);
-  write_table_files(mt, dir);
-  rep.add_heading("metrics", 3);
-  add_wide_table(rep, mt, "  [metrics.csv, metrics.md]");
+  if (!mt.rows.empty()) {
+    write_table_files(mt, dir);
+    rep.add_heading("metrics", 3);
+    add_wide_table(rep, mt, "  [metrics.csv, metrics.md]");
+  }
   add_seed_section(rep, r);
 
   json report = {{"name", c.name}, {"title", c.title}, {"claim", c.claim}, {"paper_ref", c.paper_ref}, {"kind", c.kind},

@@ -180,17 +180,30 @@ RunOutcome load_run(const std::string& dir) {
 
 bool same_synthesis(const nlohmann::json& a, const nlohmann::json& b) { return synthesis_key(a) == synthesis_key(b); }
 
-std::string find_matching_run(const nlohmann::json& resolved, bool quick, const std::vector<std::string>& roots) {
+std::string find_matching_run(const nlohmann::json& resolved, bool quick, const std::vector<std::string>& roots,
+                              bool needs_cpu_seconds) {
   const PointSet wanted = load_exemplar(resolved);
+  std::string without_cpu;  // a match left out for want of its CPU time: said once, below
   auto matches = [&](const fs::path& d) {
     if (run_dir_state(d.string()) != RunDirState::Complete) return false;  // only finished runs of ppsynth
     try {
       const nlohmann::json config = read_run_config((d / "config.json").string());
-      return same_synthesis(config, resolved) && read_run_record((d / "run.json").string()).quick == quick &&
-             same_points(run_exemplar(d.string(), config), wanted);
+      const RunRecord record = read_run_record((d / "run.json").string());
+      if (!same_synthesis(config, resolved) || record.quick != quick || !same_points(run_exemplar(d.string(), config), wanted))
+        return false;
+      if (needs_cpu_seconds && record.cpu_seconds <= 0) {
+        if (without_cpu.empty()) without_cpu = d.string();
+        return false;
+      }
+      return true;
     } catch (const InputError&) {
       return false;  // a damaged directory is simply not a match
     }
+  };
+  auto none = [&]() {
+    if (!without_cpu.empty())
+      spdlog::info("not reusing {}: it did not record its CPU time, which the report's rule reads; running it again", without_cpu);
+    return std::string();
   };
   for (auto& root : roots) {
     std::error_code ec;
@@ -203,7 +216,7 @@ std::string find_matching_run(const nlohmann::json& resolved, bool quick, const 
     for (auto& d : subdirs)
       if (matches(d)) return note_made_differently(d.string());
   }
-  return "";
+  return none();
 }
 
 }  // namespace ppsynth

@@ -73,7 +73,11 @@ bool same_synthesis(const nlohmann::json& a, const nlohmann::json& b);
 // the same exemplar points (so a generated exemplar in another report's folder matches);
 // "" when none. Only directories marked complete count. Lets a report reuse long runs
 // instead of repeating them (reproduce --reuse).
-std::string find_matching_run(const nlohmann::json& resolved, bool quick, const std::vector<std::string>& roots);
+// `needs_cpu_seconds`: only runs that recorded their CPU time (run.json `cpu_seconds` > 0;
+// runs before 2026-11-30 did not), for a report whose rule reads run/cpu_seconds (table3):
+// reusing one would leave its check without a number.
+std::string find_matching_run(const nlohmann::json& resolved, bool quick, const std::vector<std::string>& roots,
+                              bool needs_cpu_seconds = false);
 
 // The run's name: the config's, else the exemplar's file stem.
 std::string run_name(const nlohmann::json& resolved);

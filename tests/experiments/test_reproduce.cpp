@@ -13,6 +13,7 @@
 #include "optim/baselines/pcf2017/pcf2017_stats.hpp"
 #include "optim/baselines/roveri2015/roveri2015_stats.hpp"
 #include "optim/run/run_synthesis.hpp"
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/formats/point_io.hpp"
 #include "core/formats/text_table.hpp"
@@ -232,6 +233,18 @@ TEST_CASE("a reproduction writes a report whose numbers match an independent eva
   CHECK(column(r3.panels[0], "ours").metrics["all"]["pcf_mse"] == column(p, "ours").metrics["all"]["pcf_mse"]);
   CHECK_FALSE(fs::exists(d / "rep3/panels/lines/pcf2017/reused_marker"));
   CHECK(find_matching_run(json::parse(ppsynth::read_file_text(d / "pool/lines_a/config.json")), false, o.reuse).empty());
+  // A rule that reads the runs' CPU time (table3) takes no run made before it was recorded
+  // (run.json cpu_seconds 0); any other rule still does.
+  const json lines_config = json::parse(ppsynth::read_file_text(d / "pool/lines_a/config.json"));
+  CHECK(ppsynth::read_run_record((d / "pool/lines_a/run.json").string()).cpu_seconds > 0);
+  CHECK_FALSE(find_matching_run(lines_config, true, {(d / "pool").string()}, true).empty());
+  fs::create_directories(d / "pool_old");
+  fs::copy(d / "pool/lines_a", d / "pool_old/lines_b", fs::copy_options::recursive);
+  json old_record = json::parse(ppsynth::read_file_text(d / "pool_old/lines_b/run.json"));
+  old_record["cpu_seconds"] = 0;
+  ppsynth::write_text_atomic((d / "pool_old/lines_b/run.json").string(), old_record.dump(2) + "\n");
+  CHECK_FALSE(find_matching_run(lines_config, true, {(d / "pool_old").string()}, false).empty());
+  CHECK(find_matching_run(lines_config, true, {(d / "pool_old").string()}, true).empty());
   o.reuse = {};
 }
 
