@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/formats/text_table.hpp"
 #include "core/report/html_report.hpp"
+#include "experiments/plan/reproduce_config.hpp"
 #include "experiments/report/verdict_html.hpp"
 
 namespace fs = std::filesystem;
@@ -42,6 +43,33 @@ struct Item {
   json report;
 };
 
+bool paper_order(const std::string& a, const std::string& b) {
+  return std::make_tuple(item_rank(a), natural(a)) < std::make_tuple(item_rank(b), natural(b));
+}
+
+std::string str(const json& j, const char* key) { return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : ""; }
+
+// The paper's items (configs/paper) without a report in `dir`, as summary rows "not run": the
+// page then says what is left instead of looking complete. None when the source tree's configs
+// are not there (an installed binary).
+std::vector<std::vector<std::string>> not_run_rows(const std::vector<Item>& items) {
+  std::vector<std::vector<std::string>> rows;
+  std::error_code ec;
+  if (!fs::is_directory(paper_config_dir(), ec)) return rows;
+  for (const std::string& file : list_reproduce_configs(paper_config_dir())) {
+    const std::string name = fs::path(file).stem().string();
+    if (std::any_of(items.begin(), items.end(), [&](const Item& it) { return it.dir == name; })) continue;
+    json c;
+    try {
+      c = json::parse(read_file_text(file));
+    } catch (const json::exception&) {
+      c = json::object();  // `ppsynth reproduce --check` names what is wrong with it; here it is a row
+    }
+    rows.push_back({name, str(c, "paper_ref"), str(c, "claim"), "not run", "-", "-"});
+  }
+  return rows;
+}
+
 std::vector<Item> read_reports(const std::string& dir) {
   std::vector<Item> items;
   for (const auto& e : fs::directory_iterator(dir)) {
@@ -56,15 +84,10 @@ std::vector<Item> read_reports(const std::string& dir) {
     if (!j.is_object() || !j.contains("name") || !j["name"].is_string()) throw InputError(file.string() + ": not a report's JSON (no \"name\")");
     items.push_back({e.path().filename().string(), j});
   }
-  std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) {
-    const auto ka = std::make_tuple(item_rank(a.dir), natural(a.dir));
-    const auto kb = std::make_tuple(item_rank(b.dir), natural(b.dir));
-    return ka < kb;
-  });
+  std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return paper_order(a.dir, b.dir); });
   return items;
 }
 
-std::string str(const json& j, const char* key) { return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : ""; }
 
 const json& verdict_of(const json& r) {
   static const json none = {{"verdict", "no verdict (a report made before rules)"}, {"statement", ""}, {"checks", json::array()}};
@@ -143,8 +166,13 @@ size_t write_reproduce_page(const std::string& dir) {
     summary.push_back({it.dir, str(it.report, "paper_ref"), str(it.report, "claim"), v.value("verdict", "?"), checks_passed(v),
                        seeds_text(it.report)});
   }
+  const auto missing = not_run_rows(items);
+  if (!missing.empty()) counts["not run"] = missing.size();
+  summary.insert(summary.end(), missing.begin(), missing.end());
+  std::stable_sort(summary.begin(), summary.end(), [](const auto& a, const auto& b) { return paper_order(a[0], b[0]); });
   std::string tally;
   for (auto& [verdict, n] : counts) tally += (tally.empty() ? "" : ", ") + verdict + ": " + std::to_string(n);
+  const size_t listed = items.size() + missing.size();
   const std::string mode = quick ? "QUICK (smoke-test settings: the verdicts mean nothing about the paper)" : "full settings";
 
   HtmlReport rep("Huang et al. 2022, reproduced: every item, its verdict by rule");
@@ -152,20 +180,23 @@ size_t write_reproduce_page(const std::string& dir) {
   rep.add_paragraph("Each item of the paper is one config in configs/paper; its rule (the config's \"rule\" block, written "
                     "before the runs) decides the verdict from the numbers gathered over the seeds: reproduced when every "
                     "check passes, partly when some do, not reproduced when none does, incomplete when a check has no "
-                    "numbers. Mode: " + mode + ". " + std::to_string(items.size()) + " items; " + tally + ".");
+                    "numbers; not run: no report in this folder yet. Mode: " + mode + ". " + std::to_string(listed) +
+                    " items; " + tally + ".");
   const std::vector<std::string> header = {"item", "paper", "claim", "verdict", "checks passed", "seeds"};
   // As add_table, with the verdict as a colored label and the item linking to its section.
   std::string table = "<table><thead><tr>";
   for (auto& h : header) table += "<th>" + html_escape(h) + "</th>";
   table += "</tr></thead><tbody>\n";
   for (auto& row : summary) {
-    table += "<tr><td><a href=\"#" + html_escape(row[0]) + "\">" + html_escape(row[0]) + "</a></td>";
+    const bool has_section = row[3] != "not run";
+    table += "<tr><td>" + (has_section ? "<a href=\"#" + html_escape(row[0]) + "\">" + html_escape(row[0]) + "</a>" : html_escape(row[0])) +
+             "</td>";
     for (size_t i = 1; i < row.size(); ++i) table += "<td>" + (i == 3 ? verdict_badge(row[i]) : html_escape(row[i])) + "</td>";
     table += "</tr>\n";
   }
   rep.add_html(table + "</tbody></table>\n");
   std::string md = std::string(kMarker) + "\n# Huang et al. 2022, reproduced: every item, its verdict by rule\n\nMode: " + mode + ". " +
-                   std::to_string(items.size()) + " items; " + tally + ".\n\n" + table_markdown(header, summary) + "\n";
+                   std::to_string(listed) + " items; " + tally + ".\n\n" + table_markdown(header, summary) + "\n";
 
   for (const Item& it : items) {
     const json& r = it.report;

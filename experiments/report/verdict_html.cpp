@@ -63,6 +63,7 @@ std::string verdict_badge(const std::string& verdict) {
   const char* color = verdict == "reproduced"       ? "#2ca02c"
                       : verdict == "partly"         ? "#ff7f0e"
                       : verdict == "not reproduced" ? "#d62728"
+                      : verdict == "not run"        ? "#c7c7c7"
                                                     : "#7f7f7f";
   return "<span style=\"background:" + std::string(color) + ";color:#fff;padding:.1rem .5rem;border-radius:.3rem;white-space:nowrap\">" +
          html_escape(verdict) + "</span>";

@@ -297,6 +297,17 @@ TEST_CASE("the page puts every report's verdict beside the claim, and replaces o
   CHECK(html.find("fig03: fig03 title") < html.find("fig10: fig10 title"));    // figures in number order
   CHECK(html.find("fig10: fig10 title") < html.find("table1: table1 title"));  // then tables
   CHECK_THAT(read_file_text((d / "index.md").string()), Catch::Contains("**Verdict by rule: partly**"));
+  // The paper's items without a report here are rows "not run", in the paper's order, with their
+  // claims from configs/paper: the page says what is left.
+  const size_t papers = list_reproduce_configs(paper_config_dir()).size();
+  const std::string md = read_file_text((d / "index.md").string());
+  CHECK_THAT(md, Catch::Contains(std::to_string(papers) + " items; ") && Catch::Contains("not run: " + std::to_string(papers - 3)));
+  const json fig05 = json::parse(read_file_text(find_reproduce_config("fig05")));
+  CHECK_THAT(md, Catch::Contains("| fig05 | " + fig05["paper_ref"].get<std::string>() + " | " + fig05["claim"].get<std::string>() +
+                                 " | not run | - | - |"));
+  CHECK(md.find("| fig05 |") > md.find("| fig03 |"));
+  CHECK(md.find("| fig05 |") < md.find("| fig10 |"));
+  CHECK(md.find("## fig05") == std::string::npos);  // no section without a report
   CHECK(write_reproduce_page(d.string()) == 3);  // its own page is replaced
   std::ofstream(d / "index.html") << "<html>someone's page</html>";
   CHECK_THROWS_WITH(write_reproduce_page(d.string()), Catch::Contains("not replaced"));
