@@ -280,12 +280,13 @@ TEST_CASE("the page puts every report's verdict beside the claim, and replaces o
   report("table1", "table", "not reproduced");
   report("fig10", "figure", "partly");
   report("fig03", "figure", "pictures");
+  report("fig08", "figure", "not run");  // a report whose checks all lack numbers: still linked to its section
   {  // table1's config wrote a diagnosis after its runs; fig10's has none (older reports lack the key)
     json r = json::parse(read_file_text((d / "table1" / "report.json").string()));
     r["diagnosis"] = {{"text", "coincident pairs at the finest sigma"}, {"published_code", "not run: 2 h a run"}, {"see", "docs/lab/close_pairs/README.md"}};
     std::ofstream(d / "table1" / "report.json") << r.dump();
   }
-  CHECK(write_reproduce_page(d.string()) == 3);
+  CHECK(write_reproduce_page(d.string()) == 4);
   const std::string html = read_file_text((d / "index.html").string());
   CHECK_THAT(html, Catch::Contains("coincident pairs at the finest sigma") && Catch::Contains("not run: 2 h a run") &&
                        Catch::Contains("docs/lab/close_pairs/README.md"));
@@ -302,13 +303,15 @@ TEST_CASE("the page puts every report's verdict beside the claim, and replaces o
   const size_t papers = list_reproduce_configs(paper_config_dir()).size();
   const std::string md = read_file_text((d / "index.md").string());
   CHECK_THAT(md, Catch::Contains(std::to_string(papers) + " items; ") && Catch::Contains("not run: " + std::to_string(papers - 3)));
+  CHECK(html.find("href=\"#fig08\"") != std::string::npos);
   const json fig05 = json::parse(read_file_text(find_reproduce_config("fig05")));
   CHECK_THAT(md, Catch::Contains("| fig05 | " + fig05["paper_ref"].get<std::string>() + " | " + fig05["claim"].get<std::string>() +
                                  " | not run | - | - |"));
   CHECK(md.find("| fig05 |") > md.find("| fig03 |"));
   CHECK(md.find("| fig05 |") < md.find("| fig10 |"));
   CHECK(md.find("## fig05") == std::string::npos);  // no section without a report
-  CHECK(write_reproduce_page(d.string()) == 3);  // its own page is replaced
+  CHECK(read_file_text((d / "index.html").string()).find("href=\"#fig05\"") == std::string::npos);
+  CHECK(write_reproduce_page(d.string()) == 4);  // its own page is replaced
   std::ofstream(d / "index.html") << "<html>someone's page</html>";
   CHECK_THROWS_WITH(write_reproduce_page(d.string()), Catch::Contains("not replaced"));
   CHECK(read_file_text((d / "index.html").string()) == "<html>someone's page</html>");
