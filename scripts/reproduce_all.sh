@@ -14,6 +14,12 @@
 #   --only L    only these configs (names, space-separated)
 #   --preset P  ours' runs at a preset (fast: bf16 where the CPU has it, the stopping rule that
 #               keeps a stage's best); the baselines run as their configs say
+#   --keep-runs K  (with --seeds) a compact copy of every finished run of a sweep goes to
+#               K/NAME/RUN within a minute of its end: its points, resolved config and numbers,
+#               no pictures or curves; runs found in K are reused like the sweeps' own. A sweep
+#               outlives the machine it ran on when K does (a folder you keep, or commit): a
+#               later run of this script elsewhere picks up where the last one stopped. Nothing
+#               in K is replaced; a run already kept under its name stays as it is.
 # Full settings take hours on a CPU; --quick is a smoke run. A config that fails is reported
 # and the others still run; the page shows what exists; the exit status is 1 when any failed.
 # A report already in OUT_DIR/NAME is replaced (--force): this script made it.
@@ -41,15 +47,21 @@ shift $(( $# >= 2 ? 2 : $# ))
 extra=()
 seeds=""
 only=""
+keep=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --seeds) seeds="${2:?--seeds needs a value, e.g. 95-99}"; shift 2 ;;
     --only) only="${2:?--only needs config names}"; shift 2 ;;
+    --keep-runs) keep="${2:?--keep-runs needs a directory}"; shift 2 ;;
     *) extra+=("$1"); shift ;;
   esac
 done
 if [[ ! -x "$bin" ]]; then
   echo "reproduce_all: no ppsynth binary at $bin (build it, or pass its path as the 2nd argument)" >&2
+  exit 2
+fi
+if [[ -n "$keep" && -z "$seeds" ]]; then
+  echo "reproduce_all: --keep-runs keeps the runs of sweeps over seeds; give --seeds too" >&2
   exit 2
 fi
 for name in $only; do
@@ -58,7 +70,42 @@ for name in $only; do
     exit 2
   fi
 done
+# keep_runs RUNS KEPT: the finished runs under RUNS, each copied to KEPT/RUN with the files a
+# reuse and a report read (load_run: config, records, points, metrics, the completion marker),
+# not the pictures, snapshots and logs, which a report draws again from the points. Through a
+# temporary name and a rename, so a kill leaves no half-kept run that would count as finished.
+keep_runs() {
+  local runs="$1" kept="$2" run name
+  [[ -d "$runs" ]] || return 0
+  mkdir -p "$kept"
+  for run in "$runs"/*/; do
+    run="${run%/}"
+    name="$(basename "$run")"
+    [[ -e "$kept/$name" ]] && continue
+    grep -q '"state": *"complete"' "$run/.ppsynth-run" 2>/dev/null || continue
+    rm -rf "$kept/.$name.partial"
+    mkdir -p "$kept/.$name.partial"
+    for f in .ppsynth-run config.json run.json output.txt output.*.txt init.txt exemplar.txt; do
+      [[ -f "$run/$f" ]] && cp "$run/$f" "$kept/.$name.partial/"
+    done
+    # metrics.json without the K/L/g and mark-correlation curves (nine tenths of its bytes):
+    # the numbers a gather and a report read (l_sup, the verdict, the scorecard, the PCF) stay.
+    [[ -f "$run/metrics.json" ]] && /usr/bin/python3 -c '
+import json, sys
+m = json.load(open(sys.argv[1]))
+so = m.get("second_order")
+if isinstance(so, dict):
+    so.pop("mark_correlation", None)
+    for row in so.get("rows", []):
+        for curve in ("r", "exemplar", "output"):
+            row.pop(curve, None)
+json.dump(m, open(sys.argv[2], "w"), separators=(",", ":"))
+' "$run/metrics.json" "$kept/.$name.partial/metrics.json"
+    mv "$kept/.$name.partial" "$kept/$name"
+  done
+}
 mkdir -p "$out"
+[[ -n "$keep" ]] && mkdir -p "$keep"
 start=$(date +%s)
 summary=()
 failed=()
@@ -72,11 +119,26 @@ for cfg in "$root"/configs/paper/*.json; do
     for runs in "$out"/sweeps/*/runs; do
       [[ -d "$runs" && "$runs" != "$out/sweeps/$name/runs" ]] && args+=(--reuse "$runs")
     done
+    if [[ -n "$keep" ]]; then
+      for runs in "$keep"/*/; do
+        [[ -d "$runs" ]] && args+=(--reuse "${runs%/}")
+      done
+    fi
   fi
   t0=$(date +%s)
   echo "=== $name"
   status=ok
+  keeper=""
+  if [[ -n "$keep" ]]; then  # keeps each run as it finishes, so a machine lost mid-config loses no finished run
+    ( while sleep 60; do keep_runs "$out/sweeps/$name/runs" "$keep/$name"; done ) &
+    keeper=$!
+  fi
   "$bin" "${args[@]}" || { status=FAILED; failed+=("$name"); }
+  if [[ -n "$keeper" ]]; then
+    kill "$keeper" 2>/dev/null || true
+    wait "$keeper" 2>/dev/null || true
+    keep_runs "$out/sweeps/$name/runs" "$keep/$name"
+  fi
   t1=$(date +%s)
   summary+=("$(printf '%-26s %6d s  %s' "$name" $((t1 - t0)) "$status")")
 done

@@ -36,3 +36,40 @@ TEST_CASE("reproduce_all.sh refuses an option where OUT_DIR goes, and an unknown
     CHECK(fs::is_empty(d));  // nothing written: no OUT_DIR, no directory named after an option
   }
 }
+
+// --keep-runs: the sweep's finished runs are copied, without their pictures, to a folder that
+// outlives the machine, and a later run of the script on a new OUT_DIR reuses them instead of
+// running them again (the machines of a long reproduction do not outlive a session).
+TEST_CASE("reproduce_all.sh --keep-runs keeps a compact copy of each finished run, and a later plan reuses it",
+          "[apps][script][reproduce_all]") {
+  const auto d = test::scratch_dir("reproduce_all_keep");
+  const std::string script = std::string(PPSYNTH_SOURCE_DIR) + "/scripts/reproduce_all.sh";
+  const std::string bin = test::ppsynth_binary();
+  const std::string kept = (d / "kept").string();
+
+  const auto refused = test::run_program(script, "out " + bin + " --only fig15 --keep-runs " + kept, "cd " + d.string() + " &&");
+  INFO(refused.output);
+  CHECK(refused.status == 2);
+  CHECK(refused.output.find("--keep-runs keeps the runs of sweeps over seeds; give --seeds too") != std::string::npos);
+  CHECK(fs::is_empty(d));
+
+  const std::string args = bin + " --only fig15 --quick --seeds 95 --keep-runs " + kept;
+  const auto first = test::run_program(script, "out1 " + args, "cd " + d.string() + " && PPSYNTH_THREADS=1");
+  INFO(first.output);
+  REQUIRE(first.status == 0);
+  std::vector<fs::path> runs;
+  for (auto& e : fs::directory_iterator(fs::path(kept) / "fig15")) runs.push_back(e.path());
+  REQUIRE(runs.size() == 1);  // ours; the initialization is not a run
+  for (const char* f : {".ppsynth-run", "config.json", "run.json", "output.txt", "init.txt", "exemplar.txt"})
+    CHECK(fs::exists(runs[0] / f));
+  CHECK_FALSE(fs::exists(runs[0] / "exemplar_vs_output.png"));  // pictures are drawn again, not kept
+  CHECK_FALSE(fs::exists(runs[0] / "snapshots"));
+  const auto kept_output = fs::last_write_time(runs[0] / "output.txt");
+
+  const auto second = test::run_program(script, "out2 " + args, "cd " + d.string() + " && PPSYNTH_THREADS=1");
+  INFO(second.output);
+  REQUIRE(second.status == 0);
+  CHECK(second.output.find("reusing the finished run " + runs[0].string()) != std::string::npos);
+  CHECK(fs::exists(d / "out2" / "fig15" / "report.json"));
+  CHECK(fs::last_write_time(runs[0] / "output.txt") == kept_output);  // a kept run is never replaced
+}
