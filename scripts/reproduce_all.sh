@@ -19,7 +19,8 @@
 #               no pictures or curves; runs found in K are reused like the sweeps' own. A sweep
 #               outlives the machine it ran on when K does (a folder you keep, or commit): a
 #               later run of this script elsewhere picks up where the last one stopped. Nothing
-#               in K is replaced; a run already kept under its name stays as it is.
+#               in K is replaced; a run already kept under its name stays as it is, and a run
+#               one item reused from another's is kept once.
 # Full settings take hours on a CPU; --quick is a smoke run. A config that fails is reported
 # and the others still run; the page shows what exists; the exit status is 1 when any failed.
 # A report already in OUT_DIR/NAME is replaced (--force): this script made it.
@@ -81,7 +82,9 @@ keep_runs() {
   for run in "$runs"/*/; do
     run="${run%/}"
     name="$(basename "$run")"
-    [[ -e "$kept/$name" ]] && continue
+    # kept already, here or under an earlier item (the sweeps name a run by its config and
+    # seed, and an item that reused another's run holds the same run)
+    compgen -G "$(dirname "$kept")/*/$name" > /dev/null && continue
     grep -q '"state": *"complete"' "$run/.ppsynth-run" 2>/dev/null || continue
     rm -rf "$kept/.$name.partial"
     mkdir -p "$kept/.$name.partial"

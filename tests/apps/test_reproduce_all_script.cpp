@@ -53,23 +53,28 @@ TEST_CASE("reproduce_all.sh --keep-runs keeps a compact copy of each finished ru
   CHECK(refused.output.find("--keep-runs keeps the runs of sweeps over seeds; give --seeds too") != std::string::npos);
   CHECK(fs::is_empty(d));
 
-  const std::string args = bin + " --only fig15 --quick --seeds 95 --keep-runs " + kept;
+  // fig15's one panel is fig08's second row: the same runs, which fig15 reuses and which are kept once.
+  const std::string args = bin + " --only 'fig08 fig15' --quick --seeds 95 --keep-runs " + kept;
   const auto first = test::run_program(script, "out1 " + args, "cd " + d.string() + " && PPSYNTH_THREADS=1");
   INFO(first.output);
   REQUIRE(first.status == 0);
   std::vector<fs::path> runs;
-  for (auto& e : fs::directory_iterator(fs::path(kept) / "fig15")) runs.push_back(e.path());
-  REQUIRE(runs.size() == 1);  // ours; the initialization is not a run
-  for (const char* f : {".ppsynth-run", "config.json", "run.json", "output.txt", "init.txt", "exemplar.txt"})
-    CHECK(fs::exists(runs[0] / f));
-  CHECK_FALSE(fs::exists(runs[0] / "exemplar_vs_output.png"));  // pictures are drawn again, not kept
-  CHECK_FALSE(fs::exists(runs[0] / "snapshots"));
+  for (auto& e : fs::directory_iterator(fs::path(kept) / "fig08")) runs.push_back(e.path());
+  REQUIRE(runs.size() == 2);  // ours on each row; the initialization is not a run
+  CHECK((!fs::exists(fs::path(kept) / "fig15") || fs::is_empty(fs::path(kept) / "fig15")));
+  for (const auto& run : runs) {
+    for (const char* f : {".ppsynth-run", "config.json", "run.json", "output.txt", "init.txt", "exemplar.txt", "metrics.json"})
+      CHECK(fs::exists(run / f));
+    CHECK_FALSE(fs::exists(run / "exemplar_vs_output.png"));  // pictures are drawn again, not kept
+    CHECK_FALSE(fs::exists(run / "snapshots"));
+  }
   const auto kept_output = fs::last_write_time(runs[0] / "output.txt");
 
   const auto second = test::run_program(script, "out2 " + args, "cd " + d.string() + " && PPSYNTH_THREADS=1");
   INFO(second.output);
   REQUIRE(second.status == 0);
-  CHECK(second.output.find("reusing the finished run " + runs[0].string()) != std::string::npos);
+  for (const auto& run : runs) CHECK(second.output.find("reusing the finished run " + run.string()) != std::string::npos);
+  CHECK(second.output.find(": done (") == std::string::npos);  // nothing synthesized again
   CHECK(fs::exists(d / "out2" / "fig15" / "report.json"));
   CHECK(fs::last_write_time(runs[0] / "output.txt") == kept_output);  // a kept run is never replaced
 }
