@@ -133,7 +133,9 @@ for cfg in "$root"/configs/paper/*.json; do
   status=ok
   keeper=""
   if [[ -n "$keep" ]]; then  # keeps each run as it finishes, so a machine lost mid-config loses no finished run
-    ( while sleep 60; do keep_runs "$out/sweeps/$name/runs" "$keep/$name"; done ) &
+    # The sleep away from our stdout: killing the loop leaves it running out its minute, and
+    # holding the pipe it would keep a caller reading our output (`| tee`) waiting for it.
+    ( while sleep 60 < /dev/null > /dev/null 2>&1; do keep_runs "$out/sweeps/$name/runs" "$keep/$name"; done ) &
     keeper=$!
   fi
   "$bin" "${args[@]}" || { status=FAILED; failed+=("$name"); }
