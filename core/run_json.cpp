@@ -79,6 +79,12 @@ RunRecord parse_run_record(const nlohmann::json& j, const std::string& source) {
       throw key_error(source, "threads", "expected a thread count in [1, 1024]");
     r.threads = j["threads"].get<int>();
   }
+  if (has("preset")) {
+    const nlohmann::json& preset = j["preset"];
+    if (!preset.is_object() || (preset.contains("variant") && !preset["variant"].is_string()))
+      throw key_error(source, "preset", "expected null or an object with a string \"variant\"");
+    r.preset_variant = preset.value("variant", "");
+  }
   seconds("synthesis_seconds", r.synthesis_seconds);
   seconds("total_seconds", r.total_seconds);
   seconds("cpu_seconds", r.cpu_seconds);

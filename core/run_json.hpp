@@ -39,6 +39,9 @@ struct RunRecord {
   bool quick = false;
   int threads = 0;          // 0: not recorded
   std::string processor;    // "": not recorded
+  // The preset's variant that ran (run.json preset.variant, optim/run/presets.hpp): "every
+  // processor" or "without bf16 units"; "": no preset, or not recorded.
+  std::string preset_variant;
   double synthesis_seconds = 0, total_seconds = 0;
   double cpu_seconds = 0;   // the synthesis's CPU time (0: not recorded, runs before 2026-11-30)
   nlohmann::json method_stats = nlohmann::json::object();

@@ -76,9 +76,12 @@ done
 # not the pictures, snapshots and logs, which a report draws again from the points. Through a
 # temporary name and a rename, so a kill leaves no half-kept run that would count as finished.
 keep_runs() {
-  local runs="$1" kept="$2" run name
+  local runs="$1" kept="$2" run name kept_records
   [[ -d "$runs" ]] || return 0
   mkdir -p "$kept"
+  # The run records kept so far, by content: a run reused from K under another name (a run
+  # the other kind of processor made, whose config resolves otherwise here) is kept once.
+  kept_records="$(for f in "$(dirname "$kept")"/*/*/run.json; do if [[ -f "$f" ]]; then md5sum < "$f"; fi; done)"
   for run in "$runs"/*/; do
     run="${run%/}"
     name="$(basename "$run")"
@@ -86,6 +89,7 @@ keep_runs() {
     # seed, and an item that reused another's run holds the same run)
     compgen -G "$(dirname "$kept")/*/$name" > /dev/null && continue
     grep -q '"state": *"complete"' "$run/.ppsynth-run" 2>/dev/null || continue
+    if [[ -f "$run/run.json" ]] && grep -qxF "$(md5sum < "$run/run.json")" <<< "$kept_records"; then continue; fi
     rm -rf "$kept/.$name.partial"
     mkdir -p "$kept/.$name.partial"
     for f in .ppsynth-run config.json run.json output.txt output.*.txt init.txt exemplar.txt; do

@@ -118,7 +118,37 @@ nlohmann::json preset_record(const nlohmann::json& preset, const nlohmann::json&
   else if (entry.contains("without_bf16_units"))
     reason = f32 ? "no bf16 tensor cores known on the CUDA device (" + kind + "; they start at compute capability 8.0)"
                  : "the CUDA device's bf16 tensor cores (" + kind + ")";
-  return {{"name", preset}, {"variant", f32 ? "without bf16 units" : "every processor"}, {"reason", reason}};
+  return {{"name", preset}, {"variant", f32 ? kPresetWithoutBf16Units : kPresetEveryProcessor}, {"reason", reason}};
+}
+
+namespace {
+
+// Erases from `config` every leaf of `fragment` that `config` holds with the same value, and
+// the objects that leaves empty.
+void erase_equal_leaves(nlohmann::json& config, const nlohmann::json& fragment) {
+  if (!config.is_object() || !fragment.is_object()) return;
+  for (auto it = fragment.begin(); it != fragment.end(); ++it) {
+    if (!config.contains(it.key())) continue;
+    nlohmann::json& mine = config[it.key()];
+    if (it.value().is_object() && mine.is_object()) {
+      erase_equal_leaves(mine, it.value());
+      if (mine.empty()) config.erase(it.key());
+    } else if (mine == it.value()) {
+      config.erase(it.key());
+    }
+  }
+}
+
+}  // namespace
+
+nlohmann::json as_every_processor_variant(nlohmann::json resolved, const std::string& variant) {
+  if (variant != kPresetWithoutBf16Units || !resolved.is_object() || !resolved.contains("preset") || !resolved["preset"].is_string())
+    return resolved;
+  const nlohmann::json all = presets();
+  const std::string name = resolved["preset"].get<std::string>();
+  if (!all.contains(name) || !all[name].contains("without_bf16_units")) return resolved;
+  erase_equal_leaves(resolved, all[name]["without_bf16_units"]);
+  return resolved;
 }
 
 }  // namespace ppsynth

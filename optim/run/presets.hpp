@@ -37,4 +37,16 @@ nlohmann::json apply_preset(const nlohmann::json& config);
 // without a preset.
 nlohmann::json preset_record(const nlohmann::json& preset, const nlohmann::json& device);
 
+// The variants preset_record names.
+inline constexpr const char* kPresetEveryProcessor = "every processor";
+inline constexpr const char* kPresetWithoutBf16Units = "without bf16 units";
+
+// A run config resolved under its preset's `variant` (preset_record's), as the preset's
+// "every processor" variant resolves it: one made "without bf16 units" loses the values that
+// variant's fragment set, where it holds exactly them; any other comes back unchanged. Two
+// runs of one request on machines of both kinds then compare equal (run_store's
+// find_matching_run), so a sweep kept across machines (docs/lab/reproduce_runs) reuses each
+// run as its preset's run, whichever kind made it; run.json says which did.
+nlohmann::json as_every_processor_variant(nlohmann::json resolved, const std::string& variant);
+
 }  // namespace ppsynth

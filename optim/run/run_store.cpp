@@ -183,18 +183,36 @@ bool same_synthesis(const nlohmann::json& a, const nlohmann::json& b) { return s
 std::string find_matching_run(const nlohmann::json& resolved, bool quick, const std::vector<std::string>& roots,
                               bool needs_cpu_seconds) {
   const PointSet wanted = load_exemplar(resolved);
+  // The preset's variant this process resolved `resolved` under: a run of the same request made
+  // under the other variant (a machine of the other kind) is the preset's run too.
+  std::string wanted_variant;
+  try {
+    const nlohmann::json& runtime = resolved.contains("runtime") ? resolved["runtime"] : nlohmann::json::object();
+    const nlohmann::json preset = preset_record(resolved.value("preset", nlohmann::json()), runtime.value("device", nlohmann::json()));
+    if (preset.is_object()) wanted_variant = preset["variant"].get<std::string>();
+  } catch (const InputError&) {
+    // a device this machine lacks: only runs of the identical config match
+  }
+  auto same_request = [&](const nlohmann::json& config, const RunRecord& record) {
+    if (same_synthesis(config, resolved)) return true;
+    if (wanted_variant.empty() || record.preset_variant.empty() || record.preset_variant == wanted_variant) return false;
+    return same_synthesis(as_every_processor_variant(config, record.preset_variant), as_every_processor_variant(resolved, wanted_variant));
+  };
   std::string without_cpu;  // a match left out for want of its CPU time: said once, below
   auto matches = [&](const fs::path& d) {
     if (run_dir_state(d.string()) != RunDirState::Complete) return false;  // only finished runs of ppsynth
     try {
       const nlohmann::json config = read_run_config((d / "config.json").string());
       const RunRecord record = read_run_record((d / "run.json").string());
-      if (!same_synthesis(config, resolved) || record.quick != quick || !same_points(run_exemplar(d.string(), config), wanted))
+      if (record.quick != quick || !same_request(config, record) || !same_points(run_exemplar(d.string(), config), wanted))
         return false;
       if (needs_cpu_seconds && record.cpu_seconds <= 0) {
         if (without_cpu.empty()) without_cpu = d.string();
         return false;
       }
+      if (!wanted_variant.empty() && !record.preset_variant.empty() && record.preset_variant != wanted_variant)
+        spdlog::info("{}: its preset ran as '{}', where this processor takes '{}': the same request, reused as the preset's run", d.string(),
+                     record.preset_variant, wanted_variant);
       return true;
     } catch (const InputError&) {
       return false;  // a damaged directory is simply not a match

@@ -76,6 +76,9 @@ bool same_synthesis(const nlohmann::json& a, const nlohmann::json& b);
 // `needs_cpu_seconds`: only runs that recorded their CPU time (run.json `cpu_seconds` > 0;
 // runs before 2026-11-30 did not), for a report whose rule reads run/cpu_seconds (table3):
 // reusing one would leave its check without a number.
+// A run made under the other variant of the config's preset (a machine with bf16 units where
+// this one has none, or the reverse) matches when the request was the same
+// (presets.hpp's as_every_processor_variant); the reuse warns of the other processor.
 std::string find_matching_run(const nlohmann::json& resolved, bool quick, const std::vector<std::string>& roots,
                               bool needs_cpu_seconds = false);
 

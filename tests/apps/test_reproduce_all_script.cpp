@@ -77,4 +77,18 @@ TEST_CASE("reproduce_all.sh --keep-runs keeps a compact copy of each finished ru
   CHECK(second.output.find(": done (") == std::string::npos);  // nothing synthesized again
   CHECK(fs::exists(d / "out2" / "fig15" / "report.json"));
   CHECK(fs::last_write_time(runs[0] / "output.txt") == kept_output);  // a kept run is never replaced
+
+  // A run kept under another name (a machine of the other processor class names its runs by
+  // the config it resolved there) and reused here is not kept again under this machine's name.
+  const fs::path elsewhere = fs::path(kept) / "fig08" / "made_elsewhere";
+  fs::rename(runs[0], elsewhere);
+  const auto third = test::run_program(script, "out3 " + args, "cd " + d.string() + " && PPSYNTH_THREADS=1");
+  INFO(third.output);
+  REQUIRE(third.status == 0);
+  CHECK(third.output.find("reusing the finished run " + elsewhere.string()) != std::string::npos);
+  CHECK(third.output.find(": done (") == std::string::npos);
+  size_t kept_now = 0;
+  for (const auto& item : fs::directory_iterator(kept))
+    for (auto& e : fs::directory_iterator(item.path())) kept_now += e.is_directory() ? 1 : 0;
+  CHECK(kept_now == 2);
 }
