@@ -71,8 +71,12 @@ TEST_CASE("config.json: a resolved run config or an error naming the file and ke
 
 TEST_CASE("run.json: typed, whatever was edited into it", "[run_files]") {
   const RunRecord r = parse_run_record({{"seed", 96}, {"quick", true}, {"threads", 2}, {"processor", "x (AVX2)"},
-                                       {"total_seconds", 1.5}, {"method_stats", {{"stages", 4}}}}, "run.json");
+                                       {"total_seconds", 1.5}, {"method_stats", {{"stages", 4}}},
+                                       {"preset", {{"name", "fast"}, {"variant", "without bf16 units"}, {"reason", "no bf16 units"}}}},
+                                      "run.json");
   CHECK(r.seed == 96);
+  CHECK(r.preset_variant == "without bf16 units");
+  CHECK(parse_run_record({{"preset", nullptr}}, "run.json").preset_variant.empty());  // a run without a preset
   CHECK(r.quick);
   CHECK(r.threads == 2);
   CHECK(r.total_seconds == 1.5);
@@ -80,7 +84,7 @@ TEST_CASE("run.json: typed, whatever was edited into it", "[run_files]") {
   CHECK(parse_run_record(nlohmann::json::object(), "run.json").seed == 0);  // runs made before a key was recorded
   for (const auto& [key, value] : std::vector<std::pair<std::string, nlohmann::json>>{
            {"seed", "95"}, {"quick", 1}, {"threads", 0}, {"threads", "4"}, {"total_seconds", -1}, {"total_seconds", "x"},
-           {"processor", 5}, {"method_stats", nlohmann::json::array()}}) {
+           {"processor", 5}, {"method_stats", nlohmann::json::array()}, {"preset", "fast"}, {"preset", {{"variant", 1}}}}) {
     INFO(key << " = " << value.dump());
     CHECK_THROWS_WITH(parse_run_record({{key, value}}, "r/run.json"), Catch::Contains("r/run.json") && Catch::Contains("'" + key + "'"));
   }
