@@ -144,6 +144,12 @@ ReportTable relative_radius_table(const TableSpec& t, const ReproduceConfig& c, 
   return tab;
 }
 
+// "AMD EPYC (avx512_bf16), preset variant 'every processor'": the run's processor and preset variant.
+std::string processor_cell(const ColumnResult& col) {
+  const std::string processor = col.processor.empty() ? "not recorded" : col.processor;
+  return col.preset_variant.empty() ? processor : processor + ", preset variant '" + col.preset_variant + "'";
+}
+
 ReportTable runtime_table(const TableSpec& t, const ReproduceConfig& c, const ReproduceResult& r) {
   const std::string who = t.methods.empty() ? "ours" : t.methods.front();
   // Published columns in Table 3's order first (JSON objects do not keep their key order).
@@ -158,7 +164,9 @@ ReportTable runtime_table(const TableSpec& t, const ReproduceConfig& c, const Re
   tab.header = {"scene", "classes", "map attributes", "exemplar points", "output points", "iterations (" + who + ")",
                 "synthesis s (" + who + ")", "synthesis min (" + who + ")", "s per iteration (" + who + ")",
                 // what the work cost, whatever shared the cores (0: the run did not record it)
-                "synthesis CPU s (" + who + ")", "run total s"};
+                "synthesis CPU s (" + who + ")", "run total s",
+                // times compare only on one kind of processor, and reused runs may come from several
+                "processor (" + who + ")"};
   for (auto& k : paper_keys) tab.header.push_back("paper: " + k);
   for (auto& pr : r.panels) {
     const PanelSpec& s = table_panel_spec(c, pr);
@@ -176,7 +184,7 @@ ReportTable runtime_table(const TableSpec& t, const ReproduceConfig& c, const Re
                                     // capped runs (a 2-core machine) compare by cost per iteration
                                     ok && cr->iterations > 0 ? format_cell(cr->synthesis_seconds / cr->iterations, 2) : "n/a",
                                     ok && cr->cpu_seconds > 0 ? seconds_cell(cr->cpu_seconds) : "n/a",
-                                    ok ? seconds_cell(cr->seconds) : "n/a"};
+                                    ok ? seconds_cell(cr->seconds) : "n/a", ok ? processor_cell(*cr) : "n/a"};
     for (auto& k : paper_keys) row.push_back(s.paper.contains(k) ? format_cell(s.paper[k], 2) : "");
     tab.rows.push_back(row);
   }

@@ -123,7 +123,8 @@ json add_panel_section(HtmlReport& rep, const ReproduceConfig& c, const Reproduc
   for (auto& col : p.columns) {
     json cj = {{"column", col.column}, {"status", col.status}, {"source", col.source}, {"run_dir", col.run_dir},
                {"points", col.output.size()}, {"seconds", col.seconds}, {"synthesis_seconds", col.synthesis_seconds},
-               {"iterations", col.iterations}, {"metrics", without_curves(col.metrics)}};
+               {"iterations", col.iterations}, {"cpu_seconds", col.cpu_seconds}, {"processor", col.processor},
+               {"preset_variant", col.preset_variant}, {"metrics", without_curves(col.metrics)}};
     pj["columns"].push_back(cj);
     if (col.status == "pending") {
       rep.add_paragraph(col.column + ": not available (the method is not registered in this build).");
@@ -142,7 +143,9 @@ json add_panel_section(HtmlReport& rep, const ReproduceConfig& c, const Reproduc
                         {"seed", std::to_string(run_options.seed)},
                         {"iterations (all stages)", std::to_string(col.iterations)},
                         {"synthesis wall time", seconds_text(col.synthesis_seconds)},
-                        {"run wall time (with plots and metrics)", seconds_text(col.seconds)}});
+                        {"run wall time (with plots and metrics)", seconds_text(col.seconds)},
+                        {"made on", col.processor.empty() ? "not recorded" : col.processor},
+                        {"preset variant", col.preset_variant.empty() ? "no preset" : col.preset_variant}});
     std::vector<std::pair<std::string, std::string>> row;
     if (fs::exists(run + "/loss.png")) row.push_back({run + "/loss.png", "loss per iteration"});
     if (fs::exists(run + "/pcf.png")) row.push_back({run + "/pcf.png", "PCF: exemplar vs output"});

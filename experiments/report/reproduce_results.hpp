@@ -52,6 +52,9 @@ struct ColumnResult {
   double synthesis_seconds = 0;
   double cpu_seconds = 0;     // the synthesis's CPU time (0: the run did not record it)
   int iterations = 0;         // optimization iterations over all stages
+  // What made the run (run.json): its times compare only with runs of the same processor and
+  // preset variant, and a reused run may come from another machine.
+  std::string processor, preset_variant;  // "": not recorded / no preset
 };
 
 struct PanelResult {

@@ -125,7 +125,10 @@ ColumnResult synthesize(const ReproduceConfig& c, const PanelSpec& p, const std:
   r.seconds = out.seconds;
   r.cpu_seconds = out.cpu_seconds;
   r.iterations = total_iterations(out);
-  r.synthesis_seconds = read_run_record(out.dir + "/run.json").synthesis_seconds;
+  const RunRecord record = read_run_record(out.dir + "/run.json");
+  r.synthesis_seconds = record.synthesis_seconds;
+  r.processor = record.processor;
+  r.preset_variant = record.preset_variant;
   if (pr.exemplar.empty()) pr.exemplar = out.exemplar;
   if (column == "ours") {
     ours_init = out.initialization;

@@ -18,6 +18,7 @@
 #include "core/formats/point_io.hpp"
 #include "core/formats/text_table.hpp"
 #include "core/log.hpp"
+#include "core/processor.hpp"
 #include "core/metrics/evaluation.hpp"
 #include "tests/support/scratch_dir.hpp"
 
@@ -203,11 +204,14 @@ TEST_CASE("a reproduction writes a report whose numbers match an independent eva
   CHECK(rr.find("0.7300") != std::string::npos);
   const std::string rt = ppsynth::read_file_text(d / "rep/runtime.csv");
   CHECK(rt.find("s per iteration (ours)") != std::string::npos);
+  CHECK(rt.find("processor (ours)") != std::string::npos);
+  CHECK(rt.find(ppsynth::processor_kind()) != std::string::npos);  // the run's, from its run.json
 
   json rep = json::parse(ppsynth::read_file_text(d / "rep/report.json"));
   CHECK(rep["quick"] == true);
   CHECK(rep["panels"][0]["columns"].size() == 5);
   CHECK(rep["panels"][0]["columns"][0]["metrics"]["all"]["pcf_mse"] == column(p, "ours").metrics["all"]["pcf_mse"]);
+  CHECK(rep["panels"][0]["columns"][0]["processor"] == ppsynth::processor_kind());
 
   // Same config and seed: byte-identical outputs.
   o.out = (d / "rep2").string();
