@@ -21,6 +21,10 @@
 #               later run of this script elsewhere picks up where the last one stopped. Nothing
 #               in K is replaced; a run already kept under its name stays as it is, and a run
 #               one item reused from another's is kept once.
+#   --kept-only (with --keep-runs) no new run: each item's sweep is planned, what K holds is
+#               reused, and an item is reported only when every run of it is there; the others
+#               are listed with the runs they lack (the page then says "not run"). The page over
+#               what a kept sweep holds, in minutes, on any machine.
 # Full settings take hours on a CPU; --quick is a smoke run. A config that fails is reported
 # and the others still run; the page shows what exists; the exit status is 1 when any failed.
 # A report already in OUT_DIR/NAME is replaced (--force): this script made it.
@@ -49,16 +53,22 @@ extra=()
 seeds=""
 only=""
 keep=""
+kept_only=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --seeds) seeds="${2:?--seeds needs a value, e.g. 95-99}"; shift 2 ;;
     --only) only="${2:?--only needs config names}"; shift 2 ;;
     --keep-runs) keep="${2:?--keep-runs needs a directory}"; shift 2 ;;
+    --kept-only) kept_only=1; shift ;;
     *) extra+=("$1"); shift ;;
   esac
 done
 if [[ ! -x "$bin" ]]; then
   echo "reproduce_all: no ppsynth binary at $bin (build it, or pass its path as the 2nd argument)" >&2
+  exit 2
+fi
+if [[ -n "$kept_only" && -z "$keep" ]]; then
+  echo "reproduce_all: --kept-only reports what --keep-runs K holds; give --keep-runs too" >&2
   exit 2
 fi
 if [[ -n "$keep" && -z "$seeds" ]]; then
@@ -134,9 +144,27 @@ for cfg in "$root"/configs/paper/*.json; do
   fi
   t0=$(date +%s)
   echo "=== $name"
+  if [[ -n "$kept_only" ]]; then
+    # Planned, with what K holds copied in. An item without runs (Fig. 3's maps) has no sweep:
+    # planning it draws its report, and that is all it needs.
+    if ! "$bin" "${args[@]}" --plan-only > /dev/null; then
+      failed+=("$name"); summary+=("$(printf '%-26s %6s    %s' "$name" - "FAILED (its plan)")"); continue
+    fi
+    if [[ ! -f "$out/sweeps/$name/manifest.json" ]]; then
+      summary+=("$(printf '%-26s %6d s  %s' "$name" $(($(date +%s) - t0)) "ok (nothing to run)")"); continue
+    else
+      counts="$("$bin" sweep status "$out/sweeps/$name" | head -1 | sed -E 's/.*: ([0-9]+) runs: ([0-9]+) done.*/\1 \2/')"
+      read -r planned done_runs <<< "$counts"
+      if [[ "$planned" != "$done_runs" ]]; then
+        echo "$name: $((planned - done_runs)) of its $planned runs are not kept; not reported (--kept-only)"
+        summary+=("$(printf '%-26s %6s    %s' "$name" - "not reported: $((planned - done_runs)) of $planned runs not kept")")
+        continue
+      fi
+    fi
+  fi
   status=ok
   keeper=""
-  if [[ -n "$keep" ]]; then  # keeps each run as it finishes, so a machine lost mid-config loses no finished run
+  if [[ -n "$keep" && -z "$kept_only" ]]; then  # keeps each run as it finishes, so a machine lost mid-config loses no finished run
     # The sleep away from our stdout: killing the loop leaves it running out its minute, and
     # holding the pipe it would keep a caller reading our output (`| tee`) waiting for it.
     ( while sleep 60 < /dev/null > /dev/null 2>&1; do keep_runs "$out/sweeps/$name/runs" "$keep/$name"; done ) &
@@ -146,6 +174,8 @@ for cfg in "$root"/configs/paper/*.json; do
   if [[ -n "$keeper" ]]; then
     kill "$keeper" 2>/dev/null || true
     wait "$keeper" 2>/dev/null || true
+  fi
+  if [[ -n "$keep" && -z "$kept_only" ]]; then
     keep_runs "$out/sweeps/$name/runs" "$keep/$name"
   fi
   t1=$(date +%s)

@@ -109,6 +109,24 @@ std::string overrides_text(const json& r) {
   return t.empty() ? "the configs' own" : t;
 }
 
+// The preset variants the item's runs were made under (numbers.made_under), counted over its
+// groups and seeds: "without bf16 units (25)", "every processor (10), without bf16 units (5)".
+// Kept runs come from machines of both kinds; this line says which network each item rests on.
+std::map<std::string, int> variant_counts(const json& r) {
+  std::map<std::string, int> count;
+  if (r.contains("numbers") && r["numbers"].contains("made_under"))
+    for (auto& [group, by_seed] : r["numbers"]["made_under"].items())
+      for (auto& [seed, variant] : by_seed.items())
+        if (variant.is_string()) ++count[variant.get<std::string>()];
+  return count;
+}
+
+std::string variants_text(const std::map<std::string, int>& count) {
+  std::string t;
+  for (auto& [variant, n] : count) t += (t.empty() ? "" : ", ") + variant + " (" + std::to_string(n) + ")";
+  return t.empty() ? "no preset recorded" : t;
+}
+
 std::string seeds_text(const json& r) {
   const std::string s = str(r, "seeds");
   return s.empty() ? "one (the config's)" : s;
@@ -159,9 +177,11 @@ size_t write_reproduce_page(const std::string& dir) {
   std::map<std::string, size_t> counts;
   std::vector<std::vector<std::string>> summary;
   bool quick = false;
+  std::map<std::string, int> variants;  // over every item's runs (a run two items share counts twice)
   for (const Item& it : items) {
     const json& v = verdict_of(it.report);
     ++counts[v.value("verdict", "?")];
+    for (auto& [variant, n] : variant_counts(it.report)) variants[variant] += n;
     quick = quick || it.report.value("quick", false);
     summary.push_back({it.dir, str(it.report, "paper_ref"), str(it.report, "claim"), v.value("verdict", "?"), checks_passed(v),
                        seeds_text(it.report)});
@@ -173,7 +193,8 @@ size_t write_reproduce_page(const std::string& dir) {
   std::string tally;
   for (auto& [verdict, n] : counts) tally += (tally.empty() ? "" : ", ") + verdict + ": " + std::to_string(n);
   const size_t listed = items.size() + missing.size();
-  const std::string mode = quick ? "QUICK (smoke-test settings: the verdicts mean nothing about the paper)" : "full settings";
+  const std::string mode = (quick ? "QUICK (smoke-test settings: the verdicts mean nothing about the paper)" : "full settings") +
+                           std::string("; the runs made under the preset variants ") + variants_text(variants) + ", counted per item";
 
   HtmlReport rep("Huang et al. 2022, reproduced: every item, its verdict by rule");
   rep.add_html(std::string(kMarker) + "\n");
@@ -211,6 +232,7 @@ size_t write_reproduce_page(const std::string& dir) {
                         {"mode", r.value("quick", false) ? "QUICK" : "full settings"},
                         {"report", it.dir + "/index.html"},
                         {"settings", overrides_text(r)},
+                        {"made under", variants_text(variant_counts(r))},
                         {"revision", str(r, "revision")}});
     add_verdict_section(rep, v, 3);
     add_diagnosis_section(rep, r.contains("diagnosis") ? r["diagnosis"] : json(), 4);
@@ -229,10 +251,11 @@ size_t write_reproduce_page(const std::string& dir) {
                    "\"><figcaption>" + html_escape(caption) + "</figcaption></figure>\n");
 
     md += "\n## " + it.dir + ": " + str(r, "title") + "\n\n> **Paper's claim.** " + str(r, "claim") + "\n\n**Verdict by rule: " +
-          v.value("verdict", "?") + "** (seeds: " + seeds_text(r) + ")\n\n";
+          v.value("verdict", "?") + "** (seeds: " + seeds_text(r) + "; settings: " + overrides_text(r) +
+          "; made under: " + variants_text(variant_counts(r)) + ")\n\n";
     if (!str(v, "statement").empty()) md += "Rule: " + str(v, "statement") + "\n\n";
     std::vector<std::vector<std::string>> checks;
-    for (auto& k : v["checks"]) checks.push_back({k.value("check", ""), k.value("state", ""), k.value("numbers", "")});
+    for (auto& k : v["checks"]) checks.push_back({k.value("check", ""), k.value("state", ""), check_numbers_text(k)});
     if (!checks.empty()) md += table_markdown({"check", "result", "numbers"}, checks) + "\n";
     md += diagnosis_markdown(r.contains("diagnosis") ? r["diagnosis"] : json());
     md += numbers_markdown(numbers, metrics);

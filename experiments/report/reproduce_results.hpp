@@ -25,6 +25,9 @@ struct ReproduceOptions {
   // Finished run directories to reuse (find_matching_run): a synthesized column whose resolved
   // config equals one of theirs is copied into the report instead of being run again.
   std::vector<std::string> reuse;
+  // Reuse only runs made under this machine's preset variant (find_matching_run's ReuseRule):
+  // the runs of the other variant are made again here, so every arm is compared like for like.
+  bool reuse_own_variant = false;
   // Only these panels (by name; all when empty). The report says which were left out.
   std::vector<std::string> panels;
   // Over seeds: "95-99" or "95,97" runs every synthesized column with each seed as a sweep

@@ -72,6 +72,26 @@ std::optional<double> target_value(const ItemNumbers& n, const json& t, const st
   return s.median();
 }
 
+// The preset variants a group's runs were made under, in words: "without bf16 units (5)",
+// "every processor (3), without bf16 units (2)"; "" when none recorded one.
+std::string variants_of(const ItemNumbers& n, const std::string& group) {
+  auto g = n.made_under.find(group);
+  if (g == n.made_under.end()) return "";
+  std::map<std::string, int> count;
+  for (auto& [seed, variant] : g->second) ++count[variant];
+  std::string out;
+  for (auto& [variant, k] : count) out += (out.empty() ? "" : ", ") + variant + " (" + std::to_string(k) + ")";
+  return out;
+}
+
+// Says, once per check, which compared groups ran under which variant when they differ.
+void note_mixed(CheckResult& r, const ItemNumbers& n, const std::string& group, const std::string& other) {
+  const std::string a = variants_of(n, group), b = variants_of(n, other);
+  if (a.empty() || b.empty() || a == b) return;
+  const std::string pair = group + ": " + a + "; " + other + ": " + b;
+  if (r.mixed_variants.find(pair) == std::string::npos) r.mixed_variants += (r.mixed_variants.empty() ? "" : " | ") + pair;
+}
+
 // |value - target| for each value (a "better ... toward" check compares distances).
 Series toward(Series s, double target) {
   for (auto& [seed, v] : s.by_seed) v = std::fabs(v - target);
@@ -127,6 +147,7 @@ CheckResult judge_better(const RuleCheck& k, const ItemNumbers& n) {
         }
     }
     if (pairs == 0) return fail_no_data("a seed both " + k.group + " and " + t + " ran");
+    note_mixed(r, n, k.group, t);
     const bool median_ok = beats(g.median(), o.median());
     const bool share_ok = wins >= needed(k.min_share, pairs);
     r.numbers += "; " + t + " " + num(o.median()) + (o.fixed ? " (drawn once)" : "") + ": wins " + std::to_string(wins) + "/" +
@@ -153,6 +174,7 @@ std::optional<Compared> compared(const RuleCheck& k, const ItemNumbers& n, const
     return std::nullopt;
   }
   c.t = *t;
+  if (spec.is_string() && spec != "exemplar") note_mixed(r, n, k.group, spec.get<std::string>());
   return c;
 }
 
@@ -217,7 +239,10 @@ ItemVerdict judge_item(const ReproduceRule& rule, const ItemNumbers& numbers) {
 
 json verdict_json(const ItemVerdict& v) {
   json j = {{"verdict", v.verdict}, {"statement", v.statement}, {"checks", json::array()}};
-  for (auto& c : v.checks) j["checks"].push_back({{"check", c.text}, {"state", c.state}, {"numbers", c.numbers}});
+  for (auto& c : v.checks) {
+    j["checks"].push_back({{"check", c.text}, {"state", c.state}, {"numbers", c.numbers}});
+    if (!c.mixed_variants.empty()) j["checks"].back()["mixed_variants"] = c.mixed_variants;
+  }
   return j;
 }
 
@@ -237,6 +262,8 @@ json numbers_json(const ItemNumbers& n) {
       j["groups"][group][metric] = {{"fixed", true}, {"n", 1}, {"median", x}, {"min", x}, {"max", x}, {"q1", x}, {"q3", x}};
   for (auto& [panel, metrics] : n.exemplar)
     for (auto& [metric, x] : metrics) j["exemplar"][panel][metric] = x;
+  for (auto& [group, by_seed] : n.made_under)
+    for (auto& [seed, variant] : by_seed) j["made_under"][group][std::to_string(seed)] = variant;
   return j;
 }
 

@@ -69,6 +69,13 @@ std::string verdict_badge(const std::string& verdict) {
          html_escape(verdict) + "</span>";
 }
 
+std::string check_numbers_text(const json& check) {
+  std::string text = check.value("numbers", std::string());
+  const std::string mixed = check.value("mixed_variants", std::string());
+  if (!mixed.empty()) text += ". Not like for like, the runs made under different preset variants: " + mixed;
+  return text;
+}
+
 void add_verdict_section(HtmlReport& rep, const json& verdict, int level) {
   rep.add_heading("Verdict by rule: " + verdict.value("verdict", std::string("?")), level);
   rep.add_html("<p>" + verdict_badge(verdict.value("verdict", std::string("?"))) + "</p>\n");
@@ -76,7 +83,7 @@ void add_verdict_section(HtmlReport& rep, const json& verdict, int level) {
   if (!statement.empty()) rep.add_paragraph("Rule (written before the runs): " + statement);
   std::vector<std::vector<std::string>> rows;
   if (verdict.contains("checks"))
-    for (auto& k : verdict["checks"]) rows.push_back({k["check"], k["state"], k["numbers"]});
+    for (auto& k : verdict["checks"]) rows.push_back({k["check"], k["state"], check_numbers_text(k)});
   if (!rows.empty()) rep.add_table({"check", "result", "the numbers that decided it"}, rows);
 }
 

@@ -23,6 +23,9 @@ std::string spread_cell(const nlohmann::json& groups, const std::string& group, 
 
 // The verdict as a colored label (HTML): green reproduced, orange partly, red not reproduced.
 std::string verdict_badge(const std::string& verdict);
+// A check's numbers in words (verdict_json's "numbers"), and when its groups ran under
+// different preset variants, that it is not like for like and which ran under which.
+std::string check_numbers_text(const nlohmann::json& check);
 // verdict_json()'s object: the verdict, the statement, the checks table.
 void add_verdict_section(HtmlReport& rep, const nlohmann::json& verdict, int level = 2);
 // A config's "diagnosis" (reproduce_config.hpp; written after the runs): why the verdict falls

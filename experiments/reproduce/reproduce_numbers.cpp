@@ -9,6 +9,7 @@
 #include "core/formats/point_io.hpp"
 #include "core/metrics/evaluation.hpp"
 #include "core/metrics/metric_values.hpp"
+#include "core/run_json.hpp"
 #include "optim/baselines/pcf2017/pcf2017_stats.hpp"
 #include "optim/baselines/roveri2015/roveri2015_stats.hpp"
 #include "optim/run/run_options_of.hpp"
@@ -88,6 +89,7 @@ void from_sweep(const ReproduceConfig& c, const ReproduceResult& r, ItemNumbers&
     const RunOutcome o = load_run(run.dir);
     if (auto ov = overlap_pairs(o.metrics, "output")) n.per_seed[group]["all/overlap_pairs"][run.seed] = *ov;
     n.per_seed[group]["run/iterations"][run.seed] = total_iterations(o);
+    if (const std::string v = read_run_record(run.dir + "/run.json").preset_variant; !v.empty()) n.made_under[group][run.seed] = v;
     if (!n.exemplar.count(p->name)) add_exemplar(n, p->name, o.metrics);
     if (column == "ours" && !o.initialization.empty())
       add_metrics(n.per_seed[p->name + "/init"], run.seed, evaluate(o.exemplar, o.initialization, init_eval_options()),
@@ -114,6 +116,7 @@ void from_panels(const ReproduceResult& r, ItemNumbers& n) {
         group["run/seconds"][seed] = col.seconds;
         if (col.cpu_seconds > 0) group["run/cpu_seconds"][seed] = col.cpu_seconds;  // 0: not recorded
         group["run/iterations"][seed] = col.iterations;
+        if (!col.preset_variant.empty()) n.made_under[pr.name + "/" + col.column][seed] = col.preset_variant;
       }
     }
   }

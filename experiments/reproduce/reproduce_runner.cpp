@@ -43,6 +43,13 @@ bool rule_reads_cpu_seconds(const ReproduceConfig& c) {
   return std::any_of(c.rule.checks.begin(), c.rule.checks.end(), [](const RuleCheck& k) { return k.metric == "run/cpu_seconds"; });
 }
 
+ReuseRule reuse_rule(const ReproduceConfig& c, const ReproduceOptions& o) {
+  ReuseRule rule;
+  rule.needs_cpu_seconds = rule_reads_cpu_seconds(c);
+  rule.other_variant = !o.reuse_own_variant;
+  return rule;
+}
+
 // The exemplar of a panel with "exemplar_generator", and its description.
 PointSet generated_points(const PanelSpec& p, bool quick, std::string& description) {
   json spec = p.generator["generator"];
@@ -102,7 +109,7 @@ ColumnResult synthesize(const ReproduceConfig& c, const PanelSpec& p, const std:
   }
   const std::string rel = "panels/" + p.name + "/" + column;
   RunOutcome out;
-  const std::string reused = o.reuse.empty() ? "" : find_matching_run(resolved, o.quick, o.reuse, rule_reads_cpu_seconds(c));
+  const std::string reused = o.reuse.empty() ? "" : find_matching_run(resolved, o.quick, o.reuse, reuse_rule(c, o));
   if (!reused.empty()) {
     spdlog::info("[{}/{}] '{}': reusing the finished run {}", c.name, p.name, column, reused);
     fs::create_directories(fs::path(report_dir + "/" + rel).parent_path());
@@ -289,12 +296,12 @@ std::string write_sweep_inputs(const ReproduceConfig& c, ReproduceOptions& o, co
 
 // Runs of the sweep not made yet whose resolved config a finished run under --reuse has: copied
 // in, seed by seed, so they are not run again.
-void reuse_into_sweep(const std::string& sweep_dir, const std::vector<std::string>& reuse, bool needs_cpu_seconds) {
+void reuse_into_sweep(const std::string& sweep_dir, const std::vector<std::string>& reuse, ReuseRule rule) {
   if (reuse.empty()) return;
   for (const SweepRow& row : load_sweep(sweep_dir).rows) {
     const fs::path d = fs::path(sweep_dir) / row.dir;
     if (fs::exists(d)) continue;
-    const std::string found = find_matching_run(row.config, row.quick, reuse, needs_cpu_seconds);
+    const std::string found = find_matching_run(row.config, row.quick, reuse, rule);
     if (found.empty()) continue;
     spdlog::info("[{}] {}: reusing the finished run {}", row.id, row.label, found);
     fs::create_directories(d.parent_path());
@@ -314,7 +321,7 @@ std::string run_seed_sweep(const ReproduceConfig& c, ReproduceOptions& o) {
   if (!o.panels.empty()) spec["panels"] = panels;
   const PlanSummary plan = plan_sweep(expand_sweep_spec(spec, c.source, fs::path(c.source).parent_path().string()), dir);
   spdlog::info("[{}] over seeds {}: {} runs in the sweep {}", c.name, o.seeds, plan.rows, plan.dir);
-  reuse_into_sweep(plan.dir, o.reuse, rule_reads_cpu_seconds(c));
+  reuse_into_sweep(plan.dir, o.reuse, reuse_rule(c, o));
   if (o.plan_only) return plan.dir;
   if (o.task_binary.empty()) throw InputError("--seeds: no executable to run the sweep's tasks with");
   LocalExecution how;

@@ -180,8 +180,7 @@ RunOutcome load_run(const std::string& dir) {
 
 bool same_synthesis(const nlohmann::json& a, const nlohmann::json& b) { return synthesis_key(a) == synthesis_key(b); }
 
-std::string find_matching_run(const nlohmann::json& resolved, bool quick, const std::vector<std::string>& roots,
-                              bool needs_cpu_seconds) {
+std::string find_matching_run(const nlohmann::json& resolved, bool quick, const std::vector<std::string>& roots, ReuseRule rule) {
   const PointSet wanted = load_exemplar(resolved);
   // The preset's variant this process resolved `resolved` under: a run of the same request made
   // under the other variant (a machine of the other kind) is the preset's run too.
@@ -193,9 +192,14 @@ std::string find_matching_run(const nlohmann::json& resolved, bool quick, const 
   } catch (const InputError&) {
     // a device this machine lacks: only runs of the identical config match
   }
+  // First pass: runs made under this machine's own variant (the identical config); only when
+  // none exists, a run of the other variant. An item's arms are then compared like for like
+  // wherever this machine made their runs: 64 float32 filters against 120 bf16 ones is the
+  // same request, but not the same network.
+  bool other_variant_allowed = false;
   auto same_request = [&](const nlohmann::json& config, const RunRecord& record) {
     if (same_synthesis(config, resolved)) return true;
-    if (wanted_variant.empty() || record.preset_variant.empty() || record.preset_variant == wanted_variant) return false;
+    if (!other_variant_allowed || wanted_variant.empty() || record.preset_variant.empty() || record.preset_variant == wanted_variant) return false;
     return same_synthesis(as_every_processor_variant(config, record.preset_variant), as_every_processor_variant(resolved, wanted_variant));
   };
   std::string without_cpu;  // a match left out for want of its CPU time: said once, below
@@ -206,11 +210,11 @@ std::string find_matching_run(const nlohmann::json& resolved, bool quick, const 
       const RunRecord record = read_run_record((d / "run.json").string());
       if (record.quick != quick || !same_request(config, record) || !same_points(run_exemplar(d.string(), config), wanted))
         return false;
-      if (needs_cpu_seconds && record.cpu_seconds <= 0) {
+      if (rule.needs_cpu_seconds && record.cpu_seconds <= 0) {
         if (without_cpu.empty()) without_cpu = d.string();
         return false;
       }
-      if (!wanted_variant.empty() && !record.preset_variant.empty() && record.preset_variant != wanted_variant)
+      if (other_variant_allowed && !same_synthesis(config, resolved))
         spdlog::info("{}: its preset ran as '{}', where this processor takes '{}': the same request, reused as the preset's run", d.string(),
                      record.preset_variant, wanted_variant);
       return true;
@@ -223,15 +227,21 @@ std::string find_matching_run(const nlohmann::json& resolved, bool quick, const 
       spdlog::info("not reusing {}: it did not record its CPU time, which the report's rule reads; running it again", without_cpu);
     return std::string();
   };
+  std::vector<fs::path> candidates;  // each root itself, then its subdirectories in name order
   for (auto& root : roots) {
     std::error_code ec;
     if (!fs::is_directory(root, ec)) throw InputError("--reuse " + root + ": not a directory");
-    if (matches(root)) return note_made_differently(root);
+    candidates.push_back(root);
     std::vector<fs::path> subdirs;
     for (auto& e : fs::directory_iterator(root, ec))
       if (e.is_directory()) subdirs.push_back(e.path());
     std::sort(subdirs.begin(), subdirs.end());  // deterministic choice when several match
-    for (auto& d : subdirs)
+    candidates.insert(candidates.end(), subdirs.begin(), subdirs.end());
+  }
+  for (bool other : {false, true}) {
+    if (other && !rule.other_variant) break;
+    other_variant_allowed = other;
+    for (auto& d : candidates)
       if (matches(d)) return note_made_differently(d.string());
   }
   return none();

@@ -73,14 +73,20 @@ bool same_synthesis(const nlohmann::json& a, const nlohmann::json& b);
 // the same exemplar points (so a generated exemplar in another report's folder matches);
 // "" when none. Only directories marked complete count. Lets a report reuse long runs
 // instead of repeating them (reproduce --reuse).
-// `needs_cpu_seconds`: only runs that recorded their CPU time (run.json `cpu_seconds` > 0;
+// `rule.needs_cpu_seconds`: only runs that recorded their CPU time (run.json `cpu_seconds` > 0;
 // runs before 2026-11-30 did not), for a report whose rule reads run/cpu_seconds (table3):
 // reusing one would leave its check without a number.
 // A run made under the other variant of the config's preset (a machine with bf16 units where
 // this one has none, or the reverse) matches when the request was the same
-// (presets.hpp's as_every_processor_variant); the reuse warns of the other processor.
+// (presets.hpp's as_every_processor_variant) and no run of this machine's own variant does;
+// the reuse warns of the other processor. `other_variant` false: only this machine's variant,
+// so an item's arms are compared like for like (reproduce --reuse-own-variant).
+struct ReuseRule {
+  bool needs_cpu_seconds = false;
+  bool other_variant = true;
+};
 std::string find_matching_run(const nlohmann::json& resolved, bool quick, const std::vector<std::string>& roots,
-                              bool needs_cpu_seconds = false);
+                              ReuseRule rule = {});
 
 // The run's name: the config's, else the exemplar's file stem.
 std::string run_name(const nlohmann::json& resolved);

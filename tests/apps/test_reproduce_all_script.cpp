@@ -91,4 +91,24 @@ TEST_CASE("reproduce_all.sh --keep-runs keeps a compact copy of each finished ru
   for (const auto& item : fs::directory_iterator(kept))
     for (auto& e : fs::directory_iterator(item.path())) kept_now += e.is_directory() ? 1 : 0;
   CHECK(kept_now == 2);
+
+  // --kept-only: no new run. fig08 and fig15 are reported from what is kept; fig04 (nothing
+  // kept) is listed with the runs it lacks, not run, and the page is made over the other two.
+  const auto lone = test::run_program(script, "out4 " + bin + " --only fig04 --quick --seeds 95 --kept-only", "cd " + d.string() + " &&");
+  CHECK(lone.status == 2);
+  CHECK(lone.output.find("--kept-only reports what --keep-runs K holds; give --keep-runs too") != std::string::npos);
+  const auto fourth = test::run_program(script, "out4 " + bin + " --only 'fig04 fig08 fig15' --quick --seeds 95 --keep-runs " + kept + " --kept-only",
+                                        "cd " + d.string() + " && PPSYNTH_THREADS=1");
+  INFO(fourth.output);
+  REQUIRE(fourth.status == 0);
+  CHECK(fourth.output.find("fig04: 1 of its 1 runs are not kept; not reported (--kept-only)") != std::string::npos);
+  CHECK(fourth.output.find(": done (") == std::string::npos);
+  CHECK_FALSE(fs::exists(d / "out4" / "fig04" / "report.json"));
+  CHECK(fs::exists(d / "out4" / "fig08" / "report.json"));
+  CHECK(fs::exists(d / "out4" / "fig15" / "report.json"));
+  CHECK(fs::exists(d / "out4" / "index.html"));
+  size_t kept_after = 0;
+  for (const auto& item : fs::directory_iterator(kept))
+    for (auto& e : fs::directory_iterator(item.path())) kept_after += e.is_directory() ? 1 : 0;
+  CHECK(kept_after == 2);
 }

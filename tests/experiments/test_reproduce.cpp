@@ -240,15 +240,17 @@ TEST_CASE("a reproduction writes a report whose numbers match an independent eva
   // A rule that reads the runs' CPU time (table3) takes no run made before it was recorded
   // (run.json cpu_seconds 0); any other rule still does.
   const json lines_config = json::parse(ppsynth::read_file_text(d / "pool/lines_a/config.json"));
+  ReuseRule needs_cpu;
+  needs_cpu.needs_cpu_seconds = true;
   CHECK(ppsynth::read_run_record((d / "pool/lines_a/run.json").string()).cpu_seconds > 0);
-  CHECK_FALSE(find_matching_run(lines_config, true, {(d / "pool").string()}, true).empty());
+  CHECK_FALSE(find_matching_run(lines_config, true, {(d / "pool").string()}, needs_cpu).empty());
   fs::create_directories(d / "pool_old");
   fs::copy(d / "pool/lines_a", d / "pool_old/lines_b", fs::copy_options::recursive);
   json old_record = json::parse(ppsynth::read_file_text(d / "pool_old/lines_b/run.json"));
   old_record["cpu_seconds"] = 0;
   ppsynth::write_text_atomic((d / "pool_old/lines_b/run.json").string(), old_record.dump(2) + "\n");
-  CHECK_FALSE(find_matching_run(lines_config, true, {(d / "pool_old").string()}, false).empty());
-  CHECK(find_matching_run(lines_config, true, {(d / "pool_old").string()}, true).empty());
+  CHECK_FALSE(find_matching_run(lines_config, true, {(d / "pool_old").string()}, ReuseRule{}).empty());
+  CHECK(find_matching_run(lines_config, true, {(d / "pool_old").string()}, needs_cpu).empty());
   o.reuse = {};
 }
 

@@ -12,6 +12,7 @@
 #include "core/formats/text_table.hpp"
 #include "core/log.hpp"
 #include "core/paths.hpp"
+#include "core/processor.hpp"
 #include "core/run_directory.hpp"
 #include "experiments/plan/reproduce_config.hpp"
 #include "experiments/plan/sweep_plan.hpp"
@@ -19,6 +20,7 @@
 #include "experiments/report/reproduce_verdict.hpp"
 #include "experiments/report/verdict_html.hpp"
 #include "experiments/reproduce/reproduce_runner.hpp"
+#include "optim/run/presets.hpp"
 #include "optim/run/run_config.hpp"
 #include "tests/support/run_command.hpp"
 #include "tests/support/scratch_dir.hpp"
@@ -213,6 +215,40 @@ TEST_CASE("verdicts follow from the numbers by the rule", "[reproduce_rules]") {
   CHECK_THAT(v.checks[0].numbers, Catch::Contains("0.513") && Catch::Contains("0.761") && Catch::Contains("32.6 %"));
 }
 
+TEST_CASE("a check between groups made under different preset variants says it is not like for like", "[reproduce_rules]") {
+  ItemNumbers n;
+  n.per_seed["a/ours"]["all/pcf_mse"] = five(0.010, 0.011, 0.009, 0.012, 0.010);
+  n.per_seed["a/pcf2017"]["all/pcf_mse"] = five(0.020, 0.021, 0.019, 0.022, 0.020);
+  n.per_seed["a/reference"]["all/pcf_mse"] = five(0.020, 0.021, 0.019, 0.022, 0.020);
+  for (uint64_t seed = 95; seed <= 99; ++seed) {
+    n.made_under["a/ours"][seed] = "every processor";  // reused from a machine with bf16 units
+    n.made_under["a/pcf2017"][seed] = "without bf16 units";
+    n.made_under["a/reference"][seed] = "every processor";
+  }
+  n.made_under["a/ours"][99] = "without bf16 units";
+  auto only = [&](const json& c) {
+    const ItemVerdict v = judge_item(rule_of({{"statement", "s"}, {"checks", {c}}}), n);
+    REQUIRE(v.checks.size() == 1);
+    return v.checks[0];
+  };
+  const CheckResult mixed = only({{"type", "better"}, {"metric", "all/pcf_mse"}, {"group", "a/ours"}, {"than", {"a/pcf2017"}}});
+  CHECK(mixed.state == "pass");  // the rule's state stands; the check says what it compared
+  CHECK(mixed.mixed_variants == "a/ours: every processor (4), without bf16 units (1); a/pcf2017: without bf16 units (5)");
+  const json within = {{"type", "within"}, {"metric", "all/pcf_mse"}, {"group", "a/pcf2017"}, {"target", "a/ours"}, {"tolerance", 2.0}};
+  CHECK(only(within).mixed_variants == "a/pcf2017: without bf16 units (5); a/ours: every processor (4), without bf16 units (1)");
+  CHECK(verdict_json(judge_item(rule_of({{"statement", "s"}, {"checks", {within}}}), n))["checks"][0].contains("mixed_variants"));
+  CHECK_THAT(check_numbers_text(verdict_json(judge_item(rule_of({{"statement", "s"}, {"checks", {within}}}), n))["checks"][0]),
+             Catch::Contains("Not like for like") && Catch::Contains("a/pcf2017: without bf16 units (5)"));
+
+  // The same variants on both sides, or a side without a preset: nothing to say.
+  n.made_under["a/ours"][99] = "every processor";
+  CHECK(only({{"type", "better"}, {"metric", "all/pcf_mse"}, {"group", "a/ours"}, {"than", {"a/reference"}}}).mixed_variants.empty());
+  n.made_under.erase("a/pcf2017");
+  const CheckResult unrecorded = only({{"type", "better"}, {"metric", "all/pcf_mse"}, {"group", "a/ours"}, {"than", {"a/pcf2017"}}});
+  CHECK(unrecorded.mixed_variants.empty());
+  CHECK_FALSE(verdict_json(judge_item(rule_of({{"statement", "s"}, {"checks", {within}}}), n))["checks"][0].contains("mixed_variants"));
+}
+
 TEST_CASE("over seeds: each seed's runs, their initializations, a generated exemplar, --reuse per seed", "[reproduce_rules]") {
   // Through the command: a sweep's tasks run in processes of their own.
   const fs::path d = ppsynth::test::scratch_dir("reproduce_rules_seeds");
@@ -229,7 +265,7 @@ TEST_CASE("over seeds: each seed's runs, their initializations, a generated exem
               {"diagnosis", {{"text", "a diagnosis written after the runs"}}}};
   const std::string file = (d / "gen.json").string();
   std::ofstream(file) << fig.dump(2);
-  const std::string base = "reproduce " + file + " --quick --seeds 3-4";
+  const std::string base = "reproduce " + file + " --quick --seeds 3-4 --preset fast";
   auto r = ppsynth::test::run_ppsynth(base + " -o " + (d / "report").string() + " --sweep " + (d / "sweep").string(), "PPSYNTH_THREADS=1");
   INFO(r.output);
   REQUIRE(r.status == 0);
@@ -243,6 +279,10 @@ TEST_CASE("over seeds: each seed's runs, their initializations, a generated exem
   CHECK(groups["a/ours"]["run/cpu_seconds"]["min"].get<double>() > 0);
   REQUIRE(report["verdict"]["checks"].size() == 1);
   CHECK(report["verdict"]["checks"][0]["numbers"].get<std::string>().find("wins") != std::string::npos);
+  // Each seed's preset variant, from its run.json: what a check's like-for-like note reads.
+  const std::string variant = cpu_isa().native_bf16 ? kPresetEveryProcessor : kPresetWithoutBf16Units;
+  CHECK(report["numbers"]["made_under"]["a/ours"] == json{{"3", variant}, {"4", variant}});
+  CHECK_FALSE(report["verdict"]["checks"][0].contains("mixed_variants"));  // ours and its own start
   // The report's panel is the sweep's seed-3 run (one generated exemplar file for both), not a third run.
   CHECK(report["panels"][0]["columns"][0]["source"].get<std::string>().find("reused from") != std::string::npos);
   // The page's header names every seed and the one its pictures show (it said "seed(s) 3").
@@ -284,7 +324,12 @@ TEST_CASE("the page puts every report's verdict beside the claim, and replaces o
   {  // table1's config wrote a diagnosis after its runs; fig10's has none (older reports lack the key)
     json r = json::parse(read_file_text((d / "table1" / "report.json").string()));
     r["diagnosis"] = {{"text", "coincident pairs at the finest sigma"}, {"published_code", "not run: 2 h a run"}, {"see", "docs/lab/close_pairs/README.md"}};
+    // its two seeds' runs made on machines of both kinds; fig10's on one without bf16 units
+    r["numbers"]["made_under"] = {{"a/ours", {{"95", "without bf16 units"}, {"96", "every processor"}}}};
     std::ofstream(d / "table1" / "report.json") << r.dump();
+    json f = json::parse(read_file_text((d / "fig10" / "report.json").string()));
+    f["numbers"]["made_under"] = {{"a/ours", {{"95", "without bf16 units"}, {"96", "without bf16 units"}}}};
+    std::ofstream(d / "fig10" / "report.json") << f.dump();
   }
   CHECK(write_reproduce_page(d.string()) == 4);
   const std::string html = read_file_text((d / "index.html").string());
@@ -298,6 +343,11 @@ TEST_CASE("the page puts every report's verdict beside the claim, and replaces o
   CHECK(html.find("fig03: fig03 title") < html.find("fig10: fig10 title"));    // figures in number order
   CHECK(html.find("fig10: fig10 title") < html.find("table1: table1 title"));  // then tables
   CHECK_THAT(read_file_text((d / "index.md").string()), Catch::Contains("**Verdict by rule: partly**"));
+  // Which network each item rests on (kept runs come from machines with and without bf16 units).
+  CHECK_THAT(read_file_text((d / "index.md").string()),
+             Catch::Contains("the runs made under the preset variants every processor (1), without bf16 units (3), counted per item") &&
+                 Catch::Contains("made under: every processor (1), without bf16 units (1))") &&
+                 Catch::Contains("made under: without bf16 units (2))") && Catch::Contains("made under: no preset recorded)"));
   // The paper's items without a report here are rows "not run", in the paper's order, with their
   // claims from configs/paper: the page says what is left.
   const size_t papers = list_reproduce_configs(paper_config_dir()).size();

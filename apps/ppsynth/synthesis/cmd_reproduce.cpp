@@ -21,7 +21,7 @@ namespace {
 struct Opts {
   std::vector<std::string> names, sets, reuse, panels;
   std::string out, seeds, sweep, page, preset;
-  bool quick = false, list = false, check = false, force = false, plan_only = false, rules = false;
+  bool quick = false, list = false, check = false, force = false, plan_only = false, rules = false, reuse_own_variant = false;
   int jobs = 1;
 };
 
@@ -40,6 +40,9 @@ ppsynth::app::RunFn setup(CLI::App& app) {
   app.add_flag("--force", o->force, "replace the report directory if it holds a report of ppsynth");
   app.add_option("--reuse", o->reuse,
                  "reuse finished run directories (DIR or its subdirectories, e.g. runs/) whose resolved config equals a column's");
+  app.add_flag("--reuse-own-variant", o->reuse_own_variant,
+               "reuse only runs made under this machine's preset variant (its filter count and precision); "
+               "the other variant's runs are made again here, so an item's arms are compared like for like");
   app.add_option("--panels", o->panels, "run only these panels (the report says which were left out)");
   app.add_option("--set", o->sets, "override a key of every panel's run config: key.path=value (method.* keys: ours only)");
   app.add_option("--preset", o->preset, "a named preset for ours' runs: fast (`ppsynth config --kind preset`); the baselines run as they are");
@@ -98,6 +101,7 @@ ppsynth::app::RunFn setup(CLI::App& app) {
     ro.force = o->force;
     ro.overrides = o->sets;
     ro.reuse = o->reuse;
+    ro.reuse_own_variant = o->reuse_own_variant;
     ro.panels = o->panels;
     ro.seeds = o->seeds;
     ro.sweep_dir = o->sweep;

@@ -90,4 +90,17 @@ TEST_CASE("reuse takes a run of the same preset request made on the other proces
   json another = config_there;
   another["method"]["c1"] = 0.123;
   CHECK(find_matching_run(resolved, true, {forge("another_request", another, other)}).empty());
+
+  // Where both exist, this machine's own variant wins, even when the other variant's run comes
+  // first by name or by root: an item's arms compare like for like.
+  const std::string other_first = forge("a_other_variant", config_there, other);
+  const std::string own_later = forge("z_own_variant", resolved, here);
+  CHECK(find_matching_run(resolved, true, {(d / "pool").string()}) == own_later);
+  CHECK(find_matching_run(resolved, true, {other_first, own_later}) == own_later);
+
+  // reproduce --reuse-own-variant: the other variant's run is never taken, so it runs again here.
+  ReuseRule own_only;
+  own_only.other_variant = false;
+  CHECK(find_matching_run(resolved, true, {there}, own_only).empty());
+  CHECK(find_matching_run(resolved, true, {other_first, own_later}, own_only) == own_later);
 }
