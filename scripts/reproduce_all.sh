@@ -153,7 +153,8 @@ for cfg in "$root"/configs/paper/*.json; do
     if [[ ! -f "$out/sweeps/$name/manifest.json" ]]; then
       summary+=("$(printf '%-26s %6d s  %s' "$name" $(($(date +%s) - t0)) "ok (nothing to run)")"); continue
     else
-      counts="$("$bin" sweep status "$out/sweeps/$name" | head -1 | sed -E 's/.*: ([0-9]+) runs: ([0-9]+) done.*/\1 \2/')"
+      # sed reads the whole listing: `head -1` would close the pipe on a long one (pipefail).
+      counts="$("$bin" sweep status "$out/sweeps/$name" | sed -n -E '1s/.*: ([0-9]+) runs: ([0-9]+) done.*/\1 \2/p')"
       read -r planned done_runs <<< "$counts"
       if [[ "$planned" != "$done_runs" ]]; then
         echo "$name: $((planned - done_runs)) of its $planned runs are not kept; not reported (--kept-only)"
