@@ -20,7 +20,10 @@
 #               outlives the machine it ran on when K does (a folder you keep, or commit): a
 #               later run of this script elsewhere picks up where the last one stopped. Nothing
 #               in K is replaced; a run already kept under its name stays as it is, and a run
-#               one item reused from another's is kept once.
+#               one item reused from another's is kept once. A run still going keeps its last
+#               checkpoint in K/NAME/.inflight/RUN (refreshed each minute, dropped once the run is
+#               kept finished), and a later run of the script resumes it from there: a machine
+#               lost mid-run loses a minute and a checkpoint interval, not the run.
 #   --kept-only (with --keep-runs) no new run: each item's sweep is planned, what K holds is
 #               reused, and an item is reported only when every run of it is there; the others
 #               are listed with the runs they lack (the page then says "not run"). The page over
@@ -81,46 +84,8 @@ for name in $only; do
     exit 2
   fi
 done
-# keep_runs RUNS KEPT: the finished runs under RUNS, each copied to KEPT/RUN with the files a
-# reuse and a report read (load_run: config, records, points, metrics, the completion marker),
-# not the pictures, snapshots and logs, which a report draws again from the points. Through a
-# temporary name and a rename, so a kill leaves no half-kept run that would count as finished.
-keep_runs() {
-  local runs="$1" kept="$2" run name kept_records
-  [[ -d "$runs" ]] || return 0
-  mkdir -p "$kept"
-  # The run records kept so far, by content: a run reused from K under another name (a run
-  # the other kind of processor made, whose config resolves otherwise here) is kept once.
-  kept_records="$(for f in "$(dirname "$kept")"/*/*/run.json; do if [[ -f "$f" ]]; then md5sum < "$f"; fi; done)"
-  for run in "$runs"/*/; do
-    run="${run%/}"
-    name="$(basename "$run")"
-    # kept already, here or under an earlier item (the sweeps name a run by its config and
-    # seed, and an item that reused another's run holds the same run)
-    compgen -G "$(dirname "$kept")/*/$name" > /dev/null && continue
-    grep -q '"state": *"complete"' "$run/.ppsynth-run" 2>/dev/null || continue
-    if [[ -f "$run/run.json" ]] && grep -qxF "$(md5sum < "$run/run.json")" <<< "$kept_records"; then continue; fi
-    rm -rf "$kept/.$name.partial"
-    mkdir -p "$kept/.$name.partial"
-    for f in .ppsynth-run config.json run.json output.txt output.*.txt init.txt exemplar.txt; do
-      [[ -f "$run/$f" ]] && cp "$run/$f" "$kept/.$name.partial/"
-    done
-    # metrics.json without the K/L/g and mark-correlation curves (nine tenths of its bytes):
-    # the numbers a gather and a report read (l_sup, the verdict, the scorecard, the PCF) stay.
-    [[ -f "$run/metrics.json" ]] && /usr/bin/python3 -c '
-import json, sys
-m = json.load(open(sys.argv[1]))
-so = m.get("second_order")
-if isinstance(so, dict):
-    so.pop("mark_correlation", None)
-    for row in so.get("rows", []):
-        for curve in ("r", "exemplar", "output"):
-            row.pop(curve, None)
-json.dump(m, open(sys.argv[2], "w"), separators=(",", ":"))
-' "$run/metrics.json" "$kept/.$name.partial/metrics.json"
-    mv "$kept/.$name.partial" "$kept/$name"
-  done
-}
+# keep_runs, restore_inflight: what --keep-runs keeps and gives back (scripts/lib/kept_runs.sh).
+source "$root/scripts/lib/kept_runs.sh"
 mkdir -p "$out"
 [[ -n "$keep" ]] && mkdir -p "$keep"
 start=$(date +%s)
@@ -164,6 +129,15 @@ for cfg in "$root"/configs/paper/*.json; do
     fi
   fi
   status=ok
+  if [[ -n "$keep" && -z "$kept_only" ]] && compgen -G "$keep/$name/.inflight/*/" > /dev/null; then
+    # A run a lost machine left unfinished: plan the sweep (it reuses what is kept), give the
+    # planned row its kept checkpoint, then run the sweep, which resumes it.
+    if "$bin" "${args[@]}" --plan-only > /dev/null; then
+      restore_inflight "$keep/$name" "$out/sweeps/$name"
+    else
+      echo "reproduce_all: $name: its plan failed; the kept unfinished runs start afresh" >&2
+    fi
+  fi
   keeper=""
   if [[ -n "$keep" && -z "$kept_only" ]]; then  # keeps each run as it finishes, so a machine lost mid-config loses no finished run
     # The sleep away from our stdout: killing the loop leaves it running out its minute, and

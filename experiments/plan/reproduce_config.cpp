@@ -14,12 +14,19 @@
 #include "models/rasterizer.hpp"
 #include "optim/gabor/resolution/gabor_resolution.hpp"
 #include "optim/method/method.hpp"
+#include "optim/run/presets.hpp"
 
 namespace fs = std::filesystem;
 
 namespace ppsynth {
 
 namespace {
+
+// "preset=NAME" -> NAME; "" for any other override.
+std::string preset_of(const std::string& override_text) {
+  const std::string key = "preset=";
+  return override_text.rfind(key, 0) == 0 ? override_text.substr(key.size()) : "";
+}
 
 json figure_defaults() {
   return json{{"name", ""},           {"title", ""},        {"claim", ""},         {"paper_ref", ""},
@@ -32,7 +39,8 @@ json figure_defaults() {
 json panel_defaults() {
   return json{{"name", ""},    {"title", ""},         {"note", ""},       {"kind", "synthesis"},
               {"run", nullptr}, {"exemplar_generator", nullptr},         {"methods", nullptr},
-              {"reference", ""}, {"stages", false},   {"maps", nullptr},  {"paper", nullptr}};
+              {"reference", ""}, {"stages", false},   {"maps", nullptr},  {"paper", nullptr},
+              {"presets_not_equivalent", nullptr}};
 }
 
 json generator_defaults() {
@@ -120,6 +128,17 @@ PanelSpec parse_panel(const json& pj, const ReproduceConfig& c, const std::strin
     s.paper = p["paper"];
   }
   if (!s.reference.empty()) require_file(s.reference, kp + ".reference");
+  if (!p["presets_not_equivalent"].is_null()) {
+    const std::string nk = kp + ".presets_not_equivalent";
+    if (!p["presets_not_equivalent"].is_object()) throw config_error(nk, "expected {\"PRESET\": \"why it is not equivalent here\"}");
+    const json known = presets();
+    for (auto& [name, why] : p["presets_not_equivalent"].items()) {
+      if (!known.contains(name)) throw config_error(nk + "." + name, "not a preset (`ppsynth config --kind preset`)");
+      if (!why.is_string() || why.get<std::string>().empty())
+        throw config_error(nk + "." + name, "expected the reason, as a sentence: what was measured, and where");
+    }
+    s.presets_not_equivalent = p["presets_not_equivalent"];
+  }
 
   if (!p["exemplar_generator"].is_null()) {
     s.generator = apply_defaults(generator_defaults(), p["exemplar_generator"], kp + ".exemplar_generator");
@@ -293,9 +312,24 @@ json column_run_config(const ReproduceConfig& c, const PanelSpec& p, const std::
   for (const auto& o : overrides) {
     // Method keys, and a preset (it sets the gabor method's keys), belong to ours.
     if (column != "ours" && (o.rfind("method.", 0) == 0 || o.rfind("preset=", 0) == 0)) continue;
+    // A preset the project measured as not equivalent on this panel stays off: the verdict
+    // must rest on the config's own settings there (presets_set_aside says so in the report).
+    if (const std::string preset = preset_of(o); !preset.empty() && p.presets_not_equivalent.contains(preset)) continue;
     set_override(run, o);
   }
   return run;
+}
+
+json presets_set_aside(const ReproduceConfig& c, const std::vector<std::string>& overrides) {
+  json aside = json::array();
+  for (const auto& o : overrides) {
+    const std::string preset = preset_of(o);
+    if (preset.empty()) continue;
+    for (const PanelSpec& p : c.panels)
+      if (p.presets_not_equivalent.contains(preset))
+        aside.push_back({{"panel", p.name}, {"preset", preset}, {"why", p.presets_not_equivalent[preset]}});
+  }
+  return aside;
 }
 
 std::string paper_config_dir() { return (fs::path(source_root()) / "configs" / "paper").string(); }

@@ -20,7 +20,10 @@
 //         "methods": [...], "reference": "shared:data/reference/.../output.txt",
 //         "stages": bool (show the per-sigma snapshots, Fig. 4),
 //         "maps": {"sigma", "sigmas", "res", "quick_res", "k"}  (gabor_maps panels),
-//         "paper": {...} published numbers for this panel, shown beside ours } ],
+//         "paper": {...} published numbers for this panel, shown beside ours,
+//         "presets_not_equivalent": {"fast": "why"}  presets shown not to give this panel the
+//                config's result: `--preset fast` (or `--set preset=fast`) leaves ours' run
+//                here at the config's own settings, and the report says so with the reason } ],
 //     "tables": [ {"type": "comparison" | "relative_radius" | "runtime", "name", "caption",
 //                  "methods", "paper": {...}} ] }   each also written as CSV and Markdown.
 //     "rule": {...}   how the gathered numbers decide the verdict (reproduce_rule.hpp)
@@ -54,6 +57,8 @@ struct PanelSpec {
   json maps;                       // gabor_maps settings (defaults filled)
   bool stages = false;
   json paper = json::object();
+  // preset name -> why it is not equivalent here (a lab measurement): ours runs without it.
+  json presets_not_equivalent = json::object();
 };
 
 struct TableSpec {
@@ -94,9 +99,13 @@ void check_reproduce_runs(const ReproduceConfig& c, const std::vector<std::strin
 // The run config of one method column of a panel (unresolved): "ours" -> panel.run; a
 // registry name -> panel.run with "method" = {"type": name} + method_params[name].
 // `overrides` ("--set key=value") apply to every column; keys under "method." and "preset"
-// only to ours.
+// only to ours, and "preset=NAME" not where the panel lists NAME in presets_not_equivalent.
 json column_run_config(const ReproduceConfig& c, const PanelSpec& p, const std::string& column,
                        const std::vector<std::string>& overrides);
+
+// The panels where one of `overrides`' presets is set aside (presets_not_equivalent):
+// [{"panel", "preset", "why"}], for the report and the page to say so.
+json presets_set_aside(const ReproduceConfig& c, const std::vector<std::string>& overrides);
 
 // configs/paper under the source root (core/paths.hpp source_root()).
 std::string paper_config_dir();

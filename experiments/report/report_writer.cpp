@@ -249,6 +249,10 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
                       {"seed(s)", seed_text.empty() ? "-" : seed_text},
                       {"total wall time", time_text},
                       {"written", date}});
+  const json aside = presets_set_aside(c, o.overrides);
+  for (auto& a : aside)
+    rep.add_paragraph("Panel " + a["panel"].get<std::string>() + " ran at the config's own settings, not the " +
+                      a["preset"].get<std::string>() + " preset: " + a["why"].get<std::string>());
 
   const json verdict = verdict_json(judge_item(c.rule, r.numbers));
   const json numbers = numbers_json(r.numbers);
@@ -292,7 +296,7 @@ void write_reproduce_report(const ReproduceConfig& c, const ReproduceResult& r, 
 
   json report = {{"name", c.name}, {"title", c.title}, {"claim", c.claim}, {"paper_ref", c.paper_ref}, {"kind", c.kind},
                  {"config", c.source}, {"quick", r.quick}, {"revision", revision()}, {"seconds", r.seconds},
-                 {"overrides", o.overrides}, {"seeds", o.seeds}, {"sweep", r.sweep_dir},
+                 {"overrides", o.overrides}, {"presets_set_aside", aside}, {"seeds", o.seeds}, {"sweep", r.sweep_dir},
                  {"figure", fs::exists(dir + "/figure.png") ? "figure.png" : ""},
                  {"rule", c.raw.contains("rule") ? c.raw["rule"] : json(nullptr)}, {"verdict", verdict}, {"diagnosis", c.diagnosis},
                  {"numbers", numbers},

@@ -100,13 +100,19 @@ std::string checks_passed(const json& v) {
   return n ? std::to_string(pass) + "/" + std::to_string(n) : "-";
 }
 
-// The --set overrides a report ran with ("preset=fast"), or the configs' own settings.
+// The --set overrides a report ran with ("preset=fast"), or the configs' own settings; then
+// the panels that kept the config's own settings under that preset (presets_set_aside).
 std::string overrides_text(const json& r) {
   std::string t;
   if (r.contains("overrides") && r["overrides"].is_array())
     for (auto& o : r["overrides"])
       if (o.is_string()) t += (t.empty() ? "" : ", ") + o.get<std::string>();
-  return t.empty() ? "the configs' own" : t;
+  if (t.empty()) return "the configs' own";
+  if (r.contains("presets_set_aside") && r["presets_set_aside"].is_array())
+    for (auto& a : r["presets_set_aside"])
+      t += "; panel " + a.value("panel", "?") + " at the config's own settings (the " + a.value("preset", "?") +
+           " preset is not equivalent there)";
+  return t;
 }
 
 // The preset variants the item's runs were made under (numbers.made_under), counted over its

@@ -1,10 +1,16 @@
 // scripts/reproduce_all.sh, the paper's whole plan: its arguments are checked before anything
-// is written. An option in the place of OUT_DIR (`--help`, `--seeds 95-99` first) once became a
+// is written; --keep-runs keeps finished runs and unfinished runs' checkpoints where a later
+// machine finds them. An option in the place of OUT_DIR (`--help`, `--seeds 95-99` first) once became a
 // directory named after it and started every config's runs there.
 #include <catch2/catch.hpp>
 
+#include <csignal>
 #include <filesystem>
+#include <regex>
 
+#include "core/formats/text_table.hpp"
+#include "experiments/plan/sweep_plan.hpp"
+#include "tests/support/child_process.hpp"
 #include "tests/support/run_command.hpp"
 #include "tests/support/scratch_dir.hpp"
 
@@ -111,4 +117,67 @@ TEST_CASE("reproduce_all.sh --keep-runs keeps a compact copy of each finished ru
   for (const auto& item : fs::directory_iterator(kept))
     for (auto& e : fs::directory_iterator(item.path())) kept_after += e.is_directory() ? 1 : 0;
   CHECK(kept_after == 2);
+}
+
+// --keep-runs and a machine lost mid-run: an unfinished run's checkpoint is kept beside the
+// finished runs (K/NAME/.inflight/RUN), and the script on another OUT_DIR (another machine)
+// resumes it there, to the same output as a run never stopped (one thread, this machine).
+TEST_CASE("reproduce_all.sh --keep-runs keeps an unfinished run's checkpoint, and a later run of the script resumes it",
+          "[apps][script][reproduce_all]") {
+  const auto d = test::scratch_dir("reproduce_all_inflight");
+  const std::string src = PPSYNTH_SOURCE_DIR;
+  const std::string script = src + "/scripts/reproduce_all.sh";
+  const std::string bin = test::ppsynth_binary();
+  const fs::path kept = d / "kept";
+  // More iterations than --quick's, so the task is stopped mid-stage, not after its end.
+  const std::string sets = " --set method.quick.max_iterations=12";
+
+  // The run a lost machine leaves: fig04's one row planned, its task stopped after its third iteration.
+  const fs::path sweep = d / "lost" / "sweeps" / "fig04";
+  auto plan = test::run_ppsynth("reproduce fig04 --quick --seeds 95 --plan-only" + sets + " --sweep " + sweep.string() + " -o " +
+                                (d / "lost" / "fig04").string());
+  INFO(plan.output);
+  REQUIRE(plan.status == 0);
+  const SweepManifest m = load_sweep(sweep.string());
+  REQUIRE(m.rows.size() == 1);
+  const std::string id = m.rows[0].id;
+  {
+    test::Child task("sweep task " + sweep.string() + " --row " + id, "PPSYNTH_THREADS=1");
+    const std::regex third(" it +3/");
+    REQUIRE(task.wait_for([&](const std::string& l) { return std::regex_search(l, third); }));
+    task.signal(SIGTERM);
+    REQUIRE(task.finish() == 143);
+  }
+  REQUIRE(fs::exists(sweep / "runs" / id / "checkpoint.bin"));
+
+  // What the script's keeper does each minute: the finished runs kept, the unfinished one's checkpoint beside them.
+  const std::string keep = "set -euo pipefail; source " + src + "/scripts/lib/kept_runs.sh; keep_runs " + (sweep / "runs").string() + " " +
+                           (kept / "fig04").string();
+  auto kept_now = test::run_program("/bin/bash", "-c '" + keep + "'");
+  INFO(kept_now.output);
+  REQUIRE(kept_now.status == 0);
+  const fs::path held = kept / "fig04" / ".inflight" / id;
+  for (const char* f : {".ppsynth-run", "config.json", "checkpoint.bin", "exemplar.txt"}) CHECK(fs::exists(held / f));
+  CHECK_FALSE(fs::exists(kept / "fig04" / id));  // not finished: not a kept run
+  CHECK(test::run_program("/bin/bash", "-c '" + keep + "'").status == 0);  // again: the same checkpoint, nothing rewritten
+  CHECK_FALSE(fs::exists(kept / "fig04" / ".inflight" / ("." + id + ".partial")));
+
+  // Another machine: a new OUT_DIR, the same K. The row resumes from the kept checkpoint, is
+  // kept finished, and its checkpoint copy goes.
+  const auto later = test::run_program(script, "out " + bin + " --only fig04 --quick --seeds 95" + sets + " --keep-runs " + kept.string(),
+                                       "cd " + d.string() + " && PPSYNTH_THREADS=1");
+  INFO(later.output);
+  REQUIRE(later.status == 0);
+  CHECK(later.output.find("resuming " + id + " from the checkpoint kept in " + held.string()) != std::string::npos);
+  CHECK(fs::exists(kept / "fig04" / id / "output.txt"));
+  CHECK_FALSE(fs::exists(held));
+
+  // The same row never stopped: the same output, byte for byte.
+  const auto whole = test::run_program(script, "whole " + bin + " --only fig04 --quick --seeds 95" + sets + " --keep-runs " +
+                                                   (d / "kept_whole").string(),
+                                       "cd " + d.string() + " && PPSYNTH_THREADS=1");
+  INFO(whole.output);
+  REQUIRE(whole.status == 0);
+  CHECK(whole.output.find("resuming") == std::string::npos);
+  CHECK(read_file_text((d / "kept_whole" / "fig04" / id / "output.txt").string()) == read_file_text((kept / "fig04" / id / "output.txt").string()));
 }

@@ -145,6 +145,29 @@ TEST_CASE("method columns: registry names, pending methods, parameters and --set
   CHECK_THAT(error_of(j), Catch::Contains("column 'pcf2017'") && Catch::Contains("iteratons"));
 }
 
+TEST_CASE("a panel where a preset is not equivalent keeps the config's own settings under it", "[apps][reproduce]") {
+  json a = lines_panel("a");
+  a["presets_not_equivalent"] = {{"fast", "its stopping rule keeps the initialization here"}};
+  const auto c = parse(minimal(json::array({a, lines_panel("b")})));
+  const std::vector<std::string> sets = {"seed=7", "preset=fast", "method.max_iterations=3"};
+  const json ours_a = column_run_config(c, c.panels[0], "ours", sets);
+  CHECK_FALSE(ours_a.contains("preset"));               // set aside on the panel that says so
+  CHECK(ours_a["seed"] == 7);                           // every other override still applies
+  CHECK(ours_a["method"]["max_iterations"] == 3);
+  CHECK(column_run_config(c, c.panels[1], "ours", sets)["preset"] == "fast");  // not on the others
+  CHECK(presets_set_aside(c, sets) ==
+        json::array({{{"panel", "a"}, {"preset", "fast"}, {"why", "its stopping rule keeps the initialization here"}}}));
+  CHECK(presets_set_aside(c, {"seed=7"}).empty());      // no preset asked: nothing set aside
+
+  // Only a known preset, and only with its reason.
+  a["presets_not_equivalent"] = {{"fastest", "why"}};
+  CHECK_THAT(error_of(minimal(json::array({a}))), Catch::Contains("panels[0].presets_not_equivalent.fastest") && Catch::Contains("not a preset"));
+  a["presets_not_equivalent"] = {{"fast", ""}};
+  CHECK_THAT(error_of(minimal(json::array({a}))), Catch::Contains("panels[0].presets_not_equivalent.fast") && Catch::Contains("reason"));
+  a["presets_not_equivalent"] = json::array({"fast"});
+  CHECK_THAT(error_of(minimal(json::array({a}))), Catch::Contains("panels[0].presets_not_equivalent"));
+}
+
 TEST_CASE("a reproduction writes a report whose numbers match an independent evaluation", "[apps][reproduce]") {
   QuietLogs quiet;
   const fs::path d = ppsynth::test::scratch_dir("reproduce_report");
@@ -209,6 +232,7 @@ TEST_CASE("a reproduction writes a report whose numbers match an independent eva
 
   json rep = json::parse(ppsynth::read_file_text(d / "rep/report.json"));
   CHECK(rep["quick"] == true);
+  CHECK(rep["presets_set_aside"] == json::array());  // no preset asked, none set aside
   CHECK(rep["panels"][0]["columns"].size() == 5);
   CHECK(rep["panels"][0]["columns"][0]["metrics"]["all"]["pcf_mse"] == column(p, "ours").metrics["all"]["pcf_mse"]);
   CHECK(rep["panels"][0]["columns"][0]["processor"] == ppsynth::processor_kind());

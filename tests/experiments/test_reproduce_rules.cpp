@@ -329,6 +329,9 @@ TEST_CASE("the page puts every report's verdict beside the claim, and replaces o
     std::ofstream(d / "table1" / "report.json") << r.dump();
     json f = json::parse(read_file_text((d / "fig10" / "report.json").string()));
     f["numbers"]["made_under"] = {{"a/ours", {{"95", "without bf16 units"}, {"96", "without bf16 units"}}}};
+    // fig10 ran at the fast preset, but its panel a kept the config's own settings
+    f["overrides"] = {"preset=fast"};
+    f["presets_set_aside"] = json::array({{{"panel", "a"}, {"preset", "fast"}, {"why", "its stopping rule keeps the start"}}});
     std::ofstream(d / "fig10" / "report.json") << f.dump();
   }
   CHECK(write_reproduce_page(d.string()) == 4);
@@ -336,7 +339,9 @@ TEST_CASE("the page puts every report's verdict beside the claim, and replaces o
   CHECK_THAT(html, Catch::Contains("coincident pairs at the finest sigma") && Catch::Contains("not run: 2 h a run") &&
                        Catch::Contains("docs/lab/close_pairs/README.md"));
   CHECK(html.find("What we know") > html.find("table1: table1 title"));  // under table1 only
-  CHECK_THAT(html, Catch::Contains("the configs&#39; own") || Catch::Contains("the configs' own"));  // no --set in these reports
+  CHECK_THAT(html, Catch::Contains("the configs&#39; own") || Catch::Contains("the configs' own"));  // no --set in table1's report
+  CHECK_THAT(read_file_text((d / "index.md").string()),
+             Catch::Contains("settings: preset=fast; panel a at the config's own settings (the fast preset is not equivalent there)"));
   CHECK_THAT(read_file_text((d / "index.md").string()), Catch::Contains("- **The published code on this item.** not run: 2 h a run"));
   CHECK_THAT(html, Catch::Contains("claim of table1") && Catch::Contains("not reproduced") && Catch::Contains("rule of fig10") &&
                        Catch::Contains("0.01 [0.009 - 0.011] (2)") && Catch::Contains("0.02 (drawn once)"));
